@@ -1,0 +1,48 @@
+package org.beziertracer.cli;
+
+import java.awt.GraphicsEnvironment;
+import java.io.PrintWriter;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The top-level {@code beziertracer} command: dispatches to the sub-commands, or with no
+ * arguments launches the desktop app.
+ */
+@Command(name = "beziertracer", mixinStandardHelpOptions = true, version = "Bézier Tracer 0.1.0",
+        description = "Ray traces Bézier surfaces directly (no triangles).%n"
+                + "With no command, opens the desktop app.",
+        subcommands = {InfoCommand.class})
+public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
+
+    /** Exit code for a headless machine asked to open the app. */
+    public static final int EXIT_NO_DISPLAY = 3;
+
+    /** Runs the command line and returns the process exit code. */
+    public static int run(String[] args) {
+        if (args.length == 0) {
+            return launchApp();
+        }
+        CommandLine cl = new CommandLine(new BezierTracerCommand());
+        cl.setExecutionExceptionHandler(CliErrors::handle);
+        return cl.execute(args);
+    }
+
+    static int launchApp() {
+        if (GraphicsEnvironment.isHeadless()) {
+            System.err.println("beziertracer: no display available, so the desktop app cannot open; "
+                    + "use the command line instead: java -jar target/beziertracer.jar --help");
+            return EXIT_NO_DISPLAY;
+        }
+        System.err.println("beziertracer: the desktop app is not built yet; "
+                + "use the command line: java -jar target/beziertracer.jar --help");
+        return EXIT_NO_DISPLAY;
+    }
+
+    @Override
+    public Integer call() {
+        new CommandLine(this).usage(new PrintWriter(System.out, true));
+        return 0;
+    }
+}
