@@ -14,15 +14,32 @@ import org.beziertracer.math.Aabb;
 public final class Scene {
 
     private final List<BezierPatch> patches;
+    private final List<Plane> planes;
+    private final List<Sphere> spheres;
 
+    /** A scene of Bézier patches only (at least one). */
     public Scene(List<BezierPatch> patches) {
-        if (patches == null || patches.isEmpty()) {
-            throw new IllegalArgumentException("a scene needs at least one patch");
+        this(patches, List.of(), List.of());
+        if (patches.isEmpty()) {
+            throw new IllegalArgumentException("a model needs at least one patch");
         }
+    }
+
+    /** A scene of patches, planes and spheres; at least one primitive in all. */
+    public Scene(List<BezierPatch> patches, List<Plane> planes, List<Sphere> spheres) {
         this.patches = List.copyOf(patches);
+        this.planes = List.copyOf(planes);
+        this.spheres = List.copyOf(spheres);
+        if (this.patches.isEmpty() && this.planes.isEmpty() && this.spheres.isEmpty()) {
+            throw new IllegalArgumentException("a scene needs at least one patch, plane or sphere");
+        }
     }
 
     public List<BezierPatch> patches() { return patches; }
+
+    public List<Plane> planes() { return planes; }
+
+    public List<Sphere> spheres() { return spheres; }
 
     public int patchCount() { return patches.size(); }
 
@@ -30,7 +47,7 @@ public final class Scene {
     public Scene withPatch(int index, BezierPatch patch) {
         var copy = new java.util.ArrayList<>(patches);
         copy.set(index, patch);
-        return new Scene(copy);
+        return new Scene(copy, planes, spheres);
     }
 
     /** Union of the control-point boxes of every patch. */

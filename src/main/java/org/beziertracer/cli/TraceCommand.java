@@ -1,0 +1,249 @@
+package org.beziertracer.cli;
+
+import java.io.BufferedReader;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStreamWriter;
+import java.io.Reader;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Random;
+import java.util.concurrent.Callable;
+
+import org.beziertracer.intersect.Hit;
+import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.Method;
+import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.intersect.SurfacePoint;
+import org.beziertracer.intersect.TraceContext;
+import org.beziertracer.math.Aabb;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code trace MODEL}: intersects rays with a model and prints one CSV line a ray:
+ * {@code index,hit,t,patch,u,v,x,y,z,nx,ny,nz}. Rays are read one a line as
+ * {@code ox oy oz dx dy dz} ({@code #} comments and blank lines skipped), or generated with
+ * {@code --random N}.
+ */
+@Command(name = "trace", mixinStandardHelpOptions = true,
+        description = "Intersects rays (ox oy oz dx dy dz, one a line) with a model; prints CSV hits.")
+final class TraceCommand implements Callable<Integer> {
+
+    static final String HEADER = "index,hit,t,patch,u,v,x,y,z,nx,ny,nz";
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
+    String model;
+
+    @Option(names = "--method", paramLabel = "clipping|newton|subdivision", defaultValue = "clipping",
+            description = "ray-patch solver (default: ${DEFAULT-VALUE})")
+    String method;
+
+    @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
+    boolean noBvh;
+
+    @Option(names = {"-i", "--input"}, paramLabel = "RAYS", description = "ray file (default: standard input)")
+    Path input;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "HITS", description = "CSV output (default: standard output)")
+    Path output;
+
+    @Option(names = "--random", paramLabel = "N", description = "instead of reading rays, trace N random rays "
+            + "from a sphere around the model toward points in its bounding box")
+    Integer random;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed for --random (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--stats", description = "print build and trace timings to standard error")
+    boolean stats;
+
+    @Override
+    public Integer call() throws IOException {
+        Method m = Method.parse(method);
+        if (random != null && (random < 0 || random > 100_000_000)) {
+            throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
+        }
+        Scene scene = Models.load(model);
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(m).withBvh(!noBvh));
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        long rays = 0, hits = 0;
+        long traceNanos = 0;
+        try (Writer out = openOutput()) {
+            out.write(HEADER);
+            out.write('\n');
+            StringBuilder line = new StringBuilder(256);
+            double[] ray = new double[6];
+            RaySource source = random != null ? new RandomRays(scene.controlBounds(), random, seed)
+                    : new RayFile(openInput(), input == null ? "stdin" : input.toString());
+            try (source) {
+                while (source.next(ray)) {
+                    long t0 = System.nanoTime();
+                    boolean found = si.closestHit(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0,
+                            Double.POSITIVE_INFINITY, hit);
+                    if (found) {
+                        si.surfacePoint(ctx, hit, sp);
+                    }
+                    traceNanos += System.nanoTime() - t0;
+                    line.setLength(0);
+                    line.append(rays).append(',');
+                    if (found) {
+                        hits++;
+                        line.append("1,").append(hit.t).append(',').append(hit.index).append(',')
+                                .append(hit.u).append(',').append(hit.v).append(',')
+                                .append(sp.px).append(',').append(sp.py).append(',').append(sp.pz).append(',')
+                                .append(sp.nx).append(',').append(sp.ny).append(',').append(sp.nz);
+                    } else {
+                        line.append("0,,,,,,,,,,");
+                    }
+                    line.append('\n');
+                    out.append(line);
+                    rays++;
+                }
+            }
+        }
+        if (stats) {
+            double ms = traceNanos / 1e6;
+            spec.commandLine().getErr().println(String.format(Locale.ROOT,
+                    "trace: %d rays, %d hits, method %s, bvh %s, %d sub-patches, %d BVH nodes, depth %d, "
+                            + "build %.2f ms, trace %.1f ms, %.0f rays/s",
+                    rays, hits, m.label(), !noBvh, si.subPatchCount(), si.nodeCount(), si.depth(),
+                    si.buildMillis(), ms, rays / Math.max(ms, 1e-9) * 1000));
+        }
+        return 0;
+    }
+
+    private Writer openOutput() throws IOException {
+        if (output == null) {
+            return new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16) {
+                @Override
+                public void close() throws IOException {
+                    flush(); // do not close System.out
+                }
+            };
+        }
+        return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
+    }
+
+    private Reader openInput() throws IOException {
+        if (input == null) {
+            return new InputStreamReader(System.in, StandardCharsets.UTF_8);
+        }
+        if (!Files.isRegularFile(input)) {
+            throw new IOException(input + ": no such ray file");
+        }
+        return Files.newBufferedReader(input, StandardCharsets.UTF_8);
+    }
+
+    /** A stream of rays. */
+    interface RaySource extends AutoCloseable {
+        boolean next(double[] ray) throws IOException;
+
+        @Override
+        void close() throws IOException;
+    }
+
+    /** Rays from text, one a line; errors name the source and line. */
+    static final class RayFile implements RaySource {
+        private final BufferedReader reader;
+        private final String name;
+        private int lineNumber;
+
+        RayFile(Reader reader, String name) {
+            this.reader = new BufferedReader(reader);
+            this.name = name;
+        }
+
+        @Override
+        public boolean next(double[] ray) throws IOException {
+            String line;
+            while ((line = reader.readLine()) != null) {
+                lineNumber++;
+                int hash = line.indexOf('#');
+                String text = (hash >= 0 ? line.substring(0, hash) : line).trim();
+                if (text.isEmpty()) {
+                    continue;
+                }
+                String[] parts = text.split("\\s+");
+                if (parts.length != 6) {
+                    throw new IllegalArgumentException(name + ":" + lineNumber + ": expected 6 numbers "
+                            + "'ox oy oz dx dy dz', found " + parts.length + " fields");
+                }
+                for (int k = 0; k < 6; k++) {
+                    try {
+                        ray[k] = Double.parseDouble(parts[k]);
+                    } catch (NumberFormatException e) {
+                        throw new IllegalArgumentException(name + ":" + lineNumber + ": expected a number for "
+                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + ", found \"" + parts[k] + "\"");
+                    }
+                    if (!Double.isFinite(ray[k])) {
+                        throw new IllegalArgumentException(name + ":" + lineNumber + ": "
+                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + " must be finite, found " + parts[k]);
+                    }
+                }
+                if (ray[3] == 0 && ray[4] == 0 && ray[5] == 0) {
+                    throw new IllegalArgumentException(name + ":" + lineNumber + ": the ray direction is zero");
+                }
+                return true;
+            }
+            return false;
+        }
+
+        @Override
+        public void close() throws IOException {
+            reader.close();
+        }
+    }
+
+    /** Seeded random rays from a sphere around the box toward points inside it. */
+    static final class RandomRays implements RaySource {
+        private final Aabb box;
+        private final Random rnd;
+        private long left;
+
+        RandomRays(Aabb box, long count, long seed) {
+            this.box = box;
+            this.rnd = new Random(seed);
+            this.left = count;
+        }
+
+        @Override
+        public boolean next(double[] ray) {
+            if (left-- <= 0) {
+                return false;
+            }
+            double r = box.diagonal();
+            double cx = box.center().x(), cy = box.center().y(), cz = box.center().z();
+            double gx = rnd.nextGaussian(), gy = rnd.nextGaussian(), gz = rnd.nextGaussian();
+            double len = Math.sqrt(gx * gx + gy * gy + gz * gz);
+            ray[0] = cx + r * gx / len;
+            ray[1] = cy + r * gy / len;
+            ray[2] = cz + r * gz / len;
+            double tx = box.minX() + rnd.nextDouble() * (box.maxX() - box.minX());
+            double ty = box.minY() + rnd.nextDouble() * (box.maxY() - box.minY());
+            double tz = box.minZ() + rnd.nextDouble() * (box.maxZ() - box.minZ());
+            ray[3] = tx - ray[0];
+            ray[4] = ty - ray[1];
+            ray[5] = tz - ray[2];
+            return true;
+        }
+
+        @Override
+        public void close() {}
+    }
+}

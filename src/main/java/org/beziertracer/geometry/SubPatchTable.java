@@ -1,0 +1,127 @@
+package org.beziertracer.geometry;
+
+import java.util.List;
+
+import org.beziertracer.math.Bounds;
+import org.beziertracer.model.BezierPatch;
+
+/**
+ * Every sub-patch of every patch of a scene, in flat arrays indexed by sub-patch number
+ * {@code s = 0..count-1}. Immutable; shared by render threads.
+ *
+ * <ul>
+ *   <li>{@code parent[s]}: index of the patch in the scene;</li>
+ *   <li>{@code degreeU[s]}, {@code degreeV[s]}: degrees (those of the parent);</li>
+ *   <li>{@code netOffset[s]}: where its control net starts in {@code nets} (layout of
+ *       {@code BezierPatch}: u fastest, 3 doubles a point);</li>
+ *   <li>{@code boxes[4s..4s+3]}: {@code u0, u1, v0, v1}, its parameter box in the parent;</li>
+ *   <li>{@code bounds[6s..6s+5]}: the axis-aligned box of its control points, which contains
+ *       the sub-patch by the convex-hull property.</li>
+ * </ul>
+ *
+ * <p>An edit of one patch re-splits only that patch ({@link #withPatch}); the other patches'
+ * pieces are reused.
+ */
+public final class SubPatchTable {
+
+    private final List<BezierPatch> patches;
+    private final PatchPieces[] pieces;
+    private final SplitOptions options;
+    public final int count;
+    public final int[] parent;
+    public final int[] degreeU;
+    public final int[] degreeV;
+    public final int[] netOffset;
+    public final double[] nets;
+    public final double[] boxes;
+    public final double[] bounds;
+    /** First sub-patch of each patch; {@code firstOf[patchCount] == count}. */
+    public final int[] firstOf;
+    /** The whole patches' control nets, one after another (for the final Newton polish and evaluation). */
+    public final double[] patchNets;
+    /** Where patch {@code k}'s net starts in {@link #patchNets}. */
+    public final int[] patchNetOffset;
+    /** Degrees of patch {@code k}. */
+    public final int[] patchDegreeU;
+    public final int[] patchDegreeV;
+
+    private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, SplitOptions options) {
+        this.patches = List.copyOf(patches);
+        this.pieces = pieces;
+        this.options = options;
+        patchNetOffset = new int[pieces.length];
+        patchDegreeU = new int[pieces.length];
+        patchDegreeV = new int[pieces.length];
+        int patchDoubles = 0;
+        for (int k = 0; k < pieces.length; k++) {
+            patchNetOffset[k] = patchDoubles;
+            patchDegreeU[k] = pieces[k].degreeU();
+            patchDegreeV[k] = pieces[k].degreeV();
+            patchDoubles += pieces[k].netLength();
+        }
+        patchNets = new double[patchDoubles];
+        for (int k = 0; k < pieces.length; k++) {
+            this.patches.get(k).copyNetInto(patchNets, patchNetOffset[k]);
+        }
+        int total = 0;
+        int doubles = 0;
+        for (PatchPieces p : pieces) {
+            total += p.count();
+            doubles += p.nets().length;
+        }
+        count = total;
+        parent = new int[total];
+        degreeU = new int[total];
+        degreeV = new int[total];
+        netOffset = new int[total];
+        nets = new double[doubles];
+        boxes = new double[4 * total];
+        bounds = new double[6 * total];
+        firstOf = new int[pieces.length + 1];
+        double[] box = new double[6];
+        int s = 0, off = 0;
+        for (int k = 0; k < pieces.length; k++) {
+            PatchPieces p = pieces[k];
+            firstOf[k] = s;
+            System.arraycopy(p.nets(), 0, nets, off, p.nets().length);
+            System.arraycopy(p.boxes(), 0, boxes, 4 * s, 4 * p.count());
+            int len = p.netLength();
+            for (int i = 0; i < p.count(); i++, s++, off += len) {
+                parent[s] = k;
+                degreeU[s] = p.degreeU();
+                degreeV[s] = p.degreeV();
+                netOffset[s] = off;
+                Bounds.ofPoints(nets, off, len / 3, box);
+                System.arraycopy(box, 0, bounds, 6 * s, 6);
+            }
+        }
+        firstOf[pieces.length] = s;
+    }
+
+    /** Splits every patch. */
+    public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
+        PatchPieces[] pieces = new PatchPieces[patches.size()];
+        for (int k = 0; k < pieces.length; k++) {
+            pieces[k] = PatchSplitter.split(patches.get(k), options);
+        }
+        return new SubPatchTable(patches, pieces, options);
+    }
+
+    /** A new table with patch {@code index} replaced and re-split; the others are reused. */
+    public SubPatchTable withPatch(int index, BezierPatch patch) {
+        PatchPieces[] copy = pieces.clone();
+        copy[index] = PatchSplitter.split(patch, options);
+        var list = new java.util.ArrayList<>(patches);
+        list.set(index, patch);
+        return new SubPatchTable(list, copy, options);
+    }
+
+    /** Number of sub-patches of patch {@code index}. */
+    public int countOf(int index) { return pieces[index].count(); }
+
+    public int patchCount() { return pieces.length; }
+
+    public List<BezierPatch> patches() { return patches; }
+
+    public SplitOptions options() { return options; }
+}

@@ -1,0 +1,301 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.SubPatchTable;
+
+/**
+ * Ray–patch intersection by Bézier clipping.
+ *
+ * <p>Nishita, Sederberg, Kakimoto, "Ray tracing trimmed rational surface patches", SIGGRAPH 1990.
+ * The sub-patch's control net is projected once into ray space ({@link TraceContext}); a root is
+ * where both plane distances vanish. Each step clips in u, then in v: the distances of the
+ * control points to a line through the ray, parallel to the other parametric direction, form a
+ * scalar Bézier function; the convex hull of its control points meets zero only inside
+ * {@code [a,b]}, and the net is restricted to that range with de Casteljau. When a step
+ * removes less than 20 % in both directions, the net is split in half and the half nearer the
+ * ray origin is visited first. When the remaining piece is tiny, a few Newton steps on the parent
+ * patch give the root to full double precision.
+ *
+ * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
+ * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a
+ * small margin, the work per leaf is capped, every candidate in {@code (tMin, tMax)} is kept and
+ * the nearest returned, and pieces are pruned by their ray-space bounds (the third coordinate
+ * bounds t, so a piece beyond the best hit so far is dropped).
+ *
+ * <p>Allocation-free: all nets live in the context's arena, a stack of at most
+ * {@link TraceContext#MAX_ENTRIES} entries.
+ */
+final class BezierClipper {
+    private BezierClipper() {}
+
+    /** A clip must shrink the parameter range below this fraction, or the piece is split. */
+    static final double SPLIT_THRESHOLD = 0.8;
+    /** Margin added on both sides of a clipped interval (local parameters). */
+    static final double WIDEN = 1e-10;
+    /** Cap on clip steps per leaf. */
+    static final int MAX_STEPS = 400;
+    /** A piece whose ray-space extent is below this fraction of the leaf size is a root candidate. */
+    static final double CONVERGED_EXTENT = 1e-7;
+    /** ... or whose parameter box (local to the leaf) is this narrow in both directions. */
+    static final double CONVERGED_WIDTH = 1e-12;
+
+    /**
+     * Nearest root of sub-patch {@code s} with {@code tMin < t < tMax}; on success stores it in
+     * {@code ctx.rootT/rootU/rootV} (parent-patch parameters) and returns true.
+     */
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax,
+                             double tolerance) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        int points = (n + 1) * (m + 1), len = 3 * points;
+        double[] arena = ctx.arena;
+        double[] boxes = ctx.entryBoxes;
+        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+        int k = tab.parent[s];
+        double leafSize = leafSize(tab, s);
+        double extentEps = CONVERGED_EXTENT * leafSize;
+
+        ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
+        boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
+        int sp = 1;
+        double best = tMax;
+        boolean found = false;
+        double bestU = 0, bestV = 0;
+        int steps = 0;
+        double invLength = ctx.invLength;
+
+        while (sp > 0) {
+            int w = sp - 1, base = w * len, b4 = 4 * w;
+            if (++steps > MAX_STEPS) {
+                break;
+            }
+            // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
+            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
+            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
+            for (int p = base, end = base + len; p < end; p += 3) {
+                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
+                if (a < min1) min1 = a;
+                if (a > max1) max1 = a;
+                if (b < min2) min2 = b;
+                if (b > max2) max2 = b;
+                if (c < min3) min3 = c;
+                if (c > max3) max3 = c;
+            }
+            double slack = tolerance;
+            if (min1 > slack || max1 < -slack || min2 > slack || max2 < -slack
+                    || min3 * invLength >= best || max3 * invLength <= tMin) {
+                sp--;
+                continue;
+            }
+            double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+            if (Math.max(max1 - min1, max2 - min2) <= extentEps
+                    || (u1 - u0 <= CONVERGED_WIDTH && v1 - v0 <= CONVERGED_WIDTH)) {
+                // Root candidate: polish on the parent patch
+                double uc = leafU0 + leafDu * 0.5 * (u0 + u1);
+                double vc = leafV0 + leafDv * 0.5 * (v0 + v1);
+                if (polish(ctx, tab, k, uc, vc, leafDu * (u1 - u0), leafDv * (v1 - v0), tolerance)
+                        && ctx.rootT > tMin && ctx.rootT < best) {
+                    best = ctx.rootT;
+                    bestU = ctx.rootU;
+                    bestV = ctx.rootV;
+                    found = true;
+                }
+                sp--;
+                continue;
+            }
+            ctx.clipIterations++;
+            // Clip in u
+            if (!clipInterval(ctx, arena, base, n, m, true)) {
+                sp--;
+                continue;
+            }
+            double a = ctx.clip[0], b = ctx.clip[1];
+            double keptU = b - a;
+            if (keptU < 1) {
+                DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+                double du = u1 - u0;
+                u1 = u0 + du * b;
+                u0 = u0 + du * a;
+            }
+            // Clip in v
+            if (!clipInterval(ctx, arena, base, n, m, false)) {
+                sp--;
+                continue;
+            }
+            a = ctx.clip[0];
+            b = ctx.clip[1];
+            double keptV = b - a;
+            if (keptV < 1) {
+                DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
+                double dv = v1 - v0;
+                v1 = v0 + dv * b;
+                v0 = v0 + dv * a;
+            }
+            boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
+            if (keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD) {
+                if (sp == TraceContext.MAX_ENTRIES) {
+                    sp--; // stack full: drop this piece (bounded work)
+                    continue;
+                }
+                split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
+                sp++;
+            }
+        }
+        if (found) {
+            ctx.rootT = best;
+            ctx.rootU = bestU;
+            ctx.rootV = bestV;
+        }
+        return found;
+    }
+
+    /** Diagonal of the leaf's control box. */
+    static double leafSize(SubPatchTable tab, int s) {
+        double[] bb = tab.bounds;
+        int o = 6 * s;
+        double ex = bb[o + 3] - bb[o], ey = bb[o + 4] - bb[o + 1], ez = bb[o + 5] - bb[o + 2];
+        return Math.sqrt(ex * ex + ey * ey + ez * ez);
+    }
+
+    /**
+     * Newton polish from a clipping candidate; accepts the root when it converges near the
+     * candidate's box, else falls back to the candidate itself.
+     */
+    static boolean polish(TraceContext ctx, SubPatchTable tab, int k, double u, double v,
+                          double boxDu, double boxDv, double tolerance) {
+        double mu = 1e-6 + 4 * boxDu, mv = 1e-6 + 4 * boxDv;
+        int r = RayPatchNewton.solve(ctx, tab, k, u, v, 6, Math.max(-1e-9, u - mu), Math.min(1 + 1e-9, u + mu),
+                Math.max(-1e-9, v - mv), Math.min(1 + 1e-9, v + mv), tolerance);
+        if (r != RayPatchNewton.CONVERGED) {
+            // Degenerate spot (collapsed edge) or a near-tangent ray: the clipped piece is already
+            // within the convergence extent of the ray, so its centre is the root.
+            RayPatchNewton.solve(ctx, tab, k, u, v, 0, 0, 1, 0, 1, Double.POSITIVE_INFINITY);
+        }
+        ctx.rootU = Math.min(1, Math.max(0, ctx.rootU));
+        ctx.rootV = Math.min(1, Math.max(0, ctx.rootV));
+        return true;
+    }
+
+    /**
+     * Convex-hull clip of the piece at {@code base} in u ({@code alongU}) or v: writes the
+     * parameter range {@code [a,b] ⊂ [0,1]} that can hold a root into {@code ctx.clip} and
+     * returns false when it is empty.
+     */
+    static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU) {
+        // Directions of the net in ray space (first two coordinates)
+        int row = 3 * (n + 1);
+        int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
+        double ux = (net[pn0] - net[p00]) + (net[pnm] - net[p0m]);
+        double uy = (net[pn0 + 1] - net[p00 + 1]) + (net[pnm + 1] - net[p0m + 1]);
+        double vx = (net[p0m] - net[p00]) + (net[pnm] - net[pn0]);
+        double vy = (net[p0m + 1] - net[p00 + 1]) + (net[pnm + 1] - net[pn0 + 1]);
+        // The line through the ray runs along the other direction, so distances vary along this one
+        double lx, ly;
+        double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+        if (alongU) {
+            if (vv > 1e-20 * uu && vv > 0) {
+                lx = vx; ly = vy;
+            } else if (uu > 0) {
+                lx = -uy; ly = ux;
+            } else {
+                lx = 0; ly = 1;
+            }
+        } else {
+            if (uu > 1e-20 * vv && uu > 0) {
+                lx = ux; ly = uy;
+            } else if (vv > 0) {
+                lx = -vy; ly = vx;
+            } else {
+                lx = 1; ly = 0;
+            }
+        }
+        int deg = alongU ? n : m;
+        double[] lo = ctx.columnMin, hi = ctx.columnMax;
+        for (int c = 0; c <= deg; c++) {
+            lo[c] = Double.POSITIVE_INFINITY;
+            hi[c] = Double.NEGATIVE_INFINITY;
+        }
+        for (int j = 0, p = base; j <= m; j++) {
+            for (int i = 0; i <= n; i++, p += 3) {
+                double dist = lx * net[p + 1] - ly * net[p];
+                int c = alongU ? i : j;
+                if (dist < lo[c]) lo[c] = dist;
+                if (dist > hi[c]) hi[c] = dist;
+            }
+        }
+        // Where the convex hull of the points (c/deg, distance) meets zero
+        double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
+        double invDeg = 1.0 / deg;
+        for (int c = 0; c <= deg; c++) {
+            double xc = c * invDeg;
+            if (lo[c] <= 0 && hi[c] >= 0) {
+                if (xc < a) a = xc;
+                if (xc > b) b = xc;
+            }
+            for (int e = c + 1; e <= deg; e++) {
+                double xe = e * invDeg;
+                for (int sc = 0; sc < 2; sc++) {
+                    double yc = sc == 0 ? lo[c] : hi[c];
+                    for (int se = 0; se < 2; se++) {
+                        double ye = se == 0 ? lo[e] : hi[e];
+                        if ((yc < 0 && ye > 0) || (yc > 0 && ye < 0)) {
+                            double x = xc + (xe - xc) * (yc / (yc - ye));
+                            if (x < a) a = x;
+                            if (x > b) b = x;
+                        }
+                    }
+                }
+            }
+        }
+        if (!(a <= b)) {
+            return false;
+        }
+        ctx.clip[0] = Math.max(0, a - WIDEN);
+        ctx.clip[1] = Math.min(1, b + WIDEN);
+        return true;
+    }
+
+    /**
+     * Splits the piece in slot {@code base} in half; the half nearer the ray origin goes to the
+     * next slot (visited first), the other stays.
+     */
+    static void split(TraceContext ctx, double[] arena, int base, int len, int n, int m,
+                      double[] boxes, int b4, boolean inU) {
+        double[] tmp = ctx.tmpNet;
+        System.arraycopy(arena, base, tmp, 0, len);
+        int next = base + len;
+        double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+        if (inU) {
+            DeCasteljau.splitU(tmp, 0, n, m, 3, 0.5, arena, base, arena, next);
+        } else {
+            DeCasteljau.splitV(tmp, 0, n, m, 3, 0.5, arena, base, arena, next);
+        }
+        double loMin = minThird(arena, base, len), hiMin = minThird(arena, next, len);
+        boolean swap = loMin < hiMin; // the lower half is nearer: it must be in the next slot
+        if (swap) {
+            System.arraycopy(arena, base, tmp, 0, len);
+            System.arraycopy(arena, next, arena, base, len);
+            System.arraycopy(tmp, 0, arena, next, len);
+        }
+        double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
+        int n4 = b4 + 4;
+        // lower half box, upper half box
+        double lu0 = u0, lu1 = inU ? um : u1, lv0 = v0, lv1 = inU ? v1 : vm;
+        double hu0 = inU ? um : u0, hu1 = u1, hv0 = inU ? v0 : vm, hv1 = v1;
+        if (swap) {
+            boxes[b4] = hu0; boxes[b4 + 1] = hu1; boxes[b4 + 2] = hv0; boxes[b4 + 3] = hv1;
+            boxes[n4] = lu0; boxes[n4 + 1] = lu1; boxes[n4 + 2] = lv0; boxes[n4 + 3] = lv1;
+        } else {
+            boxes[b4] = lu0; boxes[b4 + 1] = lu1; boxes[b4 + 2] = lv0; boxes[b4 + 3] = lv1;
+            boxes[n4] = hu0; boxes[n4 + 1] = hu1; boxes[n4 + 2] = hv0; boxes[n4 + 3] = hv1;
+        }
+    }
+
+    private static double minThird(double[] net, int base, int len) {
+        double min = Double.POSITIVE_INFINITY;
+        for (int p = base + 2, end = base + len; p < end; p += 3) {
+            if (net[p] < min) min = net[p];
+        }
+        return min;
+    }
+}

@@ -1,0 +1,31 @@
+package org.beziertracer.intersect;
+
+/**
+ * Mutable record of the closest hit found so far; one per thread, reused for every ray.
+ * A solver fills only {@code t, u, v} and the primitive; the surface point is evaluated
+ * afterwards by {@link SceneIntersector#surfacePoint}.
+ */
+public final class Hit {
+    /** Primitive kinds. */
+    public static final int PATCH = 0, PLANE = 1, SPHERE = 2;
+
+    /** Ray parameter along the direction as given (not normalised). */
+    public double t;
+    /** Surface parameters: for a patch, its own [0,1]² domain; for planes and spheres, texture coordinates. */
+    public double u, v;
+    /** {@link #PATCH}, {@link #PLANE} or {@link #SPHERE}. */
+    public int kind;
+    /** Index of the patch, plane or sphere in the scene. */
+    public int index;
+    /** Sub-patch (BVH leaf) that produced a patch hit; -1 otherwise. */
+    public int subPatch;
+
+    public void set(Hit o) {
+        t = o.t; u = o.u; v = o.v; kind = o.kind; index = o.index; subPatch = o.subPatch;
+    }
+
+    @Override
+    public String toString() {
+        return "Hit[t=" + t + ", u=" + u + ", v=" + v + ", kind=" + kind + ", index=" + index + "]";
+    }
+}

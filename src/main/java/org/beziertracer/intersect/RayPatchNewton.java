@@ -1,0 +1,78 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.SubPatchTable;
+
+/**
+ * Newton iteration for the ray–patch equations in ray space: find {@code (u,v)} with
+ * {@code n1·(S(u,v)−o) = 0} and {@code n2·(S(u,v)−o) = 0}, a 2×2 system whose Jacobian is
+ * {@code [n1·Su n1·Sv; n2·Su n2·Sv]} (memoir ch. I 3.3.3.3; Toth, "On ray tracing parametric
+ * surfaces", SIGGRAPH 1985). Works on the parent patch's own net, so a root is found to full
+ * double precision whatever sub-patch produced the start.
+ */
+final class RayPatchNewton {
+    private RayPatchNewton() {}
+
+    /** Outcome codes of {@link #solve}. */
+    static final int CONVERGED = 0, SINGULAR = 1, DIVERGED = 2;
+
+    /**
+     * Iterates from {@code (u,v)} on patch {@code k}; on return {@code ctx.rootU/rootV/rootT}
+     * hold the last iterate and its ray parameter.
+     *
+     * @param maxSteps      iteration cap
+     * @param lo/hi bounds  the iterate must stay in {@code [uLo,uHi]×[vLo,vHi]} or the solve fails
+     * @return {@link #CONVERGED}, {@link #SINGULAR} (Jacobian vanishes) or {@link #DIVERGED}
+     */
+    static int solve(TraceContext ctx, SubPatchTable table, int k, double u, double v, int maxSteps,
+                     double uLo, double uHi, double vLo, double vHi, double tolerance) {
+        double[] net = table.patchNets;
+        int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
+        double[] e = ctx.eval;
+        int result = DIVERGED;
+        for (int step = 0; step <= maxSteps; step++) {
+            DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
+            double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
+            double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+            double f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+            ctx.rootU = u;
+            ctx.rootV = v;
+            ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+            if (Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance && step > 0) {
+                return CONVERGED;
+            }
+            if (step == maxSteps) {
+                break;
+            }
+            double a = ctx.n1x * e[3] + ctx.n1y * e[4] + ctx.n1z * e[5];
+            double b = ctx.n1x * e[6] + ctx.n1y * e[7] + ctx.n1z * e[8];
+            double c = ctx.n2x * e[3] + ctx.n2y * e[4] + ctx.n2z * e[5];
+            double d = ctx.n2x * e[6] + ctx.n2y * e[7] + ctx.n2z * e[8];
+            double det = a * d - b * c;
+            double scale = Math.abs(a * d) + Math.abs(b * c);
+            if (!(Math.abs(det) > 1e-300) || Math.abs(det) <= 1e-14 * scale) {
+                return Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance ? CONVERGED : SINGULAR;
+            }
+            double du = (b * f2 - d * f1) / det;
+            double dv = (c * f1 - a * f2) / det;
+            u += du;
+            v += dv;
+            if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
+                return DIVERGED;
+            }
+            if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15) {
+                result = CONVERGED;
+                // one more evaluation at the final iterate for t
+                DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
+                qx = e[0] - ctx.ox; qy = e[1] - ctx.oy; qz = e[2] - ctx.oz;
+                f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+                f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+                ctx.rootU = u;
+                ctx.rootV = v;
+                ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+                return Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance ? result : DIVERGED;
+            }
+        }
+        return result;
+    }
+}

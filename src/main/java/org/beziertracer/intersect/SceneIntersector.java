@@ -1,0 +1,210 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.accel.Accelerator;
+import org.beziertracer.accel.Bvh;
+import org.beziertracer.accel.BvhOptions;
+import org.beziertracer.accel.FlatList;
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.PatchNormals;
+import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+
+/**
+ * The whole-scene ray queries: {@link #closestHit} and {@link #occluded} over Bézier patches
+ * (sub-patch BVH, then the chosen solver at the leaves), planes and spheres.
+ *
+ * <p>Immutable snapshot: build once per scene, share between render threads, each with its own
+ * {@link TraceContext}. An edit of one patch makes a new snapshot with {@link #withPatch}, which
+ * re-splits only that patch and refits the BVH (or rebuilds it when the number of sub-patches
+ * changed).
+ */
+public final class SceneIntersector {
+
+    final Scene scene;
+    final SubPatchTable table;
+    final Accelerator accel;
+    final IntersectOptions options;
+    final Method method;
+    final AnalyticShapes shapes;
+    /** Residual tolerance of the root polish, in scene units. */
+    final double tolerance;
+    final double sceneSize;
+    final double buildMillis;
+
+    private SceneIntersector(Scene scene, SubPatchTable table, Accelerator accel, IntersectOptions options,
+                             double buildMillis) {
+        this.scene = scene;
+        this.table = table;
+        this.accel = accel;
+        this.options = options;
+        this.method = options.method();
+        this.shapes = new AnalyticShapes(scene.planes(), scene.spheres());
+        double size = scene.patches().isEmpty() ? 1 : scene.controlBounds().diagonal();
+        this.sceneSize = size > 0 ? size : 1;
+        this.tolerance = 1e-12 * sceneSize;
+        this.buildMillis = buildMillis;
+    }
+
+    /** Splits the patches and builds the acceleration structure. */
+    public static SceneIntersector build(Scene scene, IntersectOptions options) {
+        long t0 = System.nanoTime();
+        SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit());
+        Accelerator accel = buildAccel(table, options);
+        return new SceneIntersector(scene, table, accel, options, (System.nanoTime() - t0) / 1e6);
+    }
+
+    private static Accelerator buildAccel(SubPatchTable table, IntersectOptions options) {
+        return options.bvh() ? Bvh.build(table.bounds, table.count, BvhOptions.defaults())
+                : new FlatList(table.bounds, table.count);
+    }
+
+    /**
+     * A new snapshot with patch {@code index} replaced: only that patch is re-split; the BVH is
+     * refitted when its sub-patch count is unchanged, else rebuilt.
+     */
+    public SceneIntersector withPatch(int index, BezierPatch patch) {
+        long t0 = System.nanoTime();
+        SubPatchTable newTable = table.withPatch(index, patch);
+        Accelerator newAccel;
+        if (newTable.count == table.count && accel instanceof Bvh bvh) {
+            newAccel = bvh.refit(newTable.bounds);
+        } else {
+            newAccel = buildAccel(newTable, options);
+        }
+        return new SceneIntersector(scene.withPatch(index, patch), newTable, newAccel, options,
+                (System.nanoTime() - t0) / 1e6);
+    }
+
+    /** A fresh per-thread context. */
+    public TraceContext newContext() { return new TraceContext(); }
+
+    /**
+     * Closest hit of the ray {@code o + t d}, {@code tMin < t < tMax}. Fills {@code hit} and
+     * returns true when there is one. {@code d} need not be unit; t is along d as given.
+     */
+    public boolean closestHit(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
+                              double tMin, double tMax, Hit hit) {
+        ctx.setRay(ox, oy, oz, dx, dy, dz);
+        ctx.scene = this;
+        ctx.tMin = tMin;
+        ctx.found = false;
+        double best = tMax;
+        if (table.count > 0) {
+            best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
+        }
+        boolean any = ctx.found;
+        if (any) {
+            hit.set(ctx.best);
+            best = hit.t;
+        }
+        for (int k = 0; k < shapes.planeCount; k++) {
+            double t = shapes.planeT(k, ctx);
+            if (t > tMin && t < best) {
+                best = t;
+                any = true;
+                hit.t = t;
+                hit.kind = Hit.PLANE;
+                hit.index = k;
+                hit.subPatch = -1;
+            }
+        }
+        for (int k = 0; k < shapes.sphereCount; k++) {
+            double t = shapes.sphereT(k, ctx, tMin, best);
+            if (t > tMin && t < best) {
+                best = t;
+                any = true;
+                hit.t = t;
+                hit.kind = Hit.SPHERE;
+                hit.index = k;
+                hit.subPatch = -1;
+            }
+        }
+        if (any && hit.kind != Hit.PATCH) {
+            double px = ox + hit.t * dx, py = oy + hit.t * dy, pz = oz + hit.t * dz;
+            if (hit.kind == Hit.PLANE) {
+                shapes.planeUv(hit.index, px, py, pz, hit);
+            } else {
+                shapes.sphereUv(hit.index, px, py, pz, hit);
+            }
+        }
+        return any;
+    }
+
+    /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */
+    public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
+                            double tMin, double tMax) {
+        ctx.setRay(ox, oy, oz, dx, dy, dz);
+        ctx.scene = this;
+        ctx.tMin = tMin;
+        for (int k = 0; k < shapes.sphereCount; k++) {
+            if (!Double.isNaN(shapes.sphereT(k, ctx, tMin, tMax))) {
+                return true;
+            }
+        }
+        for (int k = 0; k < shapes.planeCount; k++) {
+            double t = shapes.planeT(k, ctx);
+            if (t > tMin && t < tMax) {
+                return true;
+            }
+        }
+        return table.count > 0
+                && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
+    }
+
+    /** Runs the selected solver on sub-patch {@code s}; the root goes to {@code ctx.root*}. */
+    boolean solvePatch(TraceContext ctx, int s, double tMin, double tMax) {
+        ctx.solverCalls++;
+        switch (method) {
+            case CLIPPING:
+                return BezierClipper.intersect(ctx, table, s, tMin, tMax, tolerance);
+            case NEWTON:
+                return NewtonSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
+            default:
+                return SubdivisionSolver.intersect(ctx, table, s, tMin, tMax);
+        }
+    }
+
+    /**
+     * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal), on the parent patch
+     * for patch hits. Call right after {@link #closestHit} with the same context (it uses the
+     * context's ray).
+     */
+    public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
+        sp.u = hit.u;
+        sp.v = hit.v;
+        sp.kind = hit.kind;
+        sp.index = hit.index;
+        if (hit.kind == Hit.PATCH) {
+            int k = hit.index;
+            double[] e = ctx.eval;
+            int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
+            DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
+            sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
+            sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
+            sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
+            PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, 0, ctx.scratch);
+            sp.nx = e[0]; sp.ny = e[1]; sp.nz = e[2];
+        } else if (hit.kind == Hit.PLANE) {
+            shapes.planePoint(hit.index, hit, ctx, sp);
+        } else {
+            shapes.spherePoint(hit.index, hit, ctx, sp);
+        }
+    }
+
+    public Scene scene() { return scene; }
+
+    public SubPatchTable table() { return table; }
+
+    public IntersectOptions options() { return options; }
+
+    public int subPatchCount() { return table.count; }
+
+    public int nodeCount() { return accel.nodeCount(); }
+
+    public int depth() { return accel.depth(); }
+
+    public double buildMillis() { return buildMillis; }
+
+    public double sceneSize() { return sceneSize; }
+}

@@ -1,0 +1,115 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.SubPatchTable;
+
+/**
+ * Ray–patch intersection by recursive subdivision (memoir ch. I 3.3.3.1; Whitted 1980, Rubin and
+ * Whitted 1980): the leaf's net, projected into ray space, is halved with de Casteljau until a
+ * piece is smaller than a tolerance; pieces whose ray-space box misses the ray or lies beyond
+ * the best hit are dropped; a small piece's control mesh is intersected as triangles (two per
+ * quad), interpolating t and (u,v). The result is an approximation: its error is the distance
+ * between the control mesh and the surface, which shrinks quadratically with the piece size.
+ * Kept for comparison.
+ */
+final class SubdivisionSolver {
+    private SubdivisionSolver() {}
+
+    /** A piece is small enough when its ray-space extent is below this fraction of the leaf. */
+    static final double TINY = 1e-3;
+    static final int MAX_STEPS = 4000;
+
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        int points = (n + 1) * (m + 1), len = 3 * points;
+        double[] arena = ctx.arena, boxes = ctx.entryBoxes;
+        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+        double tiny = TINY * BezierClipper.leafSize(tab, s);
+        ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
+        boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
+        int sp = 1, steps = 0;
+        double best = tMax, bestU = 0, bestV = 0;
+        boolean found = false;
+        double invLength = ctx.invLength;
+        while (sp > 0 && ++steps <= MAX_STEPS) {
+            int w = sp - 1, base = w * len, b4 = 4 * w;
+            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
+            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
+            for (int p = base, end = base + len; p < end; p += 3) {
+                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
+                if (a < min1) min1 = a;
+                if (a > max1) max1 = a;
+                if (b < min2) min2 = b;
+                if (b > max2) max2 = b;
+                if (c < min3) min3 = c;
+                if (c > max3) max3 = c;
+            }
+            if (min1 > 0 || max1 < 0 || min2 > 0 || max2 < 0 || min3 * invLength >= best || max3 * invLength <= tMin) {
+                sp--;
+                continue;
+            }
+            double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+            if (Math.max(max1 - min1, max2 - min2) <= tiny || sp == TraceContext.MAX_ENTRIES) {
+                // Intersect the control mesh as triangles
+                for (int j = 0; j < m; j++) {
+                    for (int i = 0; i < n; i++) {
+                        int p00 = base + 3 * (j * (n + 1) + i), p10 = p00 + 3;
+                        int p01 = p00 + 3 * (n + 1), p11 = p01 + 3;
+                        double ua = u0 + (u1 - u0) * i / n, ub = u0 + (u1 - u0) * (i + 1) / n;
+                        double va = v0 + (v1 - v0) * j / m, vb = v0 + (v1 - v0) * (j + 1) / m;
+                        for (int tri = 0; tri < 2; tri++) {
+                            int pb = tri == 0 ? p10 : p11, pc = tri == 0 ? p11 : p01;
+                            double ubb = tri == 0 ? ub : ub, vbb = tri == 0 ? va : vb;
+                            double ucc = tri == 0 ? ub : ua, vcc = tri == 0 ? vb : vb;
+                            if (triangle(arena, p00, pb, pc, ctx.clip)) {
+                                double wb = ctx.clip[0], wc = ctx.clip[1], wa = 1 - wb - wc;
+                                double t = (wa * arena[p00 + 2] + wb * arena[pb + 2] + wc * arena[pc + 2]) * invLength;
+                                if (t > tMin && t < best) {
+                                    best = t;
+                                    bestU = wa * ua + wb * ubb + wc * ucc;
+                                    bestV = wa * va + wb * vbb + wc * vcc;
+                                    found = true;
+                                }
+                            }
+                        }
+                    }
+                }
+                sp--;
+                continue;
+            }
+            // Halve the longer direction (in ray space) and visit the nearer half first
+            boolean inU = PatchExtents.rayLengthU(arena, base, n, m) >= PatchExtents.rayLengthV(arena, base, n, m);
+            BezierClipper.split(ctx, arena, base, len, n, m, boxes, b4, inU);
+            sp++;
+        }
+        if (found) {
+            ctx.rootT = best;
+            ctx.rootU = leafU0 + leafDu * bestU;
+            ctx.rootV = leafV0 + leafDv * bestV;
+        }
+        return found;
+    }
+
+    /**
+     * 2-D test of the ray (the origin of ray space) against triangle (a, b, c) in the first two
+     * coordinates; writes the barycentric weights of b and c into {@code w}.
+     */
+    static boolean triangle(double[] p, int a, int b, int c, double[] w) {
+        double ax = p[a], ay = p[a + 1];
+        double e1x = p[b] - ax, e1y = p[b + 1] - ay, e2x = p[c] - ax, e2y = p[c + 1] - ay;
+        double det = e1x * e2y - e1y * e2x;
+        if (det == 0) {
+            return false;
+        }
+        double inv = 1.0 / det;
+        double wb = (-ax * e2y + ay * e2x) * inv;
+        double wc = (-ay * e1x + ax * e1y) * inv;
+        if (wb < 0 || wc < 0 || wb + wc > 1) {
+            return false;
+        }
+        w[0] = wb;
+        w[1] = wc;
+        return true;
+    }
+}

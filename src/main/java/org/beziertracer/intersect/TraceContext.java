@@ -1,0 +1,113 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.accel.LeafIntersector;
+import org.beziertracer.accel.LeafOccluder;
+import org.beziertracer.geometry.DeCasteljau;
+
+/**
+ * Per-thread scratch for ray queries: the current ray and its ray-space frame, the BVH stack,
+ * the arena of clipping sub-nets and the solver's result. Create one per render thread with
+ * {@link SceneIntersector#newContext()}; never share one between threads. Nothing here is
+ * allocated per ray.
+ *
+ * <h2>Ray space</h2>
+ * The ray {@code o + t d} is written as the intersection of two planes through {@code o} with
+ * unit normals {@code n1}, {@code n2} perpendicular to {@code d} and to each other (Nishita,
+ * Sederberg, Kakimoto 1990). A point {@code P} maps to {@code (n1·(P−o), n2·(P−o), d̂·(P−o))}:
+ * the ray is the third axis, and a surface point lies on the ray exactly when its first two
+ * coordinates vanish. The map is affine, so a control net maps to the control net of the
+ * transformed surface.
+ */
+public final class TraceContext implements LeafIntersector, LeafOccluder {
+
+    /** Most sub-nets the clipping and subdivision stacks hold. */
+    static final int MAX_ENTRIES = 64;
+    static final int NET_LENGTH = DeCasteljau.MAX_ORDER * DeCasteljau.MAX_ORDER * 3;
+
+    // The ray and its frame
+    double ox, oy, oz, dx, dy, dz;
+    double invDx, invDy, invDz;
+    double n1x, n1y, n1z, n2x, n2y, n2z, n3x, n3y, n3z;
+    /** 1/|d|: converts the third ray-space coordinate (a distance) into the ray parameter t. */
+    double invLength;
+
+    // Scratch owned by this thread
+    final int[] stack = new int[128];
+    final double[] arena = new double[MAX_ENTRIES * NET_LENGTH];
+    final double[] entryBoxes = new double[MAX_ENTRIES * 4];
+    final int[] entryDepth = new int[MAX_ENTRIES];
+    final double[] tmpNet = new double[NET_LENGTH];
+    final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+    final double[] eval = new double[9];
+    final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
+    final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
+    final double[] clip = new double[2];
+
+    // The query in flight (set by SceneIntersector)
+    SceneIntersector scene;
+    double tMin;
+    /** Best patch hit of the current closest-hit query. */
+    final Hit best = new Hit();
+    boolean found;
+
+    // Root found by the last solver call, in the parent patch's parameters
+    double rootT, rootU, rootV;
+
+    /** Counters for statistics (not reset by queries). */
+    public long solverCalls, clipIterations;
+
+    TraceContext() {}
+
+    /** Sets the ray and computes its ray-space frame. {@code d} must be finite and non-zero. */
+    void setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
+        this.ox = ox; this.oy = oy; this.oz = oz;
+        this.dx = dx; this.dy = dy; this.dz = dz;
+        invDx = 1.0 / dx; invDy = 1.0 / dy; invDz = 1.0 / dz;
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        invLength = 1.0 / len;
+        n3x = dx * invLength; n3y = dy * invLength; n3z = dz * invLength;
+        // n1: perpendicular to d, built from its two largest components
+        double ax, ay, az;
+        if (Math.abs(n3x) > Math.abs(n3z)) {
+            ax = -n3y; ay = n3x; az = 0;
+        } else {
+            ax = 0; ay = -n3z; az = n3y;
+        }
+        double inv = 1.0 / Math.sqrt(ax * ax + ay * ay + az * az);
+        n1x = ax * inv; n1y = ay * inv; n1z = az * inv;
+        // n2 = d̂ × n1
+        n2x = n3y * n1z - n3z * n1y;
+        n2y = n3z * n1x - n3x * n1z;
+        n2z = n3x * n1y - n3y * n1x;
+    }
+
+    /** Maps {@code count} points from {@code src[srcOff..]} into ray space at {@code dest[destOff..]}. */
+    void project(double[] src, int srcOff, int count, double[] dest, int destOff) {
+        for (int k = 0, s = srcOff, d = destOff; k < count; k++, s += 3, d += 3) {
+            double qx = src[s] - ox, qy = src[s + 1] - oy, qz = src[s + 2] - oz;
+            dest[d] = n1x * qx + n1y * qy + n1z * qz;
+            dest[d + 1] = n2x * qx + n2y * qy + n2z * qz;
+            dest[d + 2] = n3x * qx + n3y * qy + n3z * qz;
+        }
+    }
+
+    @Override
+    public double intersect(int prim, double tMax) {
+        if (scene.solvePatch(this, prim, tMin, tMax)) {
+            found = true;
+            best.t = rootT;
+            best.u = rootU;
+            best.v = rootV;
+            best.kind = Hit.PATCH;
+            best.index = scene.table.parent[prim];
+            best.subPatch = prim;
+            return rootT;
+        }
+        return tMax;
+    }
+
+    @Override
+    public boolean occludes(int prim, double tMax) {
+        return scene.solvePatch(this, prim, tMin, tMax);
+    }
+}

@@ -1,0 +1,86 @@
+package org.beziertracer.intersect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/** Accuracy of the three solvers: a ray aimed at S(u*,v*) comes back with t*, u*, v*. */
+class BezierClipperTest {
+
+    /** |Δt| allowed, as a fraction of the scene size (the bound). */
+    static final double T_TOLERANCE = 1e-9;
+
+    @ParameterizedTest
+    @EnumSource(value = Method.class, names = {"CLIPPING", "NEWTON"})
+    void rayAimedAtASurfacePointReturnsItsParameters(Method method) {
+        Random rnd = new Random(20211);
+        int rays = 0, earlier = 0, misses = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            int n = 1 + rnd.nextInt(9), m = 1 + rnd.nextInt(9);
+            double size = Math.pow(10, rnd.nextInt(5) - 2);
+            BezierPatch patch = RandomPatches.heightField(rnd, n, m, size, 0.6);
+            for (IntersectOptions opts : List.of(IntersectOptions.defaults().withMethod(method),
+                    IntersectOptions.defaults().withMethod(method).withBvh(false))) {
+                if (method == Method.NEWTON && !opts.bvh()) {
+                    continue; // Newton from the whole patch's centre is not expected to converge
+                }
+                SceneIntersector si = SceneIntersector.build(new Scene(List.of(patch)), opts);
+                TraceContext ctx = si.newContext();
+                Hit hit = new Hit();
+                double[] s = new double[3];
+                for (int r = 0; r < 15; r++) {
+                    double us = rnd.nextDouble(), vs = rnd.nextDouble();
+                    DeCasteljau.evaluate(patch.copyNet(), 0, n, m, 3, us, vs, s, 0, new double[DeCasteljau.SCRATCH_LENGTH]);
+                    // origin above the surface, direction not unit
+                    double ox = s[0] + size * (rnd.nextDouble() - 0.5), oy = s[1] + size * (rnd.nextDouble() - 0.5);
+                    double oz = size * (1 + 2 * rnd.nextDouble());
+                    double scale = 0.1 + 3 * rnd.nextDouble();
+                    double dx = (s[0] - ox) * scale, dy = (s[1] - oy) * scale, dz = (s[2] - oz) * scale;
+                    double tStar = 1 / scale;
+                    rays++;
+                    String where = method + " bvh=" + opts.bvh() + " degree " + n + "x" + m + " size " + size
+                            + " (u*,v*)=(" + us + "," + vs + ") o=(" + ox + "," + oy + "," + oz + ")";
+                    if (!si.closestHit(ctx, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
+                        misses++;
+                        if (method == Method.CLIPPING) {
+                            fail("missed: " + where);
+                        }
+                        continue;
+                    }
+                    if (Math.abs(hit.t - tStar) <= T_TOLERANCE * size * scale) {
+                        assertEquals(us, hit.u, 1e-6, "u " + where);
+                        assertEquals(vs, hit.v, 1e-6, "v " + where);
+                    } else {
+                        // a genuine nearer root: the surface meets the ray before S(u*,v*)
+                        assertTrue(hit.t < tStar, "t " + hit.t + " beyond t* " + tStar + ": " + where);
+                        assertOnRay(patch, hit, ox, oy, oz, dx, dy, dz, size, where);
+                        earlier++;
+                    }
+                }
+            }
+        }
+        assertTrue(earlier < rays / 20, "too many nearer roots: " + earlier + " of " + rays);
+        if (method == Method.NEWTON) {
+            assertTrue(misses < rays / 50, "Newton missed " + misses + " of " + rays);
+        }
+    }
+
+    static void assertOnRay(BezierPatch patch, Hit hit, double ox, double oy, double oz,
+                            double dx, double dy, double dz, double size, String where) {
+        double[] s = new double[3];
+        DeCasteljau.evaluate(patch.copyNet(), 0, patch.degreeU(), patch.degreeV(), 3, hit.u, hit.v, s, 0,
+                new double[DeCasteljau.SCRATCH_LENGTH]);
+        double ex = ox + hit.t * dx - s[0], ey = oy + hit.t * dy - s[1], ez = oz + hit.t * dz - s[2];
+        double err = Math.sqrt(ex * ex + ey * ey + ez * ez);
+        assertTrue(err <= 1e-8 * size, "hit point off the surface by " + err + ": " + where);
+    }
+}

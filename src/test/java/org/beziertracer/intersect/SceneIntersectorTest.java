@@ -1,0 +1,227 @@
+package org.beziertracer.intersect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Plane;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.Sphere;
+import org.junit.jupiter.api.Test;
+
+/** Whole-scene queries: BVH against brute force, occluded against closestHit, solvers against a reference. */
+class SceneIntersectorTest {
+
+    static Scene wildScene(Random rnd, int patches, int maxDegree) {
+        List<BezierPatch> list = new ArrayList<>();
+        for (int k = 0; k < patches; k++) {
+            BezierPatch p = RandomPatches.wild(rnd, 1 + rnd.nextInt(maxDegree), 1 + rnd.nextInt(maxDegree), 2);
+            double ox = 6 * rnd.nextDouble(), oy = 6 * rnd.nextDouble(), oz = 6 * rnd.nextDouble();
+            double[] net = p.copyNet();
+            for (int i = 0; i < net.length; i += 3) {
+                net[i] += ox; net[i + 1] += oy; net[i + 2] += oz;
+            }
+            list.add(new BezierPatch(p.degreeU(), p.degreeV(), net));
+        }
+        return new Scene(list);
+    }
+
+    /** Random ray from outside the [0,8]³ region toward a random point inside it. */
+    static double[] randomRay(Random rnd) {
+        double[] o = {-4 + 16 * rnd.nextDouble(), -4 + 16 * rnd.nextDouble(), -4 + 16 * rnd.nextDouble()};
+        double[] target = {8 * rnd.nextDouble(), 8 * rnd.nextDouble(), 8 * rnd.nextDouble()};
+        return new double[] {o[0], o[1], o[2], target[0] - o[0], target[1] - o[1], target[2] - o[2]};
+    }
+
+    @Test
+    void bvhClosestHitEqualsBruteForceOverWholePatches() {
+        Random rnd = new Random(7);
+        Scene scene = wildScene(rnd, 40, 6);
+        SceneIntersector withBvh = SceneIntersector.build(scene, IntersectOptions.defaults());
+        SceneIntersector flat = SceneIntersector.build(scene, IntersectOptions.defaults().withBvh(false));
+        assertTrue(withBvh.subPatchCount() > scene.patchCount(), "patches were pre-split");
+        assertEquals(scene.patchCount(), flat.subPatchCount());
+        TraceContext c1 = withBvh.newContext(), c2 = flat.newContext();
+        Hit h1 = new Hit(), h2 = new Hit();
+        int hits = 0;
+        for (int r = 0; r < 3000; r++) {
+            double[] ray = randomRay(rnd);
+            boolean a = withBvh.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
+            boolean b = flat.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
+            String where = "ray " + r + " " + java.util.Arrays.toString(ray);
+            assertEquals(b, a, "hit/miss differs: " + where);
+            if (a) {
+                hits++;
+                assertEquals(h2.t, h1.t, 1e-9 * 10, "t differs: " + where);
+                assertEquals(h2.index, h1.index, "patch differs: " + where);
+            }
+        }
+        assertTrue(hits > 300, "test rays should hit often, hit " + hits);
+    }
+
+    @Test
+    void occludedAgreesWithClosestHit() {
+        Random rnd = new Random(11);
+        Scene scene = wildScene(rnd, 25, 5);
+        for (Method method : Method.values()) {
+            SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(method));
+            TraceContext ctx = si.newContext();
+            Hit hit = new Hit();
+            for (int r = 0; r < 1500; r++) {
+                double[] ray = randomRay(rnd);
+                double tMax = rnd.nextDouble() * 1.5;
+                boolean closest = si.closestHit(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, tMax, hit);
+                boolean occluded = si.occluded(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, tMax);
+                assertEquals(closest, occluded, method + " ray " + java.util.Arrays.toString(ray) + " tMax " + tMax);
+            }
+        }
+    }
+
+    @Test
+    void clippingAndNewtonAgreeWithTheSlowReference() {
+        Random rnd = new Random(5);
+        int compared = 0, newtonAgrees = 0;
+        for (int trial = 0; trial < 60; trial++) {
+            int n = 1 + rnd.nextInt(9), m = 1 + rnd.nextInt(9);
+            BezierPatch patch = RandomPatches.heightField(rnd, n, m, 4, 0.8);
+            Scene scene = new Scene(List.of(patch));
+            SceneIntersector clip = SceneIntersector.build(scene, IntersectOptions.defaults());
+            SceneIntersector newton = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(Method.NEWTON));
+            TraceContext cc = clip.newContext(), cn = newton.newContext();
+            Hit hc = new Hit(), hn = new Hit();
+            for (int r = 0; r < 10; r++) {
+                double ox = 6 * (rnd.nextDouble() - 0.5), oy = 6 * (rnd.nextDouble() - 0.5), oz = 3 + 3 * rnd.nextDouble();
+                double tx = 3 * (rnd.nextDouble() - 0.5), ty = 3 * (rnd.nextDouble() - 0.5);
+                double dx = tx - ox, dy = ty - oy, dz = -oz;
+                double[] ref = ReferenceIntersector.nearest(patch, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, 48);
+                boolean a = clip.closestHit(cc, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hc);
+                boolean b = newton.closestHit(cn, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hn);
+                String where = "degree " + n + "x" + m + " o=(" + ox + "," + oy + "," + oz + ") d=(" + dx + "," + dy + "," + dz + ")";
+                assertEquals(ref != null, a, "clipping hit/miss differs from the reference: " + where);
+                if (ref != null) {
+                    compared++;
+                    assertEquals(ref[0], hc.t, 1e-9, "clipping t: " + where);
+                    assertEquals(ref[1], hc.u, 1e-7, "clipping u: " + where);
+                    assertEquals(ref[2], hc.v, 1e-7, "clipping v: " + where);
+                    if (b && Math.abs(hn.t - ref[0]) < 1e-9) {
+                        newtonAgrees++;
+                    }
+                }
+            }
+        }
+        assertTrue(compared > 200, "compared " + compared);
+        assertTrue(newtonAgrees > 0.95 * compared, "Newton agreed on " + newtonAgrees + " of " + compared);
+    }
+
+    @Test
+    void subdivisionApproximatesTheExactHit() {
+        Random rnd = new Random(3);
+        BezierPatch patch = RandomPatches.heightField(rnd, 3, 3, 4, 0.5);
+        Scene scene = new Scene(List.of(patch));
+        SceneIntersector exact = SceneIntersector.build(scene, IntersectOptions.defaults());
+        SceneIntersector sub = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(Method.SUBDIVISION));
+        TraceContext ce = exact.newContext(), cs = sub.newContext();
+        Hit he = new Hit(), hs = new Hit();
+        int both = 0;
+        for (int r = 0; r < 400; r++) {
+            double ox = 1.5 * (rnd.nextDouble() - 0.5), oy = 1.5 * (rnd.nextDouble() - 0.5);
+            boolean a = exact.closestHit(ce, ox, oy, 10, 0.1 * (rnd.nextDouble() - 0.5), 0.1 * (rnd.nextDouble() - 0.5), -1, 0, 100, he);
+            boolean b = sub.closestHit(cs, ox, oy, 10, ce.dx, ce.dy, ce.dz, 0, 100, hs);
+            assertEquals(a, b, "ray " + r);
+            if (a) {
+                both++;
+                assertEquals(he.t, hs.t, 1e-3 * 4, "subdivision t close to exact, ray " + r);
+            }
+        }
+        assertTrue(both > 300);
+    }
+
+    @Test
+    void planesAndSpheresAreHitThroughTheSameQuery() {
+        Scene scene = new Scene(List.of(), List.of(new Plane(new Vec3(0, 0, 0), new Vec3(0, 0, 1))),
+                List.of(new Sphere(new Vec3(0, 0, 2), 1)));
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        assertTrue(si.closestHit(ctx, 0, 0, 10, 0, 0, -2, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(Hit.SPHERE, hit.kind);
+        assertEquals(3.5, hit.t, 1e-12);
+        assertTrue(si.closestHit(ctx, 5, 0, 10, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(Hit.PLANE, hit.kind);
+        assertEquals(10, hit.t, 1e-12);
+        // from inside the sphere, the far side
+        assertTrue(si.closestHit(ctx, 0, 0, 2, 0, 0, 1, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(1, hit.t, 1e-12);
+        assertFalse(si.occluded(ctx, 5, 0, 10, 0, 0, -1, 0, 9.9));
+        assertTrue(si.occluded(ctx, 5, 0, 10, 0, 0, -1, 0, 10.1));
+        SurfacePoint sp = new SurfacePoint();
+        si.closestHit(ctx, 0, 0, 10, 0, 0, -2, 0, Double.POSITIVE_INFINITY, hit);
+        si.surfacePoint(ctx, hit, sp);
+        assertEquals(3, sp.pz, 1e-12);
+        assertEquals(1, sp.nz, 1e-12);
+    }
+
+    @Test
+    void aRayLeavingAHitPointDoesNotFindThatPointAgain() {
+        Random rnd = new Random(99);
+        Scene scene = wildScene(rnd, 20, 4);
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit(), again = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        double eps = 1e-7 * si.sceneSize();
+        int tested = 0;
+        for (int r = 0; r < 2000; r++) {
+            double[] ray = randomRay(rnd);
+            if (!si.closestHit(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, hit)) {
+                continue;
+            }
+            si.surfacePoint(ctx, hit, sp);
+            // leave toward the side the ray came from, along a random direction in that hemisphere
+            double side = sp.nx * ray[3] + sp.ny * ray[4] + sp.nz * ray[5] < 0 ? 1 : -1;
+            double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
+            double dn = (lx * sp.nx + ly * sp.ny + lz * sp.nz) * side;
+            if (dn < 0.05) {
+                continue;
+            }
+            tested++;
+            if (si.closestHit(ctx, sp.px, sp.py, sp.pz, lx, ly, lz, eps, Double.POSITIVE_INFINITY, again)) {
+                double gx = again.t * lx, gy = again.t * ly, gz = again.t * lz;
+                double dist = Math.sqrt(gx * gx + gy * gy + gz * gz);
+                assertTrue(dist > 1e-6 * si.sceneSize(), "ray from hit point " + r + " hit itself at distance " + dist);
+            }
+        }
+        assertTrue(tested > 200, "tested " + tested);
+    }
+
+    @Test
+    void editingOnePatchGivesTheSameAnswersAsARebuild() {
+        Random rnd = new Random(17);
+        Scene scene = wildScene(rnd, 12, 4);
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        BezierPatch moved = scene.patches().get(3).withPoint(1, 1, 4, 4, 4);
+        SceneIntersector edited = si.withPatch(3, moved);
+        SceneIntersector rebuilt = SceneIntersector.build(scene.withPatch(3, moved), IntersectOptions.defaults());
+        assertNotNull(edited.scene());
+        assertEquals(moved, edited.scene().patches().get(3));
+        assertEquals(scene.patches().get(3), si.scene().patches().get(3), "old snapshot unchanged");
+        TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
+        Hit h1 = new Hit(), h2 = new Hit();
+        for (int r = 0; r < 1000; r++) {
+            double[] ray = randomRay(rnd);
+            boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
+            boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
+            assertEquals(b, a, "ray " + r);
+            if (a) {
+                assertEquals(h2.t, h1.t, 1e-9, "ray " + r);
+            }
+        }
+    }
+}
