@@ -24,9 +24,28 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp();
         }
+        return commandLine().execute(args);
+    }
+
+    /**
+     * Runs a command with its output and errors going to the given writers (for tests and
+     * embedding); never launches the app. Returns the exit code.
+     */
+    public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        CommandLine cl = commandLine();
+        cl.setOut(out);
+        cl.setErr(err);
+        int code = cl.execute(args);
+        out.flush();
+        err.flush();
+        return code;
+    }
+
+    /** The configured command tree: sub-commands plus the one-line error handler. */
+    static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
         cl.setExecutionExceptionHandler(CliErrors::handle);
-        return cl.execute(args);
+        return cl;
     }
 
     static int launchApp() {

@@ -1,0 +1,130 @@
+package org.beziertracer.model.io;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.Reader;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+
+/**
+ * Reads the BPT format ("Bézier patch text").
+ *
+ * <h2>Format</h2>
+ * <pre>
+ * count                      # number of patches, 1..{@value #MAX_PATCH_COUNT}
+ * n m                        # per patch: degree in u, degree in v, each 1..15
+ * x y z                      # then (n+1)(m+1) points, u index fastest:
+ * ...                        #   point k = j(n+1) + i holds P_ij
+ * </pre>
+ * Tokens are separated by any whitespace (line breaks carry no meaning; a whole file may be one
+ * line). {@code #} starts a comment that runs to the end of the line. Coordinates are plain
+ * decimal or scientific numbers; NaN and infinities are rejected. Nothing may follow the last
+ * patch except whitespace and comments.
+ *
+ * <h2>Errors</h2>
+ * Every problem is a one-line {@link ModelFormatException}: {@code file:line: expected …, found …}.
+ * In messages, patches and points are numbered from 1 in file order.
+ *
+ * <p>The patch count is never used to pre-allocate, so an absurd count in a short file fails on
+ * the missing data rather than on memory. Stateless and thread-safe.
+ */
+public final class BptReader {
+    private BptReader() {}
+
+    /** Largest patch count accepted. */
+    public static final int MAX_PATCH_COUNT = 1_000_000;
+
+    /** Reads a BPT file into a scene; errors name the file by {@code file.getFileName()}. */
+    public static Scene readScene(Path file) throws IOException {
+        return new Scene(read(file));
+    }
+
+    /** Reads a BPT file; errors name the file by {@code file.getFileName()}. */
+    public static List<BezierPatch> read(Path file) throws IOException {
+        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            return read(in, String.valueOf(file.getFileName()));
+        }
+    }
+
+    /** Reads BPT text; for tests and in-memory use. */
+    public static List<BezierPatch> read(String text, String fileName) {
+        try {
+            return read(new java.io.StringReader(text), fileName);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * Reads BPT text from {@code in} (not closed).
+     *
+     * @param fileName shown at the start of every error message
+     * @throws ModelFormatException for any syntax or range problem
+     */
+    public static List<BezierPatch> read(Reader in, String fileName) throws IOException {
+        BptTokenizer tokens = new BptTokenizer(in);
+
+        // Patch count
+        String token = tokens.next();
+        if (token == null) {
+            throw new ModelFormatException(fileName, 1,
+                    "expected the patch count, found end of file (the file is empty)");
+        }
+        if (!NumberText.isWhole(token)) {
+            throw new ModelFormatException(fileName, tokens.line(), "expected the patch count (a whole number 1.."
+                    + MAX_PATCH_COUNT + "), found " + NumberText.describe(token));
+        }
+        long count = NumberText.parseWhole(token);
+        if (count < 1 || count > MAX_PATCH_COUNT) {
+            throw new ModelFormatException(fileName, tokens.line(), "expected the patch count, found "
+                    + NumberText.describe(token) + ": patch count " + token + " out of range 1.." + MAX_PATCH_COUNT);
+        }
+
+        // Patches; the list grows as data arrives, never sized from the announced count
+        List<BezierPatch> patches = new ArrayList<>((int) Math.min(count, 1024));
+        for (int p = 1; p <= count; p++) {
+            String of = " of patch " + p + " (of " + count + " announced)";
+            int n = readDegree(tokens, "u degree" + of, fileName);
+            int m = readDegree(tokens, "v degree" + of, fileName);
+            int points = (n + 1) * (m + 1);
+            double[] net = new double[points * 3];
+            for (int k = 0; k < points; k++) {
+                for (int c = 0; c < 3; c++) {
+                    String what = "the " + "xyz".charAt(c) + " coordinate of point " + (k + 1) + of;
+                    token = tokens.next();
+                    net[3 * k + c] = NumberText.parseFinite(token, what, fileName, tokens.line());
+                }
+            }
+            patches.add(new BezierPatch(n, m, net));
+        }
+
+        // Nothing but comments may follow
+        token = tokens.next();
+        if (token != null) {
+            throw new ModelFormatException(fileName, tokens.line(), "expected end of file after the " + count
+                    + " announced patches, found " + NumberText.describe(token));
+        }
+        return patches;
+    }
+
+    private static int readDegree(BptTokenizer tokens, String what, String fileName) throws IOException {
+        String token = tokens.next();
+        if (token == null || !NumberText.isWhole(token)) {
+            throw new ModelFormatException(fileName, tokens.line(), "expected the " + what
+                    + " (a whole number 1.." + BezierPatch.MAX_DEGREE + "), found " + NumberText.describe(token));
+        }
+        long degree = NumberText.parseWhole(token);
+        if (degree < 1 || degree > BezierPatch.MAX_DEGREE) {
+            throw new ModelFormatException(fileName, tokens.line(), "expected the " + what + ", found "
+                    + NumberText.describe(token) + ": degree " + token + " out of range 1.." + BezierPatch.MAX_DEGREE);
+        }
+        return (int) degree;
+    }
+}

@@ -1,0 +1,57 @@
+package org.beziertracer.model.io;
+
+import java.io.IOException;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.beziertracer.model.BezierPatch;
+
+/**
+ * Writes the BPT format read by {@link BptReader}: the patch count on the first line, then per
+ * patch a line {@code n m} and one line {@code x y z} per control point, u index fastest.
+ *
+ * <p>Numbers are written as the shortest text that parses back to the same {@code double}
+ * (whole numbers without {@code .0}), so reading the output gives back equal patches bit for bit.
+ * Stateless and thread-safe.
+ */
+public final class BptWriter {
+    private BptWriter() {}
+
+    /** Writes the patches to {@code file} atomically (see {@link AtomicFiles}). */
+    public static void write(Path file, List<BezierPatch> patches) throws IOException {
+        AtomicFiles.write(file, out -> write(out, patches));
+    }
+
+    /** The BPT text of the patches. */
+    public static String toString(List<BezierPatch> patches) {
+        StringWriter out = new StringWriter();
+        try {
+            write(out, patches);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return out.toString();
+    }
+
+    /** Writes BPT text to {@code out} (not closed). */
+    public static void write(Writer out, List<BezierPatch> patches) throws IOException {
+        out.write(Integer.toString(patches.size()));
+        out.write('\n');
+        StringBuilder line = new StringBuilder(64);
+        for (BezierPatch patch : patches) {
+            out.write(patch.degreeU() + " " + patch.degreeV() + "\n");
+            double[] net = patch.copyNet();
+            for (int k = 0; k < net.length; k += 3) {
+                line.setLength(0);
+                line.append(NumberText.format(net[k])).append(' ')
+                        .append(NumberText.format(net[k + 1])).append(' ')
+                        .append(NumberText.format(net[k + 2])).append('\n');
+                out.write(line.toString());
+            }
+        }
+        out.flush();
+    }
+}

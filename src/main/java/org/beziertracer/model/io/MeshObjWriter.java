@@ -1,0 +1,112 @@
+package org.beziertracer.model.io;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Path;
+
+/**
+ * Writes a triangle mesh (for example a tessellated Bézier scene) as a plain Wavefront OBJ
+ * polygon file that any 3D tool can import: {@code v x y z}, {@code vt u v}, {@code vn x y z}
+ * per vertex, then {@code f a/a/a b/b/b c/c/c} per triangle with 1-based indices (the same index
+ * for position, texture coordinate and normal, as the arrays are per vertex).
+ *
+ * <h2>Array layout</h2>
+ * <ul>
+ *   <li>{@code positions}: {@code x,y,z} per vertex, {@code 3·vertexCount} doubles;</li>
+ *   <li>{@code normals}: {@code x,y,z} per vertex, same vertex count, or null (then faces are
+ *       written {@code a/a} or {@code a});</li>
+ *   <li>{@code uvs}: {@code u,v} per vertex, or null (then faces are {@code a//a} or {@code a});</li>
+ *   <li>{@code triangles}: three 0-based vertex indices per triangle.</li>
+ * </ul>
+ * The arrays are only read. Numbers use the shortest round-trip text. Stateless and thread-safe.
+ */
+public final class MeshObjWriter {
+    private MeshObjWriter() {}
+
+    /** Writes the mesh to {@code file} atomically (see {@link AtomicFiles}). */
+    public static void write(Path file, double[] positions, double[] normals, double[] uvs, int[] triangles)
+            throws IOException {
+        AtomicFiles.write(file, out -> write(out, positions, normals, uvs, triangles));
+    }
+
+    /**
+     * Writes the mesh to {@code out} (not closed).
+     *
+     * @throws IllegalArgumentException when the array lengths disagree or an index is out of range
+     */
+    public static void write(Writer out, double[] positions, double[] normals, double[] uvs, int[] triangles)
+            throws IOException {
+        // Check the layout before writing anything
+        if (positions == null || positions.length % 3 != 0) {
+            throw new IllegalArgumentException("positions must hold x,y,z per vertex, got "
+                    + (positions == null ? "null" : positions.length + " doubles"));
+        }
+        int vertexCount = positions.length / 3;
+        if (normals != null && normals.length != 3 * vertexCount) {
+            throw new IllegalArgumentException("normals must hold x,y,z for each of the " + vertexCount
+                    + " vertices, got " + normals.length + " doubles");
+        }
+        if (uvs != null && uvs.length != 2 * vertexCount) {
+            throw new IllegalArgumentException("uvs must hold u,v for each of the " + vertexCount
+                    + " vertices, got " + uvs.length + " doubles");
+        }
+        if (triangles == null || triangles.length % 3 != 0) {
+            throw new IllegalArgumentException("triangles must hold 3 vertex indices each, got "
+                    + (triangles == null ? "null" : triangles.length + " ints"));
+        }
+        for (int k = 0; k < triangles.length; k++) {
+            if (triangles[k] < 0 || triangles[k] >= vertexCount) {
+                throw new IllegalArgumentException("triangle " + k / 3 + " refers to vertex " + triangles[k]
+                        + ", outside 0.." + (vertexCount - 1));
+            }
+        }
+
+        // Vertices, texture coordinates, normals, faces
+        StringBuilder sb = new StringBuilder(128);
+        out.write("# Bézier Tracer mesh: " + vertexCount + " vertices, " + triangles.length / 3 + " triangles\n");
+        for (int v = 0; v < vertexCount; v++) {
+            sb.setLength(0);
+            triple(sb.append("v "), positions, 3 * v);
+            out.write(sb.toString());
+        }
+        if (uvs != null) {
+            for (int v = 0; v < vertexCount; v++) {
+                sb.setLength(0);
+                sb.append("vt ").append(NumberText.format(uvs[2 * v])).append(' ')
+                        .append(NumberText.format(uvs[2 * v + 1])).append('\n');
+                out.write(sb.toString());
+            }
+        }
+        if (normals != null) {
+            for (int v = 0; v < vertexCount; v++) {
+                sb.setLength(0);
+                triple(sb.append("vn "), normals, 3 * v);
+                out.write(sb.toString());
+            }
+        }
+        for (int t = 0; t < triangles.length; t += 3) {
+            sb.setLength(0);
+            sb.append('f');
+            for (int c = 0; c < 3; c++) {
+                int index = triangles[t + c] + 1;
+                sb.append(' ').append(index);
+                if (uvs != null || normals != null) {
+                    sb.append('/');
+                    if (uvs != null) {
+                        sb.append(index);
+                    }
+                    if (normals != null) {
+                        sb.append('/').append(index);
+                    }
+                }
+            }
+            out.write(sb.append('\n').toString());
+        }
+        out.flush();
+    }
+
+    private static void triple(StringBuilder sb, double[] a, int k) {
+        sb.append(NumberText.format(a[k])).append(' ').append(NumberText.format(a[k + 1])).append(' ')
+                .append(NumberText.format(a[k + 2])).append('\n');
+    }
+}
