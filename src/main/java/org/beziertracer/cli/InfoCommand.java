@@ -19,10 +19,10 @@ import picocli.CommandLine.Spec;
  * <pre>
  * model: teapot
  * patches: 32
- * degrees: 3x3 ×32
+ * degrees: 3x3 x32
  * control-point bounds: x[-120,141] y[-80,80] z[0,120]
  * </pre>
- * Degrees are listed as {@code n×m ×count}, sorted by u then v degree. A model that cannot be read
+ * Degrees are listed as {@code nxm (count)}, sorted by u then v degree. A model that cannot be read
  * ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
@@ -47,7 +47,7 @@ final class InfoCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** {@code "3x3 ×30, 1x2 ×2"}-style histogram, sorted by u degree then v degree. */
+    /** {@code "3x3 (30), 1x2 (2)"}-style histogram, sorted by u degree then v degree. */
     static String degreeHistogram(Scene scene) {
         Map<Integer, Integer> counts = new TreeMap<>();
         for (BezierPatch p : scene.patches()) {
@@ -58,7 +58,7 @@ final class InfoCommand implements Callable<Integer> {
             if (sb.length() > 0) {
                 sb.append(", ");
             }
-            sb.append(e.getKey() / 100).append('x').append(e.getKey() % 100).append(" ×").append(e.getValue());
+            sb.append(e.getKey() / 100).append('x').append(e.getKey() % 100).append(" (").append(e.getValue()).append(")");
         }
         return sb.toString();
     }

@@ -31,7 +31,7 @@ class InfoCommandTest {
         Run r = run("info", "teapot");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("patches: 32\n"), r.out());
-        assertTrue(r.out().contains("degrees: 3x3 ×32\n"), r.out());
+        assertTrue(r.out().contains("degrees: 3x3 (32)\n"), r.out());
         assertTrue(r.out().contains("x[-120,141] y[-80,80] z[0,120]"), r.out());
         assertEquals("", r.err());
     }
@@ -41,7 +41,7 @@ class InfoCommandTest {
         Run r = run("info", "patch");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("patches: 1\n"), r.out());
-        assertTrue(r.out().contains("degrees: 3x3 ×1\n"), r.out());
+        assertTrue(r.out().contains("degrees: 3x3 (1)\n"), r.out());
         assertTrue(r.out().contains("x[-1.5,1.5] y[-1.5,1.5] z[0,0]"), r.out());
     }
 
@@ -52,7 +52,7 @@ class InfoCommandTest {
                 + "2 1 0 0 0 1 0 0 2 0 0 0 1 0 1 1 0 2 1 0\n1 1 0 0 0 1 0 0 0 1 0 1 1 5\n");
         Run r = run("info", file.toString());
         assertEquals(0, r.code(), r.err());
-        assertTrue(r.out().contains("degrees: 1x1 ×2, 2x1 ×1\n"), r.out());
+        assertTrue(r.out().contains("degrees: 1x1 (2), 2x1 (1)\n"), r.out());
         assertTrue(r.out().contains("x[0,2] y[0,1] z[0,5]"), r.out());
     }
 
