@@ -17,6 +17,14 @@ import org.beziertracer.math.Aabb;
 public interface Accelerator {
 
     /**
+     * The accelerator for the sub-patch BVH switch: a {@link Bvh} built with {@code opts} when
+     * {@code useBvh}, else a {@link FlatList} ({@code opts} ignored).
+     */
+    static Accelerator of(double[] primBounds, int primCount, BvhOptions opts, boolean useBvh) {
+        return useBvh ? Bvh.build(primBounds, primCount, opts) : FlatList.build(primBounds, primCount);
+    }
+
+    /**
      * Closest hit: visits primitives whose boxes the ray enters before the current {@code tMax},
      * near boxes first, feeding each callback result back as the new {@code tMax}.
      *

@@ -284,8 +284,8 @@ public final class Bvh implements Accelerator {
     }
 
     /**
-     * SAH cost of the tree relative to the root area (traversal cost 1 per interior node entered,
-     * {@value BinnedSahBuilder#PRIMITIVE_COST} per primitive test), a quality figure for reports.
+     * SAH cost of the tree relative to the root area (cost 1 per interior node entered, 4 per
+     * primitive test, as in the build), a quality figure for reports; 0 when the root is flat.
      */
     public double sahCost() {
         double rootArea = BinnedSahBuilder.halfArea(nodeBounds, 0);

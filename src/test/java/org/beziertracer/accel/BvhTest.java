@@ -68,6 +68,29 @@ class BvhTest {
     }
 
     @Test
+    void aDeepListLikeTreeIsAnsweredWithinItsStackSize() {
+        // Boxes along a line at exponentially growing positions give a deep, unbalanced tree
+        int n = 400;
+        double[] bounds = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            double x = Math.pow(1.5, p % 200) * (p / 200 + 1);
+            double[] box = {x, -1, -1, x + 0.5, 1, 1};
+            System.arraycopy(box, 0, bounds, 6 * p, 6);
+        }
+        Bvh bvh = Bvh.build(bounds, n, new BvhOptions(1, 16));
+        assertTrue(bvh.depth() > 2 * 9, "expected an unbalanced tree, depth " + bvh.depth());
+        Accelerator acc = bvh;
+        checkQueries(acc, new BoxScene(bounds, n), new Random(13), "deep, depth " + bvh.depth());
+    }
+
+    @Test
+    void theFactoryPicksBvhOrFlatList() {
+        double[] bounds = BoxScene.randomBoxes(new Random(14), 20);
+        assertTrue(Accelerator.of(bounds, 20, BvhOptions.defaults(), true) instanceof Bvh);
+        assertTrue(Accelerator.of(bounds, 20, BvhOptions.defaults(), false) instanceof FlatList);
+    }
+
+    @Test
     void anEmptyTreeMissesEveryRay() {
         Bvh bvh = Bvh.build(new double[0], 0);
         LeafIntersector never = (p, t) -> { throw new AssertionError("called for " + p); };
