@@ -1,0 +1,116 @@
+package org.beziertracer.accel;
+
+import static org.beziertracer.accel.RayBox.MISS;
+
+import org.beziertracer.math.Aabb;
+
+/**
+ * The "no hierarchy" accelerator: every query slab-tests every primitive box in index order and
+ * calls back for those the ray enters before the current {@code tMax}. Used when the sub-patch BVH
+ * is switched off, to measure what the {@link Bvh} buys, and as a reference in tests.
+ *
+ * <p>Layout: a private copy of the boxes, six doubles per primitive. Immutable and shareable
+ * between threads like {@link Bvh}; needs no stack ({@link #stackSize()} is 0, any array, even
+ * {@code null}, may be passed).
+ */
+public final class FlatList implements Accelerator {
+
+    private final double[] primBounds;
+    private final int primCount;
+    private final double buildMillis;
+
+    private FlatList(double[] primBounds, int primCount, double buildMillis) {
+        this.primBounds = primBounds;
+        this.primCount = primCount;
+        this.buildMillis = buildMillis;
+    }
+
+    /**
+     * Copies {@code 6 * primCount} box values.
+     *
+     * @throws IllegalArgumentException for a short array or a non-finite or inverted box
+     */
+    public static FlatList build(double[] primBounds, int primCount) {
+        long start = System.nanoTime();
+        Bvh.checkBounds(primBounds, primCount);
+        double[] copy = java.util.Arrays.copyOf(primBounds, 6 * primCount);
+        return new FlatList(copy, primCount, (System.nanoTime() - start) * 1e-6);
+    }
+
+    @Override
+    public double closestHit(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafIntersector leaf, int[] stack) {
+        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
+                sz = RayBox.nearOffset(invDz);
+        for (int p = 0; p < primCount; p++) {
+            if (RayBox.slab(primBounds, 6 * p, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz,
+                    tMin, tMax) != MISS) {
+                tMax = leaf.intersect(p, tMax);
+            }
+        }
+        return tMax;
+    }
+
+    @Override
+    public boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafOccluder leaf, int[] stack) {
+        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
+                sz = RayBox.nearOffset(invDz);
+        for (int p = 0; p < primCount; p++) {
+            if (RayBox.slab(primBounds, 6 * p, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz,
+                    tMin, tMax) != MISS && leaf.occludes(p, tMax)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Override
+    public int stackSize() {
+        return 0;
+    }
+
+    @Override
+    public int nodeCount() {
+        return 0;
+    }
+
+    @Override
+    public int depth() {
+        return 0;
+    }
+
+    @Override
+    public int primCount() {
+        return primCount;
+    }
+
+    @Override
+    public double buildMillis() {
+        return buildMillis;
+    }
+
+    @Override
+    public Aabb bounds() {
+        double[] box = new double[6];
+        BinnedSahBuilder.setEmpty(box, 0);
+        for (int p = 0; p < primCount; p++) {
+            BinnedSahBuilder.grow(box, 0, primBounds, 6 * p);
+        }
+        return new Aabb(box[0], box[1], box[2], box[3], box[4], box[5]);
+    }
+
+    @Override
+    public FlatList refit(double[] newPrimBounds) {
+        if (newPrimBounds.length < 6 * (long) primCount) {
+            throw new IllegalArgumentException("need 6 doubles for each of " + primCount
+                    + " primitives, got an array of " + newPrimBounds.length);
+        }
+        return build(newPrimBounds, primCount);
+    }
+
+    @Override
+    public String toString() {
+        return "FlatList[prims=" + primCount + "]";
+    }
+}

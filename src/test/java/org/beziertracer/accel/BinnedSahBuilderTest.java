@@ -1,0 +1,172 @@
+package org.beziertracer.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+
+import org.beziertracer.math.Aabb;
+import org.junit.jupiter.api.Test;
+
+/** Structure of trees built by {@link BinnedSahBuilder} (through {@link Bvh#build}). */
+class BinnedSahBuilderTest {
+
+    /**
+     * Walks the tree and checks: every node reached once, children adjacent and inside their parent,
+     * leaves non-empty and at most {@code maxLeafSize}, each leaf box the union of its primitives,
+     * every primitive in exactly one leaf, node count {@code 2 * leaves - 1}, depth as reported.
+     */
+    static void checkStructure(Bvh bvh, double[] bounds, int n, int maxLeafSize, String in) {
+        assertEquals(n, bvh.primCount(), in);
+        int[] seen = new int[n];
+        int[] nodes = new int[bvh.nodeCount()], levels = new int[bvh.nodeCount()];
+        int sp = 0, visited = 0, leaves = 0, depth = 0;
+        nodes[sp] = 0;
+        levels[sp++] = 1;
+        while (sp > 0) {
+            int node = nodes[--sp], level = levels[sp];
+            visited++;
+            depth = Math.max(depth, level);
+            Aabb box = bvh.nodeBounds(node);
+            if (bvh.isLeaf(node)) {
+                leaves++;
+                int k = bvh.leafPrimCount(node), first = bvh.nodeLeftFirst(node);
+                assertTrue(k >= 1 && k <= maxLeafSize, in + ": leaf " + node + " holds " + k);
+                Aabb union = Aabb.EMPTY;
+                for (int s = first; s < first + k; s++) {
+                    int p = bvh.primIndex(s);
+                    seen[p]++;
+                    union = union.union(prim(bounds, p));
+                }
+                assertEquals(union, box, in + ": leaf " + node + " box is not the union of its prims");
+            } else {
+                int left = bvh.nodeLeftFirst(node);
+                assertTrue(left > node && left + 1 < bvh.nodeCount(), in + ": node " + node + " child " + left);
+                Aabb union = bvh.nodeBounds(left).union(bvh.nodeBounds(left + 1));
+                assertEquals(union, box, in + ": node " + node + " box is not the union of its children");
+                nodes[sp] = left;
+                levels[sp++] = level + 1;
+                nodes[sp] = left + 1;
+                levels[sp++] = level + 1;
+            }
+        }
+        for (int p = 0; p < n; p++) {
+            assertEquals(1, seen[p], in + ": prim " + p + " occurrences in leaves");
+        }
+        assertEquals(bvh.nodeCount(), visited, in + ": nodes reached");
+        assertEquals(2 * leaves - 1, bvh.nodeCount(), in + ": binary tree node count");
+        assertEquals(depth, bvh.depth(), in + ": depth");
+    }
+
+    static Aabb prim(double[] b, int p) {
+        int o = 6 * p;
+        return new Aabb(b[o], b[o + 1], b[o + 2], b[o + 3], b[o + 4], b[o + 5]);
+    }
+
+    @Test
+    void randomBoxesGiveAWellFormedShallowTree() {
+        Random rnd = new Random(2024);
+        for (int n : new int[] {1, 2, 7, 100, 1000, 10_000}) {
+            for (BvhOptions opts : new BvhOptions[] {BvhOptions.defaults(), new BvhOptions(1, 12),
+                    new BvhOptions(8, 2)}) {
+                double[] bounds = BoxScene.randomBoxes(rnd, n);
+                Bvh bvh = Bvh.build(bounds, n, opts);
+                String in = "n=" + n + " " + opts;
+                checkStructure(bvh, bounds, n, opts.maxLeafSize(), in);
+                int log2 = 32 - Integer.numberOfLeadingZeros(n);
+                assertTrue(bvh.depth() <= 3 * log2 + 2, in + ": depth " + bvh.depth());
+                assertEquals(prim(bounds, 0).union(bvh.bounds()), bvh.bounds(), in);
+            }
+        }
+    }
+
+    @Test
+    void onePrimitiveIsASingleLeaf() {
+        double[] bounds = {1, 2, 3, 4, 5, 6};
+        Bvh bvh = Bvh.build(bounds, 1, BvhOptions.defaults());
+        checkStructure(bvh, bounds, 1, 1, "one prim");
+        assertEquals(1, bvh.nodeCount());
+        assertEquals(1, bvh.depth());
+        assertEquals(new Aabb(1, 2, 3, 4, 5, 6), bvh.bounds());
+    }
+
+    @Test
+    void zeroPrimitivesGiveAnEmptyTree() {
+        Bvh bvh = Bvh.build(new double[0], 0, BvhOptions.defaults());
+        assertEquals(0, bvh.primCount());
+        assertEquals(Aabb.EMPTY, bvh.bounds());
+        assertTrue(bvh.isLeaf(0));
+    }
+
+    @Test
+    void identicalBoxesFallBackToMedianSplitsAndStayBalanced() {
+        for (int n : new int[] {2, 5, 4096, 100_000}) {
+            for (int maxLeaf : new int[] {1, 4}) {
+                double[] bounds = BoxScene.identicalBoxes(n);
+                Bvh bvh = Bvh.build(bounds, n, new BvhOptions(maxLeaf, 16));
+                String in = "n=" + n + " maxLeaf=" + maxLeaf;
+                checkStructure(bvh, bounds, n, maxLeaf, in);
+                int balanced = 1 + (int) Math.ceil(Math.log((double) n / maxLeaf) / Math.log(2));
+                assertTrue(bvh.depth() <= Math.max(1, balanced), in + ": depth " + bvh.depth());
+            }
+        }
+    }
+
+    @Test
+    void nestedBoxesWithOneCentreAndPointBoxesBuild() {
+        int n = 1000;
+        double[] bounds = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            double h = p % 2 == 0 ? p : 0; // every other box is the point (0, 0, 0)
+            for (int a = 0; a < 3; a++) {
+                bounds[6 * p + a] = -h;
+                bounds[6 * p + 3 + a] = h;
+            }
+        }
+        Bvh bvh = Bvh.build(bounds, n, BvhOptions.defaults());
+        checkStructure(bvh, bounds, n, 4, "nested");
+    }
+
+    @Test
+    void exponentiallySpreadBoxesDoNotOverflowTheJavaStack() {
+        int n = 20_000;
+        double[] bounds = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            double x = Math.pow(1.1, p % 7000) * (p / 7000 + 1);
+            bounds[6 * p] = bounds[6 * p + 3] = x;
+        }
+        Bvh bvh = Bvh.build(bounds, n, BvhOptions.defaults());
+        checkStructure(bvh, bounds, n, 4, "exponential");
+    }
+
+    @Test
+    void badBoxesAreRejectedWithThePrimitiveNamed() {
+        double[] bounds = {0, 0, 0, 1, 1, 1, 0, 2, 0, 1, 1, 1};
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Bvh.build(bounds, 2, BvhOptions.defaults()));
+        assertTrue(e.getMessage().contains("primitive 1"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> Bvh.build(new double[] {Double.NaN, 0, 0, 1, 1, 1}, 1));
+        assertThrows(IllegalArgumentException.class, () -> Bvh.build(new double[6], 2));
+    }
+
+    /** Prints build times (best of several runs, after warm-up); a report, not a timed assertion. */
+    @Test
+    void buildTimesAreReportedFor512And51200Boxes() {
+        Random rnd = new Random(5);
+        for (int n : new int[] {512, 51_200}) {
+            double[] bounds = BoxScene.randomBoxes(rnd, n);
+            double best = Double.POSITIVE_INFINITY, refit = Double.POSITIVE_INFINITY;
+            Bvh bvh = null;
+            for (int run = 0; run < 8; run++) {
+                bvh = Bvh.build(bounds, n, BvhOptions.defaults());
+                best = Math.min(best, bvh.buildMillis());
+                refit = Math.min(refit, bvh.refit(bounds).buildMillis());
+            }
+            System.out.printf(java.util.Locale.ROOT,
+                    "BVH build %,d boxes: %.2f ms (refit %.2f ms), %d nodes, depth %d, SAH cost %.1f%n",
+                    n, best, refit, bvh.nodeCount(), bvh.depth(), bvh.sahCost());
+            checkStructure(bvh, bounds, n, 4, "timed n=" + n);
+        }
+    }
+}
