@@ -56,7 +56,7 @@ public final class SceneIntersector {
 
     private static Accelerator buildAccel(SubPatchTable table, IntersectOptions options) {
         return options.bvh() ? Bvh.build(table.bounds, table.count, BvhOptions.defaults())
-                : new FlatList(table.bounds, table.count);
+                : FlatList.build(table.bounds, table.count);
     }
 
     /**
@@ -85,8 +85,8 @@ public final class SceneIntersector {
      */
     public boolean closestHit(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                               double tMin, double tMax, Hit hit) {
+        bind(ctx);
         ctx.setRay(ox, oy, oz, dx, dy, dz);
-        ctx.scene = this;
         ctx.tMin = tMin;
         ctx.found = false;
         double best = tMax;
@@ -134,8 +134,8 @@ public final class SceneIntersector {
     /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */
     public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMin, double tMax) {
+        bind(ctx);
         ctx.setRay(ox, oy, oz, dx, dy, dz);
-        ctx.scene = this;
         ctx.tMin = tMin;
         for (int k = 0; k < shapes.sphereCount; k++) {
             if (!Double.isNaN(shapes.sphereT(k, ctx, tMin, tMax))) {
@@ -150,6 +150,13 @@ public final class SceneIntersector {
         }
         return table.count > 0
                 && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
+    }
+
+    private void bind(TraceContext ctx) {
+        ctx.scene = this;
+        if (ctx.stack.length < accel.stackSize()) {
+            ctx.stack = new int[accel.stackSize()];
+        }
     }
 
     /** Runs the selected solver on sub-patch {@code s}; the root goes to {@code ctx.root*}. */

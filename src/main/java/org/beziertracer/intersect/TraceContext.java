@@ -32,7 +32,8 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     double invLength;
 
     // Scratch owned by this thread
-    final int[] stack = new int[128];
+    /** BVH traversal stack; grown (rarely, outside the per-ray loop) when a deeper BVH arrives. */
+    int[] stack = new int[256];
     final double[] arena = new double[MAX_ENTRIES * NET_LENGTH];
     final double[] entryBoxes = new double[MAX_ENTRIES * 4];
     final int[] entryDepth = new int[MAX_ENTRIES];
