@@ -154,7 +154,8 @@ public final class DeCasteljau {
      * keeping the low part, then at {@code a/b} keeping the high part. Both steps are plain
      * de Casteljau (convex combinations, numerically stable); {@code a/b} carries a relative
      * error of one rounding, i.e. an absolute error of about {@code ulp(a)} in the original
-     * parameter, so tiny intervals near 0 or near 1 stay accurate. When {@code a == b} every row collapses to its point at {@code a}.
+     * parameter, so tiny intervals near 0 or near 1 stay accurate. When {@code a == b} every row collapses to its point at {@code a}; {@code a > b} (or NaN)
+     * is treated the same way — callers must pass ordered bounds.
      */
     public static void restrictU(double[] net, int off, int n, int m, int dim, double a, double b) {
         int rowStride = (n + 1) * dim;
