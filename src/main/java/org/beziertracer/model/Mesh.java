@@ -1,0 +1,118 @@
+package org.beziertracer.model;
+
+import java.util.Arrays;
+
+/**
+ * An immutable indexed triangle mesh, e.g. a tessellation of Bézier patches for export.
+ *
+ * <h2>Layout</h2>
+ * All arrays are flat:
+ * <ul>
+ *   <li>{@code positions}: {@code 3·vertexCount} doubles, {@code x,y,z} of vertex {@code k} at
+ *       {@code 3k, 3k+1, 3k+2};</li>
+ *   <li>{@code normals}: {@code 3·vertexCount} doubles, the unit normal of vertex {@code k}
+ *       at the same indices;</li>
+ *   <li>{@code uvs}: {@code 2·vertexCount} doubles, the patch parameters {@code u,v} of vertex
+ *       {@code k} at {@code 2k, 2k+1} (parameters within the vertex's own patch);</li>
+ *   <li>{@code triangles}: {@code 3·triangleCount} zero-based vertex indices, counter-clockwise
+ *       seen from the side the vertex normals point to;</li>
+ *   <li>{@code patchOfTriangle}: {@code triangleCount} indices of the source patch of each
+ *       triangle.</li>
+ * </ul>
+ *
+ * <p>The constructor copies every array and the accessors return copies, so instances are
+ * immutable and safe to share between threads. For loops over large meshes use the indexed
+ * getters, which do not copy.
+ */
+public final class Mesh {
+
+    private final double[] positions;
+    private final double[] normals;
+    private final double[] uvs;
+    private final int[] triangles;
+    private final int[] patchOfTriangle;
+
+    /**
+     * @throws IllegalArgumentException when the array lengths disagree with each other, a
+     *                                  coordinate is not finite or a vertex index is out of range
+     */
+    public Mesh(double[] positions, double[] normals, double[] uvs, int[] triangles, int[] patchOfTriangle) {
+        if (positions.length % 3 != 0) {
+            throw new IllegalArgumentException("positions length must be a multiple of 3, got " + positions.length);
+        }
+        int vertexCount = positions.length / 3;
+        if (normals.length != 3 * vertexCount || uvs.length != 2 * vertexCount) {
+            throw new IllegalArgumentException("for " + vertexCount + " vertices expected " + 3 * vertexCount
+                    + " normal and " + 2 * vertexCount + " uv values, got " + normals.length + " and " + uvs.length);
+        }
+        if (triangles.length % 3 != 0 || patchOfTriangle.length != triangles.length / 3) {
+            throw new IllegalArgumentException("triangles length " + triangles.length
+                    + " must be 3 x patchOfTriangle length " + patchOfTriangle.length);
+        }
+        checkFinite("positions", positions);
+        checkFinite("normals", normals);
+        checkFinite("uvs", uvs);
+        for (int k = 0; k < triangles.length; k++) {
+            if (triangles[k] < 0 || triangles[k] >= vertexCount) {
+                throw new IllegalArgumentException("triangle " + k / 3 + " refers to vertex " + triangles[k]
+                        + " of " + vertexCount);
+            }
+        }
+        this.positions = positions.clone();
+        this.normals = normals.clone();
+        this.uvs = uvs.clone();
+        this.triangles = triangles.clone();
+        this.patchOfTriangle = patchOfTriangle.clone();
+    }
+
+    private static void checkFinite(String what, double[] a) {
+        for (int k = 0; k < a.length; k++) {
+            if (!Double.isFinite(a[k])) {
+                throw new IllegalArgumentException(what + "[" + k + "] is not finite: " + a[k]);
+            }
+        }
+    }
+
+    public int vertexCount() { return positions.length / 3; }
+
+    public int triangleCount() { return patchOfTriangle.length; }
+
+    /** Coordinate {@code c} (0..2) of the position of vertex {@code k}. */
+    public double position(int k, int c) { return positions[3 * k + c]; }
+
+    /** Coordinate {@code c} (0..2) of the unit normal of vertex {@code k}. */
+    public double normal(int k, int c) { return normals[3 * k + c]; }
+
+    /** Parameter {@code c} (0 = u, 1 = v) of vertex {@code k}. */
+    public double uv(int k, int c) { return uvs[2 * k + c]; }
+
+    /** Vertex index {@code corner} (0..2) of triangle {@code t}. */
+    public int triangleVertex(int t, int corner) { return triangles[3 * t + corner]; }
+
+    /** Source patch of triangle {@code t}. */
+    public int patchOfTriangle(int t) { return patchOfTriangle[t]; }
+
+    /** Copies of the flat arrays (layout in the class comment). */
+    public double[] positions() { return positions.clone(); }
+
+    public double[] normals() { return normals.clone(); }
+
+    public double[] uvs() { return uvs.clone(); }
+
+    public int[] triangles() { return triangles.clone(); }
+
+    public int[] patchOfTriangle() { return patchOfTriangle.clone(); }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Mesh x && Arrays.equals(x.positions, positions) && Arrays.equals(x.normals, normals)
+                && Arrays.equals(x.uvs, uvs) && Arrays.equals(x.triangles, triangles)
+                && Arrays.equals(x.patchOfTriangle, patchOfTriangle);
+    }
+
+    @Override
+    public int hashCode() { return 31 * Arrays.hashCode(positions) + Arrays.hashCode(triangles); }
+
+    @Override
+    public String toString() { return "Mesh[" + vertexCount() + " vertices, " + triangleCount() + " triangles]"; }
+}
