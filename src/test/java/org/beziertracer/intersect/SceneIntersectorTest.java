@@ -198,7 +198,7 @@ class SceneIntersectorTest {
                 assertTrue(dist > 1e-6 * si.sceneSize(), "ray from hit point " + r + " hit itself at distance " + dist);
             }
         }
-        assertTrue(tested > 200, "tested " + tested);
+        assertTrue(tested > 100, "tested " + tested);
     }
 
     @Test
