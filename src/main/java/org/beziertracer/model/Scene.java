@@ -1,37 +1,72 @@
 package org.beziertracer.model;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 import org.beziertracer.math.Aabb;
 
 /**
- * An immutable scene: Bézier patches (each with a material index), plus — as later parts of the
- * renderer need them — analytic planes and spheres, materials, lights, a camera and settings.
+ * An immutable scene: Bézier patches (each with a material index), analytic planes and spheres,
+ * materials, point lights and an optional camera.
  *
  * <p>All lists are copied and unmodifiable, so a {@code Scene} is a snapshot that render threads
- * may share. An edit builds a new {@code Scene}.
+ * may share. An edit builds a new {@code Scene} ({@link #withPatch}, {@link #toBuilder}).
+ *
+ * <p>Defaults: with no materials, every primitive uses {@link Material#DEFAULT}; with no lights
+ * the renderer puts one white light at the eye (the memoir's light at the centre of projection);
+ * with no camera the renderer frames the whole model.
  */
 public final class Scene {
 
     private final List<BezierPatch> patches;
+    private final int[] patchMaterial;
     private final List<Plane> planes;
     private final List<Sphere> spheres;
+    private final List<Material> materials;
+    private final List<PointLight> lights;
+    private final CameraSpec camera;
 
     /** A scene of Bézier patches only (at least one). */
     public Scene(List<BezierPatch> patches) {
-        this(patches, List.of(), List.of());
-        if (patches.isEmpty()) {
-            throw new IllegalArgumentException("a model needs at least one patch");
-        }
+        this(builder().patches(patches).requirePatches());
     }
 
     /** A scene of patches, planes and spheres; at least one primitive in all. */
     public Scene(List<BezierPatch> patches, List<Plane> planes, List<Sphere> spheres) {
-        this.patches = List.copyOf(patches);
-        this.planes = List.copyOf(planes);
-        this.spheres = List.copyOf(spheres);
-        if (this.patches.isEmpty() && this.planes.isEmpty() && this.spheres.isEmpty()) {
+        this(builder().patches(patches).planes(planes).spheres(spheres));
+    }
+
+    private Scene(Builder b) {
+        this.patches = List.copyOf(b.patches);
+        this.planes = List.copyOf(b.planes);
+        this.spheres = List.copyOf(b.spheres);
+        this.materials = List.copyOf(b.materials.isEmpty() ? List.of(Material.DEFAULT) : b.materials);
+        this.lights = List.copyOf(b.lights);
+        this.camera = b.camera;
+        if (b.requirePatches && patches.isEmpty()) {
+            throw new IllegalArgumentException("a model needs at least one patch");
+        }
+        if (patches.isEmpty() && planes.isEmpty() && spheres.isEmpty()) {
             throw new IllegalArgumentException("a scene needs at least one patch, plane or sphere");
+        }
+        patchMaterial = new int[patches.size()];
+        for (int k = 0; k < patchMaterial.length; k++) {
+            patchMaterial[k] = k < b.patchMaterial.size() ? b.patchMaterial.get(k) : 0;
+            checkMaterial("patch " + k, patchMaterial[k]);
+        }
+        for (int k = 0; k < planes.size(); k++) {
+            checkMaterial("plane " + k, planes.get(k).material());
+        }
+        for (int k = 0; k < spheres.size(); k++) {
+            checkMaterial("sphere " + k, spheres.get(k).material());
+        }
+    }
+
+    private void checkMaterial(String what, int index) {
+        if (index < 0 || index >= materials.size()) {
+            throw new IllegalArgumentException(what + " uses material " + index + " but the scene has "
+                    + materials.size() + " material(s)");
         }
     }
 
@@ -41,21 +76,96 @@ public final class Scene {
 
     public List<Sphere> spheres() { return spheres; }
 
+    /** Never empty: at least {@link Material#DEFAULT}. */
+    public List<Material> materials() { return materials; }
+
+    /** Material index of patch {@code k}. */
+    public int patchMaterial(int k) { return patchMaterial[k]; }
+
+    public List<PointLight> lights() { return lights; }
+
+    public Optional<CameraSpec> camera() { return Optional.ofNullable(camera); }
+
     public int patchCount() { return patches.size(); }
 
-    /** A copy of this scene with patch {@code index} replaced. */
+    /** A copy of this scene with patch {@code index} replaced (same material). */
     public Scene withPatch(int index, BezierPatch patch) {
-        var copy = new java.util.ArrayList<>(patches);
+        var copy = new ArrayList<>(patches);
         copy.set(index, patch);
-        return new Scene(copy, planes, spheres);
+        return toBuilder().patches(copy).build();
     }
 
-    /** Union of the control-point boxes of every patch. */
+    /** Union of the control-point boxes of every patch (empty when there are none). */
     public Aabb controlBounds() {
         Aabb box = Aabb.EMPTY;
         for (BezierPatch p : patches) {
             box = box.union(p.controlBounds());
         }
         return box;
+    }
+
+    public Builder toBuilder() {
+        Builder b = builder().patches(patches).planes(planes).spheres(spheres).lights(lights).camera(camera);
+        b.materials.addAll(materials);
+        for (int m : patchMaterial) {
+            b.patchMaterial.add(m);
+        }
+        return b;
+    }
+
+    public static Builder builder() { return new Builder(); }
+
+    /** Mutable builder; {@link #build()} validates. */
+    public static final class Builder {
+        private final List<BezierPatch> patches = new ArrayList<>();
+        private final List<Integer> patchMaterial = new ArrayList<>();
+        private final List<Plane> planes = new ArrayList<>();
+        private final List<Sphere> spheres = new ArrayList<>();
+        private final List<Material> materials = new ArrayList<>();
+        private final List<PointLight> lights = new ArrayList<>();
+        private CameraSpec camera;
+        private boolean requirePatches;
+
+        /** Replaces the patch list (materials of the patches are kept by index, default 0). */
+        public Builder patches(List<BezierPatch> list) {
+            patches.clear();
+            patches.addAll(list);
+            return this;
+        }
+
+        /** Adds patches, all with material {@code material}. */
+        public Builder addPatches(List<BezierPatch> list, int material) {
+            while (patchMaterial.size() < patches.size()) {
+                patchMaterial.add(0);
+            }
+            for (BezierPatch p : list) {
+                patches.add(p);
+                patchMaterial.add(material);
+            }
+            return this;
+        }
+
+        public Builder planes(List<Plane> list) { planes.clear(); planes.addAll(list); return this; }
+
+        public Builder spheres(List<Sphere> list) { spheres.clear(); spheres.addAll(list); return this; }
+
+        public Builder lights(List<PointLight> list) { lights.clear(); lights.addAll(list); return this; }
+
+        public Builder addPlane(Plane p) { planes.add(p); return this; }
+
+        public Builder addSphere(Sphere s) { spheres.add(s); return this; }
+
+        public Builder addLight(PointLight l) { lights.add(l); return this; }
+
+        /** Adds a material and returns the builder; its index is the number of materials before. */
+        public Builder addMaterial(Material m) { materials.add(m); return this; }
+
+        public int materialCount() { return materials.size(); }
+
+        public Builder camera(CameraSpec c) { camera = c; return this; }
+
+        Builder requirePatches() { requirePatches = true; return this; }
+
+        public Scene build() { return new Scene(this); }
     }
 }
