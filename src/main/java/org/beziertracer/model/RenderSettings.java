@@ -1,0 +1,71 @@
+package org.beziertracer.model;
+
+import java.util.Locale;
+import java.util.Set;
+
+/**
+ * Render settings a scene file may carry (and the CLI or app may override). Plain values, so
+ * the model layer needs nothing from the renderer; {@code render} interprets them.
+ *
+ * @param width, height image size in pixels, 1..{@value #MAX_SIZE}
+ * @param spp           samples per pixel, 1..{@value #MAX_SPP}
+ * @param sampler       {@code regular}, {@code jittered} or {@code adaptive}
+ * @param method        {@code clipping}, {@code newton} or {@code subdivision}
+ * @param bvh           sub-patch BVH on
+ * @param shading       {@code phong}, {@code flat}, {@code normals}, {@code uv} or {@code patch-id}
+ * @param checker       checker squares per unit (u,v) on patches; 0 = material's own
+ * @param shadows       shadow rays on
+ * @param maxDepth      hard cap on the reflection/refraction depth, 0..{@value #MAX_DEPTH}
+ */
+public record RenderSettings(int width, int height, int spp, String sampler, String method, boolean bvh,
+                             String shading, int checker, boolean shadows, int maxDepth) {
+
+    public static final int MAX_SIZE = 16384;
+    public static final int MAX_SPP = 1024;
+    public static final int MAX_DEPTH = 32;
+    /** Most pixels in one image (about 64 Mpixels), so a frame buffer always fits in memory. */
+    public static final long MAX_PIXELS = 1L << 26;
+    public static final Set<String> SAMPLERS = Set.of("regular", "jittered", "adaptive");
+    public static final Set<String> METHODS = Set.of("clipping", "newton", "subdivision");
+    public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id");
+
+    public RenderSettings {
+        if (width < 1 || width > MAX_SIZE || height < 1 || height > MAX_SIZE) {
+            throw new IllegalArgumentException("image size must be 1.." + MAX_SIZE + " in each direction, got "
+                    + width + "x" + height);
+        }
+        if ((long) width * height > MAX_PIXELS) {
+            throw new IllegalArgumentException("image of " + width + "x" + height + " pixels is too large (at most "
+                    + MAX_PIXELS + " pixels)");
+        }
+        if (spp < 1 || spp > MAX_SPP) {
+            throw new IllegalArgumentException("samples per pixel must be 1.." + MAX_SPP + ", got " + spp);
+        }
+        if (maxDepth < 0 || maxDepth > MAX_DEPTH) {
+            throw new IllegalArgumentException("depth must be 0.." + MAX_DEPTH + ", got " + maxDepth);
+        }
+        if (checker < 0 || checker > 10_000) {
+            throw new IllegalArgumentException("checker squares must be 0..10000, got " + checker);
+        }
+        sampler = oneOf("sampler", sampler, SAMPLERS);
+        method = oneOf("method", method, METHODS);
+        shading = oneOf("shading", shading, SHADINGS);
+    }
+
+    private static String oneOf(String what, String value, Set<String> allowed) {
+        String v = value == null ? "" : value.trim().toLowerCase(Locale.ROOT);
+        if (!allowed.contains(v)) {
+            throw new IllegalArgumentException("unknown " + what + " '" + value + "': expected one of "
+                    + String.join(", ", allowed.stream().sorted().toList()));
+        }
+        return v;
+    }
+
+    public static RenderSettings defaults() {
+        return new RenderSettings(800, 600, 1, "regular", "clipping", true, "phong", 0, true, 5);
+    }
+
+    public RenderSettings withSize(int w, int h) {
+        return new RenderSettings(w, h, spp, sampler, method, bvh, shading, checker, shadows, maxDepth);
+    }
+}
