@@ -1,15 +1,21 @@
 package org.beziertracer;
 
 import org.beziertracer.cli.BezierTracerCommand;
+import org.beziertracer.ui.BezierTracerApp;
 
 /**
  * Entry point. With no arguments it launches the desktop app (or, on a machine without a display,
- * prints how to use the command line); with arguments it runs a command-line tool.
+ * prints how to use the command line); with arguments it runs a command-line tool. The root
+ * package is the only one that sees both {@code cli} and {@code ui}, so it hands the app's
+ * launcher to the command line.
  */
 public final class Main {
     private Main() {}
 
     public static void main(String[] args) {
-        System.exit(BezierTracerCommand.run(args));
+        int code = BezierTracerCommand.run(args, BezierTracerApp::launch);
+        if (code != BezierTracerCommand.APP_RUNNING) {
+            System.exit(code);
+        }
     }
 }

@@ -19,10 +19,22 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     /** Exit code for a headless machine asked to open the app. */
     public static final int EXIT_NO_DISPLAY = 3;
 
-    /** Runs the command line and returns the process exit code. */
+    /** Returned by {@link #run(String[], Runnable)} when the desktop app is open: do not exit. */
+    public static final int APP_RUNNING = -1;
+
+    /** Runs the command line (without a desktop app) and returns the process exit code. */
     public static int run(String[] args) {
+        return run(args, null);
+    }
+
+    /**
+     * Runs the command line and returns the process exit code; with no arguments opens the
+     * desktop app through {@code desktopApp} (supplied by {@code org.beziertracer.Main}, as this
+     * layer may not import {@code ui}) and returns {@link #APP_RUNNING}.
+     */
+    public static int run(String[] args, Runnable desktopApp) {
         if (args.length == 0) {
-            return launchApp();
+            return launchApp(desktopApp);
         }
         return commandLine().execute(args);
     }
@@ -48,15 +60,19 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         return cl;
     }
 
-    static int launchApp() {
+    static int launchApp(Runnable desktopApp) {
         if (GraphicsEnvironment.isHeadless()) {
             System.err.println("beziertracer: no display available, so the desktop app cannot open; "
                     + "use the command line instead: java -jar target/beziertracer.jar --help");
             return EXIT_NO_DISPLAY;
         }
-        System.err.println("beziertracer: the desktop app is not built yet; "
-                + "use the command line: java -jar target/beziertracer.jar --help");
-        return EXIT_NO_DISPLAY;
+        if (desktopApp == null) {
+            System.err.println("beziertracer: no desktop app in this build; "
+                    + "use the command line: java -jar target/beziertracer.jar --help");
+            return EXIT_NO_DISPLAY;
+        }
+        desktopApp.run();
+        return APP_RUNNING;
     }
 
     @Override

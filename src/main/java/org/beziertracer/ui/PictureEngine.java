@@ -1,0 +1,24 @@
+package org.beziertracer.ui;
+
+import java.util.function.Consumer;
+
+/**
+ * Turns {@link RenderRequest}s into pictures off the event thread.
+ *
+ * <p>{@link #submit} is called on the event thread and returns at once; requests coalesce (only
+ * the newest pending one is rendered) and each new request cancels the render in progress.
+ * Status reports arrive on render threads.
+ */
+public interface PictureEngine extends AutoCloseable {
+
+    void submit(RenderRequest request);
+
+    /** Where status reports go (called from render threads). */
+    void onStatus(Consumer<RenderStatus> listener);
+
+    /** True while a render or a pending request is in progress (tests wait on this). */
+    boolean busy();
+
+    @Override
+    void close();
+}

@@ -1,0 +1,18 @@
+package org.beziertracer.ui;
+
+import org.beziertracer.model.CameraSpec;
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
+
+/**
+ * One picture to render, built on the event thread from immutable parts.
+ *
+ * @param scene          the scene as rendered (lights already placed)
+ * @param camera         the view
+ * @param settings       size in device pixels, samples, method, BVH, shading, checker, shadows, depth
+ * @param passesPerFrame progressive passes per displayed frame (the memoir's interactivity)
+ * @param target         the picture to paint into; its size equals the settings' size
+ */
+public record RenderRequest(Scene scene, CameraSpec camera, RenderSettings settings, int passesPerFrame,
+                            FrameBuffer target) {
+}

@@ -1,0 +1,20 @@
+package org.beziertracer.ui;
+
+/**
+ * What the status bar shows about the latest render; made on render threads, shown on the event
+ * thread.
+ *
+ * @param pass           1-based pass just finished
+ * @param passCount      passes of a full frame
+ * @param millis         time since the render started
+ * @param mraysPerSecond millions of rays (all kinds) per second
+ * @param spp            samples per pixel of the final pass
+ * @param method         solver label
+ * @param bvh            sub-patch BVH on
+ * @param bvhSpeedUp     measured frame time without the BVH divided by the time with it, for the
+ *                       same picture; 0 when not measured yet
+ * @param prepMillis     time to re-split and refit (or build) the scene snapshot
+ */
+public record RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, String method,
+                           boolean bvh, double bvhSpeedUp, double prepMillis) {
+}

@@ -1,0 +1,81 @@
+package org.beziertracer.ui;
+
+import java.awt.Component;
+import java.io.File;
+import java.nio.file.Path;
+import java.util.Locale;
+
+import javax.swing.JFileChooser;
+import javax.swing.JOptionPane;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/** {@link UserDialogs} with {@link JFileChooser} and {@link JOptionPane}, remembering the last folder. */
+final class SwingDialogs implements UserDialogs {
+
+    private final Component parent;
+    private File folder = new File(System.getProperty("user.dir"));
+
+    SwingDialogs(Component parent) {
+        this.parent = parent;
+    }
+
+    @Override
+    public Path chooseOpen() {
+        JFileChooser fc = new JFileChooser(folder);
+        fc.setDialogTitle("Open model or scene");
+        fc.setFileFilter(new FileNameExtensionFilter("Models and scenes (*.bpt, *.obj, *.json)",
+                ModelLoader.EXTENSIONS.toArray(String[]::new)));
+        if (fc.showOpenDialog(parent) != JFileChooser.APPROVE_OPTION) {
+            return null;
+        }
+        folder = fc.getCurrentDirectory();
+        return fc.getSelectedFile().toPath();
+    }
+
+    @Override
+    public Path chooseSave(String title, String... extensions) {
+        JFileChooser fc = new JFileChooser(folder);
+        fc.setDialogTitle(title);
+        for (String ext : extensions) {
+            fc.addChoosableFileFilter(new FileNameExtensionFilter(ext.toUpperCase(Locale.ROOT) + " (*." + ext + ")", ext));
+        }
+        fc.setFileFilter(fc.getChoosableFileFilters()[1]);
+        if (fc.showSaveDialog(parent) != JFileChooser.APPROVE_OPTION) {
+            return null;
+        }
+        folder = fc.getCurrentDirectory();
+        File f = fc.getSelectedFile();
+        String name = f.getName().toLowerCase(Locale.ROOT);
+        boolean known = false;
+        for (String ext : extensions) {
+            known |= name.endsWith("." + ext);
+        }
+        if (!known) {
+            String ext = fc.getFileFilter() instanceof FileNameExtensionFilter ff ? ff.getExtensions()[0] : extensions[0];
+            f = new File(f.getPath() + "." + ext);
+        }
+        if (f.exists() && JOptionPane.showConfirmDialog(parent, f.getName() + " exists. Replace it?", title,
+                JOptionPane.OK_CANCEL_OPTION) != JOptionPane.OK_OPTION) {
+            return null;
+        }
+        return f.toPath();
+    }
+
+    @Override
+    public Choice confirmDiscard(String documentName) {
+        Object[] options = {"Save", "Discard", "Cancel"};
+        int answer = JOptionPane.showOptionDialog(parent, documentName + " has unsaved edits. Save them first?",
+                "Unsaved edits", JOptionPane.YES_NO_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE, null, options,
+                options[0]);
+        return switch (answer) {
+            case 0 -> Choice.SAVE;
+            case 1 -> Choice.DISCARD;
+            default -> Choice.CANCEL;
+        };
+    }
+
+    @Override
+    public void error(String title, String message) {
+        JOptionPane.showMessageDialog(parent, message, title, JOptionPane.ERROR_MESSAGE);
+    }
+}

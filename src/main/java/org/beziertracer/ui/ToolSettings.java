@@ -1,0 +1,63 @@
+package org.beziertracer.ui;
+
+import org.beziertracer.intersect.Method;
+import org.beziertracer.model.RenderSettings;
+
+/**
+ * The toolbox state (memoir annex 2 plus our extras). Mutable and confined to the event thread;
+ * the controller turns it into immutable {@link RenderSettings} for each render.
+ */
+public final class ToolSettings {
+
+    /** Samples per pixel offered by the super-sampling control. */
+    public static final int[] SPP_CHOICES = {4, 9, 16};
+    /** Checker squares per unit of (u,v) when the texture is on. */
+    public static final int CHECKER_SQUARES = 8;
+
+    public boolean rayTrace = true;
+    public boolean controlPolygon = true;
+    public boolean controlPoints = true;
+    public boolean phong = true;
+    public boolean texture;
+    public boolean normals;
+    /** Iso-curves of the projected wireframe drawn over the ray-traced picture. */
+    public boolean wireframeOverlay;
+    /** Subdivisions per direction of the projected wireframe, 1..64. */
+    public int wireframeSubdivision = 12;
+    public boolean superSampling;
+    public int samplesPerPixel = 4;
+    /** Progressive passes per displayed frame, 1..8 (the memoir's interactivity). */
+    public int interactivity = 1;
+    /** 0 = orthographic .. 100 = strongest perspective. */
+    public int perspective = 36;
+    public Method method = Method.CLIPPING;
+    public boolean bvh = true;
+    public boolean shadows = true;
+    public boolean reflections = true;
+    public LightPlacement light = LightPlacement.SCENE;
+    /** Control points of a new patch (Reset), 2..10 each way. */
+    public int gridPointsU = 4;
+    public int gridPointsV = 4;
+
+    /** Horizontal field of view for the perspective slider position. */
+    public double fovDegrees() {
+        return perspective * OrbitView.MAX_FOV_DEGREES / 100.0;
+    }
+
+    /** Slider position of a field of view (inverse of {@link #fovDegrees()}). */
+    public static int perspectiveOf(double fovDegrees) {
+        return (int) Math.round(fovDegrees * 100 / OrbitView.MAX_FOV_DEGREES);
+    }
+
+    /** Shading label for the renderer. */
+    public String shading() {
+        return normals ? "normals" : phong ? "phong" : "flat";
+    }
+
+    /** The renderer settings for a picture of {@code width × height} device pixels. */
+    public RenderSettings renderSettings(int width, int height) {
+        int spp = superSampling ? samplesPerPixel : 1;
+        return new RenderSettings(width, height, spp, "jittered", method.label(), bvh, shading(),
+                texture ? CHECKER_SQUARES : 0, shadows, reflections ? 5 : 0);
+    }
+}
