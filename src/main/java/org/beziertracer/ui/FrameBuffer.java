@@ -9,9 +9,9 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * {@code int[]} raster render threads write directly, a tile row at a time with
  * {@link System#arraycopy} (no {@code setRGB}, no {@code Color}).
  *
- * <p><b>Threads:</b> {@link #tile} runs on render threads and never touches Swing; it drops tiles
- * of a stale generation and asks for a repaint through one pending flag, so a burst of tiles
- * costs one {@code repaint()} on the event thread. A torn read while painting shows at worst a
+ * <p><b>Threads:</b> {@link #tile} runs on render threads and never touches Swing; it asks for a
+ * repaint through one pending flag, so a burst of tiles costs one {@code repaint()} on the event
+ * thread ({@code repaint()} itself is thread-safe and coalescing). A torn read while painting shows at worst a
  * half-updated tile for one frame, which the next repaint corrects.
  */
 public final class FrameBuffer {
@@ -22,7 +22,6 @@ public final class FrameBuffer {
     private final int height;
     private final Runnable repaint;
     private final AtomicBoolean repaintPending = new AtomicBoolean();
-    private volatile int generation = -1;
 
     /**
      * @param repaint asks the panel to repaint; called from any thread (it must be thread-safe,
@@ -42,14 +41,12 @@ public final class FrameBuffer {
 
     public BufferedImage image() { return image; }
 
-    /** Accept tiles of this generation only from now on. */
-    public void expect(int newGeneration) { generation = newGeneration; }
-
-    public int generation() { return generation; }
-
-    /** Copies a finished tile ({@code argb[j*stride + i]}) into the image unless it is stale. */
-    public void tile(int gen, int x0, int y0, int w, int h, int[] argb, int stride) {
-        if (gen != generation || x0 < 0 || y0 < 0 || x0 + w > width || y0 + h > height) {
+    /**
+     * Copies a finished tile ({@code argb[j*stride + i]}) into the image; the caller has dropped
+     * tiles of stale generations. Tiles outside the image are ignored.
+     */
+    public void tile(int x0, int y0, int w, int h, int[] argb, int stride) {
+        if (x0 < 0 || y0 < 0 || x0 + w > width || y0 + h > height) {
             return;
         }
         for (int j = 0; j < h; j++) {
