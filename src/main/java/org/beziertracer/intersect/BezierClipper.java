@@ -105,7 +105,7 @@ final class BezierClipper {
             }
             ctx.clipIterations++;
             // Clip in u
-            if (!clipInterval(ctx, arena, base, n, m, true)) {
+            if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
                 sp--;
                 continue;
             }
@@ -118,7 +118,7 @@ final class BezierClipper {
                 u0 = u0 + du * a;
             }
             // Clip in v
-            if (!clipInterval(ctx, arena, base, n, m, false)) {
+            if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
                 sp--;
                 continue;
             }
@@ -179,9 +179,10 @@ final class BezierClipper {
     /**
      * Convex-hull clip of the piece at {@code base} in u ({@code alongU}) or v: writes the
      * parameter range {@code [a,b] ⊂ [0,1]} that can hold a root into {@code ctx.clip} and
-     * returns false when it is empty.
+     * returns false when it is empty. A column whose distances come within {@code eps} of zero
+     * counts as touching zero, so a root exactly on the border of the piece survives rounding.
      */
-    static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU) {
+    static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU, double eps) {
         // Directions of the net in ray space (first two coordinates)
         int row = 3 * (n + 1);
         int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
@@ -209,6 +210,9 @@ final class BezierClipper {
                 lx = 1; ly = 0;
             }
         }
+        double invL = 1 / Math.sqrt(lx * lx + ly * ly);
+        lx *= invL;
+        ly *= invL;
         int deg = alongU ? n : m;
         double[] lo = ctx.columnMin, hi = ctx.columnMax;
         for (int c = 0; c <= deg; c++) {
@@ -228,7 +232,7 @@ final class BezierClipper {
         double invDeg = 1.0 / deg;
         for (int c = 0; c <= deg; c++) {
             double xc = c * invDeg;
-            if (lo[c] <= 0 && hi[c] >= 0) {
+            if (lo[c] <= eps && hi[c] >= -eps) {
                 if (xc < a) a = xc;
                 if (xc > b) b = xc;
             }

@@ -18,6 +18,12 @@ final class SubdivisionSolver {
     /** A piece is small enough when its ray-space extent is below this fraction of the leaf. */
     static final double TINY = 1e-3;
     static final int MAX_STEPS = 4000;
+    /**
+     * Barycentric slack of the final triangle test. Neighbouring patches (and neighbouring pieces)
+     * are split at different parameters, so their control meshes' border polylines differ by
+     * about the mesh-to-surface distance; growing each triangle slightly closes those cracks.
+     */
+    static final double EDGE_SLACK = 0.02;
 
     static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax) {
         int n = tab.degreeU[s], m = tab.degreeV[s];
@@ -60,8 +66,8 @@ final class SubdivisionSolver {
                         double va = v0 + (v1 - v0) * j / m, vb = v0 + (v1 - v0) * (j + 1) / m;
                         for (int tri = 0; tri < 2; tri++) {
                             int pb = tri == 0 ? p10 : p11, pc = tri == 0 ? p11 : p01;
-                            double ubb = tri == 0 ? ub : ub, vbb = tri == 0 ? va : vb;
-                            double ucc = tri == 0 ? ub : ua, vcc = tri == 0 ? vb : vb;
+                            double ubb = ub, vbb = tri == 0 ? va : vb;
+                            double ucc = tri == 0 ? ub : ua, vcc = vb;
                             if (triangle(arena, p00, pb, pc, ctx.clip)) {
                                 double wb = ctx.clip[0], wc = ctx.clip[1], wa = 1 - wb - wc;
                                 double t = (wa * arena[p00 + 2] + wb * arena[pb + 2] + wc * arena[pc + 2]) * invLength;
@@ -105,7 +111,7 @@ final class SubdivisionSolver {
         double inv = 1.0 / det;
         double wb = (-ax * e2y + ay * e2x) * inv;
         double wc = (-ay * e1x + ax * e1y) * inv;
-        if (wb < 0 || wc < 0 || wb + wc > 1) {
+        if (wb < -EDGE_SLACK || wc < -EDGE_SLACK || wb + wc > 1 + EDGE_SLACK) {
             return false;
         }
         w[0] = wb;
