@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.math.Bounds;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
@@ -70,17 +71,9 @@ final class BezierClipper {
                 break;
             }
             // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
-            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
-            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
-            for (int p = base, end = base + len; p < end; p += 3) {
-                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
-                if (a < min1) min1 = a;
-                if (a > max1) max1 = a;
-                if (b < min2) min2 = b;
-                if (b > max2) max2 = b;
-                if (c < min3) min3 = c;
-                if (c > max3) max3 = c;
-            }
+            double[] rb = ctx.rayBounds;
+            Bounds.ofPoints(arena, base, points, rb);
+            double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             double slack = tolerance;
             if (min1 > slack || max1 < -slack || min2 > slack || max2 < -slack
                     || min3 * invLength >= best || max3 * invLength <= tMin) {

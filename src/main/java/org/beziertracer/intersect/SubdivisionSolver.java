@@ -1,7 +1,7 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.math.Bounds;
 
 /**
  * Ray–patch intersection by recursive subdivision (memoir ch. I 3.3.3.1; Whitted 1980, Rubin and
@@ -39,18 +39,10 @@ final class SubdivisionSolver {
         boolean found = false;
         double invLength = ctx.invLength;
         while (sp > 0 && ++steps <= MAX_STEPS) {
-            int w = sp - 1, base = w * len, b4 = 4 * w;
-            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
-            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
-            for (int p = base, end = base + len; p < end; p += 3) {
-                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
-                if (a < min1) min1 = a;
-                if (a > max1) max1 = a;
-                if (b < min2) min2 = b;
-                if (b > max2) max2 = b;
-                if (c < min3) min3 = c;
-                if (c > max3) max3 = c;
-            }
+            int w = sp - 1, base = w * len, b4 = 4 * w;// Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
+double[] rb = ctx.rayBounds;
+Bounds.ofPoints(arena, base, points, rb);
+double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > 0 || max1 < 0 || min2 > 0 || max2 < 0 || min3 * invLength >= best || max3 * invLength <= tMin) {
                 sp--;
                 continue;
