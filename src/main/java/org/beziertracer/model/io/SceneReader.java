@@ -42,8 +42,9 @@ final class SceneReader {
     }
 
     SceneDocument read(JsonNode root) {
-        root.object("version", "description", "models", "materials", "planes", "spheres", "lights", "camera", "render");
+        root.keys(); // an object: check its version first, as a newer file may have newer keys
         checkVersion(root);
+        root.object("version", "description", "models", "materials", "planes", "spheres", "lights", "camera", "render");
         if (root.has("description")) {
             root.get("description").asString();
         }

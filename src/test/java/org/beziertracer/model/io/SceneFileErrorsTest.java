@@ -94,6 +94,8 @@ class SceneFileErrorsTest {
     void otherVersionsAndAMissingVersionAreRejected() {
         assertMessage("room.json: $.version: unsupported scene version 2 (this program reads version 1)",
                 "{\"version\": 2, " + SPHERE + "}");
+        assertMessage("room.json: $.version: unsupported scene version 2 (this program reads version 1)",
+                "{\"version\": 2, \"fog\": {\"density\": 1}}");
         assertMessage("room.json: $: missing key \"version\" (this program reads version 1)", "{" + SPHERE + "}");
         assertMessage("$.version: expected a version number, found \"1\"", "{\"version\": \"1\", " + SPHERE + "}");
     }
