@@ -9,6 +9,9 @@ import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 
+import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.SceneIntersector;
+
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
@@ -26,7 +29,7 @@ import picocli.CommandLine.Spec;
  * ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
-        description = "Prints patch count, degrees and control-point bounding box of a model.")
+        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a model.")
 final class InfoCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
@@ -43,6 +46,10 @@ final class InfoCommand implements Callable<Integer> {
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
         out.println("control-point bounds: " + scene.controlBounds());
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        out.println("sub-patches: " + si.subPatchCount());
+        out.println("bvh: " + si.nodeCount() + " nodes, depth " + si.depth());
+        out.println(String.format(java.util.Locale.ROOT, "build: %.1f ms (split + BVH)", si.buildMillis()));
         out.flush();
         return 0;
     }

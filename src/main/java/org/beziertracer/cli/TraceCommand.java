@@ -4,7 +4,6 @@ import java.io.BufferedReader;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStreamReader;
-import java.io.OutputStreamWriter;
 import java.io.Reader;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
@@ -130,12 +129,15 @@ final class TraceCommand implements Callable<Integer> {
 
     private Writer openOutput() throws IOException {
         if (output == null) {
-            return new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16) {
+            return new BufferedWriter(spec.commandLine().getOut(), 1 << 16) {
                 @Override
                 public void close() throws IOException {
                     flush(); // do not close System.out
                 }
             };
+        }
+        if (output.getParent() != null && !Files.isDirectory(output.getParent())) {
+            throw new IOException(output + ": the folder does not exist");
         }
         return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
     }

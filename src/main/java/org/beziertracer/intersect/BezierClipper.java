@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.math.Bounds;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
@@ -70,17 +71,9 @@ final class BezierClipper {
                 break;
             }
             // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
-            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
-            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
-            for (int p = base, end = base + len; p < end; p += 3) {
-                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
-                if (a < min1) min1 = a;
-                if (a > max1) max1 = a;
-                if (b < min2) min2 = b;
-                if (b > max2) max2 = b;
-                if (c < min3) min3 = c;
-                if (c > max3) max3 = c;
-            }
+            double[] rb = ctx.rayBounds;
+            Bounds.ofPoints(arena, base, points, rb);
+            double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             double slack = tolerance;
             if (min1 > slack || max1 < -slack || min2 > slack || max2 < -slack
                     || min3 * invLength >= best || max3 * invLength <= tMin) {
@@ -105,7 +98,7 @@ final class BezierClipper {
             }
             ctx.clipIterations++;
             // Clip in u
-            if (!clipInterval(ctx, arena, base, n, m, true)) {
+            if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
                 sp--;
                 continue;
             }
@@ -118,7 +111,7 @@ final class BezierClipper {
                 u0 = u0 + du * a;
             }
             // Clip in v
-            if (!clipInterval(ctx, arena, base, n, m, false)) {
+            if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
                 sp--;
                 continue;
             }
@@ -179,9 +172,10 @@ final class BezierClipper {
     /**
      * Convex-hull clip of the piece at {@code base} in u ({@code alongU}) or v: writes the
      * parameter range {@code [a,b] ⊂ [0,1]} that can hold a root into {@code ctx.clip} and
-     * returns false when it is empty.
+     * returns false when it is empty. A column whose distances come within {@code eps} of zero
+     * counts as touching zero, so a root exactly on the border of the piece survives rounding.
      */
-    static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU) {
+    static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU, double eps) {
         // Directions of the net in ray space (first two coordinates)
         int row = 3 * (n + 1);
         int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
@@ -209,6 +203,9 @@ final class BezierClipper {
                 lx = 1; ly = 0;
             }
         }
+        double invL = 1 / Math.sqrt(lx * lx + ly * ly);
+        lx *= invL;
+        ly *= invL;
         int deg = alongU ? n : m;
         double[] lo = ctx.columnMin, hi = ctx.columnMax;
         for (int c = 0; c <= deg; c++) {
@@ -228,7 +225,7 @@ final class BezierClipper {
         double invDeg = 1.0 / deg;
         for (int c = 0; c <= deg; c++) {
             double xc = c * invDeg;
-            if (lo[c] <= 0 && hi[c] >= 0) {
+            if (lo[c] <= eps && hi[c] >= -eps) {
                 if (xc < a) a = xc;
                 if (xc > b) b = xc;
             }

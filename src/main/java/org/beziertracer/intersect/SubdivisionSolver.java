@@ -1,7 +1,7 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.math.Bounds;
 
 /**
  * Ray–patch intersection by recursive subdivision (memoir ch. I 3.3.3.1; Whitted 1980, Rubin and
@@ -18,6 +18,12 @@ final class SubdivisionSolver {
     /** A piece is small enough when its ray-space extent is below this fraction of the leaf. */
     static final double TINY = 1e-3;
     static final int MAX_STEPS = 4000;
+    /**
+     * Barycentric slack of the final triangle test. Neighbouring patches (and neighbouring pieces)
+     * are split at different parameters, so their control meshes' border polylines differ by
+     * about the mesh-to-surface distance; growing each triangle slightly closes those cracks.
+     */
+    static final double EDGE_SLACK = 0.02;
 
     static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax) {
         int n = tab.degreeU[s], m = tab.degreeV[s];
@@ -33,18 +39,10 @@ final class SubdivisionSolver {
         boolean found = false;
         double invLength = ctx.invLength;
         while (sp > 0 && ++steps <= MAX_STEPS) {
-            int w = sp - 1, base = w * len, b4 = 4 * w;
-            double min1 = Double.POSITIVE_INFINITY, max1 = Double.NEGATIVE_INFINITY;
-            double min2 = min1, max2 = max1, min3 = min1, max3 = max1;
-            for (int p = base, end = base + len; p < end; p += 3) {
-                double a = arena[p], b = arena[p + 1], c = arena[p + 2];
-                if (a < min1) min1 = a;
-                if (a > max1) max1 = a;
-                if (b < min2) min2 = b;
-                if (b > max2) max2 = b;
-                if (c < min3) min3 = c;
-                if (c > max3) max3 = c;
-            }
+            int w = sp - 1, base = w * len, b4 = 4 * w;// Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
+double[] rb = ctx.rayBounds;
+Bounds.ofPoints(arena, base, points, rb);
+double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > 0 || max1 < 0 || min2 > 0 || max2 < 0 || min3 * invLength >= best || max3 * invLength <= tMin) {
                 sp--;
                 continue;
@@ -60,8 +58,8 @@ final class SubdivisionSolver {
                         double va = v0 + (v1 - v0) * j / m, vb = v0 + (v1 - v0) * (j + 1) / m;
                         for (int tri = 0; tri < 2; tri++) {
                             int pb = tri == 0 ? p10 : p11, pc = tri == 0 ? p11 : p01;
-                            double ubb = tri == 0 ? ub : ub, vbb = tri == 0 ? va : vb;
-                            double ucc = tri == 0 ? ub : ua, vcc = tri == 0 ? vb : vb;
+                            double ubb = ub, vbb = tri == 0 ? va : vb;
+                            double ucc = tri == 0 ? ub : ua, vcc = vb;
                             if (triangle(arena, p00, pb, pc, ctx.clip)) {
                                 double wb = ctx.clip[0], wc = ctx.clip[1], wa = 1 - wb - wc;
                                 double t = (wa * arena[p00 + 2] + wb * arena[pb + 2] + wc * arena[pc + 2]) * invLength;
@@ -105,7 +103,7 @@ final class SubdivisionSolver {
         double inv = 1.0 / det;
         double wb = (-ax * e2y + ay * e2x) * inv;
         double wc = (-ay * e1x + ax * e1y) * inv;
-        if (wb < 0 || wc < 0 || wb + wc > 1) {
+        if (wb < -EDGE_SLACK || wc < -EDGE_SLACK || wb + wc > 1 + EDGE_SLACK) {
             return false;
         }
         w[0] = wb;

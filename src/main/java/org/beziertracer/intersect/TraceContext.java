@@ -43,6 +43,7 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
     final double[] clip = new double[2];
+    final double[] rayBounds = new double[6];
 
     // The query in flight (set by SceneIntersector)
     SceneIntersector scene;

@@ -1,0 +1,76 @@
+package org.beziertracer.model.io;
+
+import org.beziertracer.model.BezierPatch;
+
+/**
+ * The affine placement of a model in a scene file: {@code p' = T + Rz·Ry·Rx·(S·p)} — scale
+ * first, then rotations about the x, y and z axes (degrees, right-handed), then translation.
+ *
+ * <p>Applied to the control points only: a Bézier patch is an affine combination of its control
+ * points (the Bernstein weights sum to 1), so mapping the net maps the surface exactly. Quarter
+ * turns use exact sines and cosines (0, ±1), so rotating by 90° moves (1,0,0) exactly onto an axis.
+ * Immutable.
+ */
+record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees) {
+
+    static final ModelTransform IDENTITY = new ModelTransform(new double[3], new double[] {1, 1, 1}, new double[3]);
+
+    boolean isIdentity() {
+        for (int c = 0; c < 3; c++) {
+            if (translate[c] != 0 || scale[c] != 1 || rotateDegrees[c] != 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The patch with every control point mapped. */
+    BezierPatch apply(BezierPatch patch) {
+        if (isIdentity()) {
+            return patch;
+        }
+        double[] net = patch.copyNet();
+        double[] p = new double[3];
+        for (int k = 0; k < net.length; k += 3) {
+            System.arraycopy(net, k, p, 0, 3);
+            applyInPlace(p);
+            System.arraycopy(p, 0, net, k, 3);
+        }
+        return new BezierPatch(patch.degreeU(), patch.degreeV(), net);
+    }
+
+    /** Maps the point {@code p} (x, y, z) in place. */
+    void applyInPlace(double[] p) {
+        for (int c = 0; c < 3; c++) {
+            p[c] *= scale[c];
+        }
+        // Rotate about x, then y, then z: in the plane of the two other axes (a, b)
+        for (int axis = 0; axis < 3; axis++) {
+            double deg = rotateDegrees[axis];
+            if (deg == 0) {
+                continue;
+            }
+            int a = (axis + 1) % 3;
+            int b = (axis + 2) % 3;
+            double cos = cosDegrees(deg);
+            double sin = cosDegrees(deg - 90);
+            double pa = p[a];
+            double pb = p[b];
+            p[a] = cos * pa - sin * pb;
+            p[b] = sin * pa + cos * pb;
+        }
+        for (int c = 0; c < 3; c++) {
+            p[c] += translate[c];
+        }
+    }
+
+    /** cos of an angle in degrees, exact (0, ±1) at multiples of 90°. */
+    static double cosDegrees(double deg) {
+        double r = deg % 360;
+        if (r % 90 == 0) {
+            int quarter = (int) Math.floorMod((long) (r / 90), 4L);
+            return new double[] {1, 0, -1, 0}[quarter];
+        }
+        return Math.cos(Math.toRadians(r));
+    }
+}
