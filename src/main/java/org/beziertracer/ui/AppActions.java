@@ -53,9 +53,8 @@ public final class AppActions {
                 () -> c.mouseWheel(-1));
         add("zoomOut", "Zoom Out", "Move away from the surface (also the mouse wheel)", key(KeyEvent.VK_MINUS, CTRL),
                 () -> c.mouseWheel(1));
-        toggle("rayTrace", "Ray Trace (off: Wireframe)",
-                "Switch between the ray-traced surface and the wireframe view", key(KeyEvent.VK_F2, 0),
-                () -> t.rayTrace, () -> t.rayTrace = !t.rayTrace);
+        add("rayTrace", "Switch to Wireframe", "Switch between the ray-traced surface and the wireframe view",
+                key(KeyEvent.VK_F2, 0), c::toggleRayTrace);
         toggle("polygon", "Control Polygon", "Show the control polygon", key(KeyEvent.VK_F3, 0),
                 () -> t.controlPolygon, () -> t.controlPolygon = !t.controlPolygon);
         toggle("points", "Control Points", "Show (and allow dragging) the control points", key(KeyEvent.VK_F4, 0),
@@ -162,6 +161,7 @@ public final class AppActions {
         for (Runnable s : syncs) {
             s.run();
         }
+        get("rayTrace").putValue(Action.NAME, c.tools().rayTrace ? "Switch to Wireframe" : "Switch to Ray Trace");
         get("undo").setEnabled(c.history().canUndo());
         get("redo").setEnabled(c.history().canRedo());
         get("undo").putValue(Action.NAME, c.history().canUndo() ? "Undo " + c.history().undoName() : "Undo");

@@ -334,8 +334,7 @@ public final class AppController {
         documentName = name;
         file = source != null && !source.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? source : null;
         hover = null;
-        Method m = Method.parse(doc.settings().method());
-        tools.method = m;
+        tools.apply(doc.settings());
         tools.light = LightPlacement.SCENE;
         doc.scene().camera().ifPresent(c -> tools.perspective = ToolSettings.perspectiveOf(
                 Math.min(OrbitView.MAX_FOV_DEGREES, c.fovDegrees())));

@@ -54,6 +54,21 @@ public final class ToolSettings {
         return normals ? "normals" : phong ? "phong" : "flat";
     }
 
+    /** Takes over what a scene file sets: method, BVH, shading, checker, shadows, depth, samples. */
+    public void apply(RenderSettings s) {
+        method = Method.parse(s.method());
+        bvh = s.bvh();
+        normals = "normals".equals(s.shading());
+        phong = !"flat".equals(s.shading());
+        texture = s.checker() > 0;
+        shadows = s.shadows();
+        reflections = s.maxDepth() > 0;
+        superSampling = s.spp() > 1;
+        if (superSampling) {
+            samplesPerPixel = s.spp() <= 4 ? 4 : s.spp() <= 9 ? 9 : 16;
+        }
+    }
+
     /** The renderer settings for a picture of {@code width × height} device pixels. */
     public RenderSettings renderSettings(int width, int height) {
         int spp = superSampling ? samplesPerPixel : 1;

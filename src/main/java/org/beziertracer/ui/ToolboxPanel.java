@@ -18,7 +18,6 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JSpinner;
-import javax.swing.JToggleButton;
 import javax.swing.SpinnerNumberModel;
 
 import org.beziertracer.intersect.Method;
@@ -67,7 +66,7 @@ public final class ToolboxPanel extends JPanel {
 
         JPanel view = section("View");
         view.add(button("resetView"));
-        JToggleButton mode = new JToggleButton(actions.get("rayTrace"));
+        JButton mode = new JButton(actions.get("rayTrace"));
         mode.setName("tool.rayTrace");
         view.add(mode);
         view.add(check("polygon"));
@@ -87,6 +86,14 @@ public final class ToolboxPanel extends JPanel {
         shading.add(labelled("Light", combo(light, "light", "Light position")));
         light.addActionListener(e -> onInt(v -> c.setting(() -> t.light = LightPlacement.values()[v]), light.getSelectedIndex()));
 
+        method.setRenderer(new javax.swing.DefaultListCellRenderer() {
+            @Override
+            public Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+                                                          boolean selected, boolean focus) {
+                Object text = value instanceof Method m ? m.label() : value;
+                return super.getListCellRendererComponent(list, text, index, selected, focus);
+            }
+        });
         JPanel quality = section("Quality and speed");
         quality.add(check("superSampling"));
         quality.add(labelled("Samples per pixel", combo(spp, "spp", "Samples per pixel when super-sampling")));
@@ -97,10 +104,9 @@ public final class ToolboxPanel extends JPanel {
         method.addActionListener(e -> onInt(v -> c.setMethod(Method.values()[v]), method.getSelectedIndex()));
         interactivity.addChangeListener(e -> onInt(v -> c.setting(() -> t.interactivity = v), interactivity.getValue()));
 
-        JPanel look = section("Appearance");
-        look.add(check("dark"));
+        view.add(check("dark"));
 
-        for (JPanel p : new JPanel[] {surface, view, shading, quality, look}) {
+        for (JPanel p : new JPanel[] {surface, view, shading, quality}) {
             add(p);
         }
         add(Box.createVerticalGlue());
