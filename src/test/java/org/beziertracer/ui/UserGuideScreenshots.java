@@ -28,7 +28,7 @@ class UserGuideScreenshots {
         GuiDriver d = GuiDriver.launch();
         try {
             ToolSettings t = d.c.tools();
-            GuiDriver.onEdt(() -> d.frame.setSize(1100, 700));
+            GuiDriver.onEdt(() -> d.frame.setSize(1100, 720));
             // The default patch, bent by dragging two points
             GuiDriver.onEdt(() -> {
                 d.c.randomizeControlPoints(7);
