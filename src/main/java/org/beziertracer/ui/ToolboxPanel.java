@@ -5,7 +5,6 @@ import java.awt.Dimension;
 import java.awt.GridLayout;
 import java.util.function.IntConsumer;
 
-import javax.swing.AbstractButton;
 import javax.swing.Action;
 import javax.swing.BorderFactory;
 import javax.swing.Box;
@@ -217,6 +216,4 @@ public final class ToolboxPanel extends JPanel {
             }
         }
     }
-
-    static boolean isButton(Component comp) { return comp instanceof AbstractButton; }
 }

@@ -48,11 +48,15 @@ class AppGuiTest {
     @TempDir
     Path dir;
 
+    /** Shown for every skipped GUI test. */
+    static final String NO_DISPLAY = "GUI test skipped: no display (java.awt is headless); "
+            + "run under xvfb-run to include it";
+
     @BeforeAll
     static void launch() throws Exception {
-        Assumptions.assumeFalse(GraphicsEnvironment.isHeadless(),
-                "GUI tests skipped: no display (run under xvfb-run to include them)");
-        d = GuiDriver.launch();
+        if (!GraphicsEnvironment.isHeadless()) {
+            d = GuiDriver.launch();
+        }
     }
 
     @AfterAll
@@ -64,6 +68,7 @@ class AppGuiTest {
 
     @BeforeEach
     void defaultPatch() {
+        Assumptions.assumeFalse(GraphicsEnvironment.isHeadless(), NO_DISPLAY);
         GuiDriver.onEdt(() -> {
             d.c.history().markSaved();
             d.c.openBuiltIn("patch");
@@ -355,5 +360,21 @@ class AppGuiTest {
         assertSame(before, GuiDriver.onEdt(() -> d.c.scene()), "the old model is kept");
         assertTrue(GuiDriver.differing(img0, d.capturePanel(), new Rectangle(0, 0, img0.getWidth(), img0.getHeight()), 8) < 50,
                 "the old picture is still shown");
+    }
+
+    @Test
+    @Order(8)
+    void everyToolboxControlHasATooltipNamingItsShortcut() {
+        java.util.List<String> missing = new java.util.ArrayList<>();
+        int[] count = {0};
+        GuiDriver.onEdt(() -> ToolboxPanel.forEachControl(d.frame.toolbox(), comp -> {
+            count[0]++;
+            String tip = comp.getToolTipText();
+            if (tip == null || !tip.matches(".*\\((Ctrl|Shift|F\\d|Home).*\\)")) {
+                missing.add(comp.getName() + ": " + tip);
+            }
+        }));
+        assertTrue(count[0] >= 22, "toolbox controls found: " + count[0]);
+        assertEquals(java.util.List.of(), missing);
     }
 }
