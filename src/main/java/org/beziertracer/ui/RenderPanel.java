@@ -24,7 +24,7 @@ public final class RenderPanel extends JComponent {
     public RenderPanel(AppController controller) {
         this.c = controller;
         setName("renderPanel");
-        setPreferredSize(new Dimension(800, 600));
+        setPreferredSize(new Dimension(840, 660));
         setOpaque(true);
         setFocusable(true);
         setToolTipText(null);
