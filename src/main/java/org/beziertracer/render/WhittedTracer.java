@@ -18,7 +18,9 @@ import org.beziertracer.model.RenderSettings;
  * with C the base or checker colour, n the unit normal flipped toward the viewer (two-sided
  * surfaces), l toward the light, r = l mirrored about n, v toward the eye. Lights have no distance
  * fall-off. A light counts only when its shadow ray (origin offset along n by {@code eps}) reaches it
- * unblocked; every surface blocks light, transparent ones included (as in Whitted 1980).
+ * unblocked; every surface blocks light, transparent ones included (as in Whitted 1980). A light at
+ * the origin of a camera ray (the default light at the eye) needs no shadow ray for that ray's hit:
+ * it sees exactly what the eye sees.
  *
  * <h2>Reflection and refraction</h2>
  * With kr, kt, ior from the material and the Fresnel factor F from Schlick's approximation
@@ -164,7 +166,9 @@ public final class WhittedTracer {
                 }
                 continue;
             }
-            if (s.shadows) {
+            // A light at the origin of a camera ray sees everything that ray sees: no shadow ray needed
+            boolean atEye = depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
+            if (s.shadows && !atEye) {
                 shadowRays++;
                 boolean blocked = si.occluded(ctx, px, py, pz, lights[lo] - px, lights[lo + 1] - py,
                         lights[lo + 2] - pz, 0, 1 - 1e-9);
