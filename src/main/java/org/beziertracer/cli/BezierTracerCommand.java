@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, version = "Bézier Tracer 0.1.0",
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
                 + "With no command, opens the desktop app.",
-        subcommands = {InfoCommand.class, TraceCommand.class})
+        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class})
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
 
     /** Exit code for a headless machine asked to open the app. */

@@ -1,0 +1,307 @@
+package org.beziertracer.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.PointLight;
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Camera;
+import org.beziertracer.render.Film;
+import org.beziertracer.render.FrameSink;
+import org.beziertracer.render.PixelFilter;
+import org.beziertracer.render.PixelProbe;
+import org.beziertracer.render.RenderJob;
+import org.beziertracer.render.RenderOptions;
+import org.beziertracer.render.RenderResult;
+import org.beziertracer.render.RenderSession;
+
+import com.google.gson.Gson;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code render MODEL_OR_SCENE -o OUT.png}: ray traces a model or scene into a PNG. Options override
+ * the scene's settings, camera and lights. {@code --stats} prints one JSON line; {@code --pixel x,y}
+ * prints the full trace of one pixel. Bad values end with one error line and exit code 1.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true,
+        description = "Ray traces a model or scene into a PNG image.")
+final class RenderCommand implements Callable<Integer> {
+
+    static final int MAX_REPEAT = 1000;
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE",
+            description = "a .bpt/.obj model, a built-in model (patch, teapot)")
+    String model;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically)")
+    Path output;
+
+    @Option(names = "--size", paramLabel = "WxH", description = "image size, e.g. 800x600 (default: the scene's)")
+    String size;
+
+    @Option(names = "--spp", paramLabel = "N", description = "samples per pixel, 1..1024")
+    Integer spp;
+
+    @Option(names = "--sampler", paramLabel = "regular|jittered|adaptive", description = "sample placement")
+    String sampler;
+
+    @Option(names = "--filter", paramLabel = "box|tent", defaultValue = "box", description = "pixel filter (default: ${DEFAULT-VALUE})")
+    String filter;
+
+    @Option(names = "--method", paramLabel = "clipping|newton|subdivision", description = "ray-patch solver")
+    String method;
+
+    @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
+    boolean noBvh;
+
+    @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id", description = "shading mode")
+    String shading;
+
+    @Option(names = "--texture", paramLabel = "checker[:N]|none", description = "checker texture on the patches, N squares per side (default 8)")
+    String texture;
+
+    @Option(names = "--eye", paramLabel = "x,y,z", description = "camera position")
+    String eye;
+
+    @Option(names = "--target", paramLabel = "x,y,z", description = "point looked at")
+    String target;
+
+    @Option(names = "--up", paramLabel = "x,y,z", description = "camera up vector")
+    String up;
+
+    @Option(names = "--fov", paramLabel = "DEG", description = "horizontal field of view; 0 = orthographic")
+    Double fov;
+
+    @Option(names = "--light", paramLabel = "x,y,z", description = "a white point light (repeatable; replaces the scene's)")
+    List<String> lights = new ArrayList<>();
+
+    @Option(names = "--no-shadows", description = "no shadow rays")
+    boolean noShadows;
+
+    @Option(names = "--depth", paramLabel = "N", description = "maximum reflection/refraction depth, 0..32")
+    Integer depth;
+
+    @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: available processors)")
+    Integer threads;
+
+    @Option(names = "--repeat", paramLabel = "K", defaultValue = "1", description = "render K frames (for timing)")
+    int repeat;
+
+    @Option(names = "--stats", description = "print one JSON line of statistics to standard output")
+    boolean stats;
+
+    @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
+    String pixel;
+
+    /**
+     * Reads a model or scene. Until {@code SceneFiles} is merged this wraps a bare model with
+     * default settings; at the merge, replace the body with {@code SceneFiles.load(nameOrPath)}.
+     */
+    static SceneDocument load(String nameOrPath) {
+        return new SceneDocument(Models.load(nameOrPath), RenderSettings.defaults());
+    }
+
+    @Override
+    public Integer call() throws IOException, InterruptedException {
+        if (output == null && pixel == null) {
+            throw new IllegalArgumentException("missing -o OUT.png");
+        }
+        if (repeat < 1 || repeat > MAX_REPEAT) {
+            throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
+        }
+        int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+        RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
+                .withFilter(PixelFilter.parse(filter));
+        SceneDocument doc = load(model);
+        RenderSettings settings = settings(doc.settings());
+        checkMemory(settings);
+        Scene scene = doc.scene();
+        if (!lights.isEmpty()) {
+            List<PointLight> list = new ArrayList<>();
+            for (String l : lights) {
+                list.add(new PointLight(vec("--light", l)));
+            }
+            scene = scene.toBuilder().lights(list).build();
+        }
+        RenderJob job = RenderJob.prepare(scene, settings, options);
+        job = job.withCamera(camera(job.camera()));
+        PrintWriter out = spec.commandLine().getOut();
+        if (pixel != null) {
+            int[] xy = ints("--pixel", pixel, 2, ",");
+            PixelProbe.trace(job, xy[0], xy[1], out::println);
+            out.flush();
+            if (output == null) {
+                return 0;
+            }
+        }
+        double[] frameMillis = new double[repeat];
+        RenderResult result = null;
+        try (RenderSession session = new RenderSession(threadCount, FrameSink.NONE)) {
+            for (int k = 0; k < repeat; k++) {
+                result = session.render(job);
+                frameMillis[k] = result.stats().millis();
+            }
+        }
+        PngWriter.write(output, settings.width(), settings.height(), result.argb());
+        if (stats) {
+            out.println(statsJson(job, settings, threadCount, result, frameMillis));
+            out.flush();
+        }
+        return 0;
+    }
+
+    private RenderSettings settings(RenderSettings s) {
+        int w = s.width(), h = s.height();
+        if (size != null) {
+            int[] wh = ints("--size", size, 2, "[xX]");
+            w = wh[0];
+            h = wh[1];
+        }
+        int checker = s.checker();
+        if (texture != null) {
+            checker = texture(texture);
+        }
+        return new RenderSettings(w, h, spp != null ? spp : s.spp(), sampler != null ? sampler : s.sampler(),
+                method != null ? method : s.method(), !noBvh && s.bvh(), shading != null ? shading : s.shading(),
+                checker, !noShadows && s.shadows(), depth != null ? depth : s.maxDepth());
+    }
+
+    /** {@code checker} (8 squares), {@code checker:N}, or {@code none}. */
+    static int texture(String text) {
+        String t = text.trim().toLowerCase(Locale.ROOT);
+        if (t.equals("none")) {
+            return 0;
+        }
+        if (t.equals("checker")) {
+            return 8;
+        }
+        if (t.startsWith("checker:")) {
+            try {
+                int n = Integer.parseInt(t.substring("checker:".length()));
+                if (n >= 1 && n <= 10_000) {
+                    return n;
+                }
+            } catch (NumberFormatException e) {
+                // fall through to the error below
+            }
+        }
+        throw new IllegalArgumentException("--texture must be checker, checker:N (N = 1..10000) or none, got '" + text + "'");
+    }
+
+    private Camera camera(Camera base) {
+        Camera c = base;
+        if (eye != null || target != null || up != null) {
+            Vec3 e = eye != null ? vec("--eye", eye) : base.eye();
+            Vec3 t = target != null ? vec("--target", target) : base.target();
+            Vec3 u = up != null ? vec("--up", up) : base.up();
+            double f = fov != null ? fov : base.fovDegrees();
+            return f == 0 ? Camera.orthographic(e, t, u, base.isOrthographic() ? base.orthoWidth()
+                    : base.withFov(0).orthoWidth()) : Camera.lookAt(e, t, u, f);
+        }
+        if (fov != null) {
+            c = c.withFov(fov);
+        }
+        return c;
+    }
+
+    /** Refuses an image whose buffers would not fit in the heap (instead of an OutOfMemoryError). */
+    static void checkMemory(RenderSettings s) {
+        long need = Film.bytesFor(s.width(), s.height()) + 12L * s.width() * s.height();
+        Runtime rt = Runtime.getRuntime();
+        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
+        if (need > free * 0.8) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "image of %dx%d pixels needs about %d MB but only %d MB of heap is free; use a smaller --size or a larger -Xmx",
+                    s.width(), s.height(), need >> 20, free >> 20));
+        }
+    }
+
+    static Vec3 vec(String option, String text) {
+        String[] parts = text.split(",", -1);
+        if (parts.length != 3) {
+            throw new IllegalArgumentException(option + " must be x,y,z, got '" + text + "'");
+        }
+        double[] v = new double[3];
+        for (int k = 0; k < 3; k++) {
+            try {
+                v[k] = Double.parseDouble(parts[k].trim());
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(option + " must be x,y,z numbers, got '" + text + "'");
+            }
+            if (!Double.isFinite(v[k])) {
+                throw new IllegalArgumentException(option + " must be finite, got '" + text + "'");
+            }
+        }
+        return new Vec3(v[0], v[1], v[2]);
+    }
+
+    static int[] ints(String option, String text, int count, String separator) {
+        String[] parts = text.trim().split(separator, -1);
+        String form = count == 2 && separator.contains("x") ? "WIDTHxHEIGHT" : "x,y";
+        if (parts.length != count) {
+            throw new IllegalArgumentException(option + " must be " + form + ", got '" + text + "'");
+        }
+        int[] v = new int[count];
+        for (int k = 0; k < count; k++) {
+            try {
+                v[k] = Integer.parseInt(parts[k].trim());
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(option + " must be " + form + " (whole numbers), got '" + text + "'");
+            }
+        }
+        return v;
+    }
+
+    private static String statsJson(RenderJob job, RenderSettings s, int threadCount, RenderResult last,
+                                    double[] frameMillis) {
+        double[] sorted = frameMillis.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        double median = n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("width", s.width());
+        m.put("height", s.height());
+        m.put("spp", s.spp());
+        m.put("sampler", s.sampler());
+        m.put("threads", threadCount);
+        m.put("method", s.method());
+        m.put("bvh", s.bvh());
+        m.put("shading", s.shading());
+        m.put("shadows", s.shadows());
+        m.put("primaryRays", last.stats().primaryRays());
+        m.put("shadowRays", last.stats().shadowRays());
+        m.put("secondaryRays", last.stats().secondaryRays());
+        m.put("totalRays", last.stats().totalRays());
+        m.put("buildMillis", round(job.intersector().buildMillis()));
+        m.put("frameMillis", Arrays.stream(frameMillis).map(RenderCommand::round).toArray());
+        m.put("renderMillis", round(median));
+        m.put("mraysPerSecond", round(median > 0 ? last.stats().totalRays() / (median * 1e3) : 0));
+        m.put("subPatches", job.intersector().subPatchCount());
+        m.put("bvhNodes", job.intersector().nodeCount());
+        return new Gson().toJson(m);
+    }
+
+    private static double round(double v) {
+        return Math.round(v * 1000) / 1000.0;
+    }
+}

@@ -1,0 +1,83 @@
+package org.beziertracer.render;
+
+import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.Method;
+import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.math.Aabb;
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.Sphere;
+
+/**
+ * Everything one render needs: the intersection snapshot (which holds the immutable
+ * {@link Scene}), the camera, the scene-file settings and the engine options. Immutable; the UI
+ * builds a new job for every edit, camera move or settings change and passes it to
+ * {@link RenderSession#start}. The image size is {@code settings.width() × settings.height()}.
+ *
+ * <p>The intersector must have been built with the method and BVH switch the settings ask for;
+ * {@link #prepare} does that. An edit of one patch can reuse the old snapshot via
+ * {@link SceneIntersector#withPatch} and {@link #withIntersector}.
+ */
+public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options) {
+
+    public RenderJob {
+        if (intersector == null || camera == null || settings == null || options == null) {
+            throw new IllegalArgumentException("intersector, camera, settings and options are required");
+        }
+    }
+
+    /**
+     * Builds the intersector (method and BVH from {@code settings}) and picks the camera: the scene's
+     * own, else {@link #defaultCamera}.
+     */
+    public static RenderJob prepare(Scene scene, RenderSettings settings, RenderOptions options) {
+        IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(settings.method()))
+                .withBvh(settings.bvh());
+        SceneIntersector si = SceneIntersector.build(scene, io);
+        Camera camera = scene.camera().map(Camera::new)
+                .orElseGet(() -> defaultCamera(scene, (double) settings.width() / settings.height()));
+        return new RenderJob(si, camera, settings, options);
+    }
+
+    /** {@link Camera#fit} of {@link #bounds(Scene)} with the default 40° field of view. */
+    public static Camera defaultCamera(Scene scene, double aspect) {
+        return Camera.fit(bounds(scene), aspect, Camera.DEFAULT_FOV);
+    }
+
+    /**
+     * The finite part of the scene: control boxes of the patches and boxes of the spheres (planes are
+     * infinite; a scene of planes only gets the unit box around the first plane's point).
+     */
+    public static Aabb bounds(Scene scene) {
+        Aabb box = scene.controlBounds();
+        for (Sphere s : scene.spheres()) {
+            Vec3 r = new Vec3(s.radius(), s.radius(), s.radius());
+            box = box.union(s.center().sub(r)).union(s.center().add(r));
+        }
+        if (box.isEmpty() && !scene.planes().isEmpty()) {
+            Vec3 p = scene.planes().get(0).point();
+            box = box.union(p.sub(new Vec3(1, 1, 1))).union(p.add(new Vec3(1, 1, 1)));
+        }
+        return box;
+    }
+
+    public Scene scene() { return intersector.scene(); }
+
+    public int width() { return settings.width(); }
+
+    public int height() { return settings.height(); }
+
+    public ShadingMode shading() { return ShadingMode.parse(settings.shading()); }
+
+    public SamplerKind sampler() { return SamplerKind.parse(settings.sampler()); }
+
+    public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options); }
+
+    /** Same intersector: only for settings with the same method and BVH switch. */
+    public RenderJob withSettings(RenderSettings s) { return new RenderJob(intersector, camera, s, options); }
+
+    public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o); }
+
+    public RenderJob withIntersector(SceneIntersector si) { return new RenderJob(si, camera, settings, options); }
+}

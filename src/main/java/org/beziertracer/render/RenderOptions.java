@@ -1,0 +1,82 @@
+package org.beziertracer.render;
+
+/**
+ * Engine settings that are not part of a scene file.
+ *
+ * @param threads            worker threads, 1..256 (default {@code availableProcessors()})
+ * @param tileSize           tile side in pixels, a multiple of 8, 8..256 (default 32)
+ * @param progressive        coarse preview passes first (1 ray per 8×8, 4×4, 2×2 block, then every pixel);
+ *                           false: straight to full resolution (the CLI)
+ * @param passesPerFrame     the memoir's "interactivity": tiles go to the sink after every
+ *                           {@code passesPerFrame}-th pass (and after the last), 1..16
+ * @param filter             reconstruction filter (box or tent)
+ * @param adaptiveThreshold  adaptive sampler: a pixel gets its extra samples when its first sample differs
+ *                           from a 4-neighbour's by more than this in some linear channel
+ * @param minAttenuation     adaptive depth control: a reflected or refracted ray is not traced when the product
+ *                           of the attenuations along its path is below this (default 1/256)
+ * @param seed               seed of the jittered and adaptive samplers
+ */
+public record RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
+                            double adaptiveThreshold, double minAttenuation, long seed) {
+
+    public static final int MAX_THREADS = 256;
+
+    public RenderOptions {
+        if (threads < 1 || threads > MAX_THREADS) {
+            throw new IllegalArgumentException("threads must be 1.." + MAX_THREADS + ", got " + threads);
+        }
+        if (tileSize < 8 || tileSize > 256 || tileSize % 8 != 0) {
+            throw new IllegalArgumentException("tile size must be a multiple of 8 in 8..256, got " + tileSize);
+        }
+        if (passesPerFrame < 1 || passesPerFrame > 16) {
+            throw new IllegalArgumentException("passes per frame must be 1..16, got " + passesPerFrame);
+        }
+        if (filter == null) {
+            throw new IllegalArgumentException("filter is required");
+        }
+        if (!(adaptiveThreshold >= 0) || !Double.isFinite(adaptiveThreshold)) {
+            throw new IllegalArgumentException("adaptive threshold must be finite and >= 0, got " + adaptiveThreshold);
+        }
+        if (!(minAttenuation > 0 && minAttenuation < 1)) {
+            throw new IllegalArgumentException("minimum attenuation must be in (0,1), got " + minAttenuation);
+        }
+    }
+
+    /** All processors, 32-pixel tiles, progressive, every pass shown, box filter, threshold 0.05, 1/256. */
+    public static RenderOptions defaults() {
+        return new RenderOptions(Runtime.getRuntime().availableProcessors(), 32, true, 1, PixelFilter.BOX,
+                0.05, 1.0 / 256, 1);
+    }
+
+    public RenderOptions withThreads(int n) {
+        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+    }
+
+    public RenderOptions withProgressive(boolean on) {
+        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+    }
+
+    public RenderOptions withPassesPerFrame(int n) {
+        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed);
+    }
+
+    public RenderOptions withFilter(PixelFilter f) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed);
+    }
+
+    public RenderOptions withTileSize(int size) {
+        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+    }
+
+    public RenderOptions withMinAttenuation(double a) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, a, seed);
+    }
+
+    public RenderOptions withAdaptiveThreshold(double t) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, t, minAttenuation, seed);
+    }
+
+    public RenderOptions withSeed(long s) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, s);
+    }
+}

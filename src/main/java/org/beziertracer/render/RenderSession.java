@@ -1,0 +1,231 @@
+package org.beziertracer.render;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * The renderer for an interactive app: a fixed pool of worker threads, one render at a time,
+ * identified by a generation number.
+ *
+ * <p>{@link #start} returns at once (call it from any thread, e.g. the Swing event thread). A
+ * coordinator thread runs the passes of {@link PassPlan}; in each pass the workers take 32-pixel
+ * tiles from a shared counter, and after the pass the sink hears {@link FrameSink#passDone}.
+ * Starting a new render or {@link #cancel()} bumps the generation; workers check it between tiles
+ * and every {@value RenderWorker#CHECK_ROWS} rows, so a stale render stops within one tile's time.
+ *
+ * <p>The sink is called from worker threads. {@link #close()} stops everything.
+ */
+public final class RenderSession implements AutoCloseable {
+    private final int poolSize;
+    private final ThreadPoolExecutor pool;
+    private final ExecutorService coordinator;
+    private final FrameSink sink;
+    private final AtomicInteger generation = new AtomicInteger();
+    private final AtomicInteger activeWorkers = new AtomicInteger();
+    private final AtomicInteger runningRenders = new AtomicInteger();
+    private volatile CompletableFuture<RenderResult> current = CompletableFuture.completedFuture(null);
+
+    /** A session with {@code threads} workers (1..{@value RenderOptions#MAX_THREADS}) sending output to {@code sink}. */
+    public RenderSession(int threads, FrameSink sink) {
+        if (threads < 1 || threads > RenderOptions.MAX_THREADS) {
+            throw new IllegalArgumentException("threads must be 1.." + RenderOptions.MAX_THREADS + ", got " + threads);
+        }
+        this.poolSize = threads;
+        this.sink = sink == null ? FrameSink.NONE : sink;
+        AtomicInteger n = new AtomicInteger();
+        pool = new ThreadPoolExecutor(threads, threads, 0, TimeUnit.MILLISECONDS, new LinkedBlockingQueue<>(), r -> {
+            Thread t = new WorkerThread(r, "render-worker-" + n.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+        coordinator = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "render-coordinator");
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /** A session with one worker per available processor. */
+    public RenderSession(FrameSink sink) {
+        this(Runtime.getRuntime().availableProcessors(), sink);
+    }
+
+    /**
+     * Starts rendering {@code job}, cancelling any render in progress, and returns the new
+     * generation number. Non-blocking. At most {@code min(job threads, pool size)} workers run.
+     */
+    public int start(RenderJob job) {
+        int gen = generation.incrementAndGet();
+        CompletableFuture<RenderResult> done = new CompletableFuture<>();
+        current = done;
+        runningRenders.incrementAndGet();
+        try {
+            coordinator.execute(() -> {
+                try {
+                    run(gen, job, done);
+                } catch (Throwable e) {
+                    done.completeExceptionally(e);
+                } finally {
+                    runningRenders.decrementAndGet();
+                }
+            });
+        } catch (RuntimeException e) {
+            runningRenders.decrementAndGet();
+            throw e;
+        }
+        return gen;
+    }
+
+    /**
+     * Renders {@code job} and waits for it (the sink still hears every tile and pass).
+     *
+     * @throws CancellationException when another start or a cancel superseded it
+     */
+    public RenderResult render(RenderJob job) throws InterruptedException {
+        start(job);
+        return await();
+    }
+
+    /** Waits for the newest render to finish and returns it. */
+    public RenderResult await() throws InterruptedException {
+        try {
+            return current.get();
+        } catch (ExecutionException e) {
+            Throwable c = e.getCause();
+            if (c instanceof RuntimeException re) {
+                throw re;
+            }
+            if (c instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(c);
+        }
+    }
+
+    /** Makes the current render stale; its workers stop within one tile. Non-blocking. */
+    public void cancel() {
+        generation.incrementAndGet();
+    }
+
+    /** The newest generation number handed out (or bumped by {@link #cancel()}). */
+    public int generation() { return generation.get(); }
+
+    /** Worker tasks running right now. */
+    public int activeWorkers() { return activeWorkers.get(); }
+
+    /** Waits until no render and no worker is running; false on timeout. */
+    public boolean awaitIdle(long timeout, TimeUnit unit) throws InterruptedException {
+        long end = System.nanoTime() + unit.toNanos(timeout);
+        while (runningRenders.get() > 0 || activeWorkers.get() > 0 || pool.getActiveCount() > 0) {
+            if (System.nanoTime() > end) {
+                return false;
+            }
+            Thread.sleep(1);
+        }
+        return true;
+    }
+
+    public int poolSize() { return poolSize; }
+
+    /** Cancels the current render and stops the threads. */
+    @Override
+    public void close() {
+        cancel();
+        coordinator.shutdownNow();
+        pool.shutdownNow();
+        try {
+            coordinator.awaitTermination(10, TimeUnit.SECONDS);
+            pool.awaitTermination(10, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void run(int gen, RenderJob job, CompletableFuture<RenderResult> done) throws InterruptedException {
+        if (generation.get() != gen) {
+            done.completeExceptionally(new CancellationException("superseded"));
+            return;
+        }
+        RenderState st = new RenderState(gen, job, sink, generation);
+        List<int[]> tiles = tiles(job.width(), job.height(), job.options().tileSize());
+        List<PassPlan.Pass> passes = PassPlan.of(job.options().progressive(), job.sampler(), job.settings().spp());
+        int workers = Math.min(job.options().threads(), poolSize);
+        int perFrame = job.options().passesPerFrame();
+        for (int p = 0; p < passes.size(); p++) {
+            PassPlan.Pass pass = passes.get(p);
+            boolean display = (p + 1) % perFrame == 0 || p == passes.size() - 1;
+            AtomicInteger next = new AtomicInteger();
+            CountDownLatch latch = new CountDownLatch(workers);
+            for (int k = 0; k < workers; k++) {
+                pool.execute(() -> work(st, pass, tiles, next, display, latch));
+            }
+            latch.await();
+            if (st.failure != null) {
+                done.completeExceptionally(st.failure);
+                return;
+            }
+            if (st.isStale()) {
+                done.completeExceptionally(new CancellationException("superseded"));
+                return;
+            }
+            sink.passDone(gen, p, passes.size(), st.stats());
+        }
+        done.complete(new RenderResult(st.film, st.stats()));
+    }
+
+    private void work(RenderState st, PassPlan.Pass pass, List<int[]> tiles, AtomicInteger next, boolean display,
+                      CountDownLatch latch) {
+        activeWorkers.incrementAndGet();
+        try {
+            RenderWorker w = ((WorkerThread) Thread.currentThread()).worker(st.job);
+            for (int t = next.getAndIncrement(); t < tiles.size() && !st.isStale(); t = next.getAndIncrement()) {
+                int[] tile = tiles.get(t);
+                if (!w.renderTile(st, pass, tile[0], tile[1], tile[2], tile[3], display)) {
+                    break;
+                }
+            }
+        } catch (Throwable e) {
+            st.failure = e;
+        } finally {
+            activeWorkers.decrementAndGet();
+            latch.countDown();
+        }
+    }
+
+    /** Tiles {@code {x0, y0, w, h}} covering the image, row by row. */
+    static List<int[]> tiles(int width, int height, int size) {
+        List<int[]> out = new ArrayList<>();
+        for (int y = 0; y < height; y += size) {
+            for (int x = 0; x < width; x += size) {
+                out.add(new int[] {x, y, Math.min(size, width - x), Math.min(size, height - y)});
+            }
+        }
+        return out;
+    }
+
+    /** A pool thread that keeps its {@link RenderWorker} scratch. */
+    private static final class WorkerThread extends Thread {
+        private RenderWorker worker;
+
+        WorkerThread(Runnable r, String name) {
+            super(r, name);
+        }
+
+        RenderWorker worker(RenderJob job) {
+            if (worker == null) {
+                worker = new RenderWorker(job.intersector());
+            }
+            return worker;
+        }
+    }
+}

@@ -1,0 +1,39 @@
+package org.beziertracer.render;
+
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.LongAdder;
+
+/** What the workers of one generation share: the job, its film, counters and the staleness check. */
+final class RenderState {
+    final int generation;
+    final RenderJob job;
+    final ShadingScene shading;
+    final Film film;
+    final PixelSampler sampler;
+    final FrameSink sink;
+    final LongAdder primaryRays = new LongAdder(), shadowRays = new LongAdder(), secondaryRays = new LongAdder();
+    private final AtomicInteger currentGeneration;
+    final long startNanos = System.nanoTime();
+    volatile Throwable failure;
+
+    RenderState(int generation, RenderJob job, FrameSink sink, AtomicInteger currentGeneration) {
+        this.generation = generation;
+        this.job = job;
+        this.sink = sink;
+        this.currentGeneration = currentGeneration;
+        this.shading = new ShadingScene(job);
+        this.film = new Film(job.width(), job.height());
+        this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
+                job.options().seed());
+    }
+
+    /** True once a newer render started or this one was cancelled (or failed). */
+    boolean isStale() {
+        return currentGeneration.get() != generation || failure != null;
+    }
+
+    FrameStats stats() {
+        return new FrameStats(primaryRays.sum(), shadowRays.sum(), secondaryRays.sum(),
+                (System.nanoTime() - startNanos) / 1e6);
+    }
+}

@@ -1,0 +1,306 @@
+package org.beziertracer.render;
+
+import java.util.Locale;
+
+import org.beziertracer.intersect.Hit;
+import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.intersect.SurfacePoint;
+import org.beziertracer.intersect.TraceContext;
+import org.beziertracer.model.RenderSettings;
+
+/**
+ * Radiance along one camera ray: Whitted ray tracing (T. Whitted, "An improved illumination model
+ * for shaded display", CACM 23(6), 1980) with Phong local illumination (B. T. Phong, "Illumination
+ * for computer generated pictures", CACM 18(6), 1975).
+ *
+ * <h2>Shading at a hit</h2>
+ * {@code I = ka·C + Σ_lights Il·(kd·C·max(0, n·l) + ks·max(0, r·v)^shininess) + wr·I_reflected + wt·I_refracted}
+ * with C the base or checker colour, n the unit normal flipped toward the viewer (two-sided
+ * surfaces), l toward the light, r = l mirrored about n, v toward the eye. Lights have no distance
+ * fall-off. A light counts only when its shadow ray (origin offset along n by {@code eps}) reaches it
+ * unblocked; every surface blocks light, transparent ones included (as in Whitted 1980). A light at
+ * the origin of a camera ray (the default light at the eye) needs no shadow ray for that ray's hit:
+ * it sees exactly what the eye sees.
+ *
+ * <h2>Reflection and refraction</h2>
+ * With kr, kt, ior from the material and the Fresnel factor F from Schlick's approximation
+ * (C. Schlick, "An inexpensive BRDF model for physically-based rendering", Eurographics 1994):
+ * {@code wr = kr + kt·F}, {@code wt = kt·(1 − F)}; on total internal reflection {@code wr = kr + kt},
+ * {@code wt = 0}. A ray enters a material when it meets the geometric normal head-on
+ * ({@code d·n < 0}), so closed transparent objects need outward normals (spheres have them).
+ *
+ * <h2>Adaptive depth control</h2>
+ * Each pending ray carries the product of the weights along its path; it is not traced when that
+ * product falls below {@code minAttenuation} (1/256 by default: it could not change an 8-bit pixel)
+ * or at the hard maximum depth. The ray tree is walked depth-first with an explicit stack of
+ * {@code maxDepth + 2} entries, so nothing is allocated per ray.
+ *
+ * <p>Not thread-safe: one per worker thread, with its own {@link TraceContext}, {@link Hit} and
+ * {@link SurfacePoint}.
+ */
+public final class WhittedTracer {
+    private static final int STACK = RenderSettings.MAX_DEPTH + 2;
+
+    private final TraceContext ctx;
+    private final Hit hit = new Hit();
+    private final SurfacePoint sp = new SurfacePoint();
+    // Pending rays: origin, direction, weight, depth
+    private final double[] stackRay = new double[6 * STACK];
+    private final double[] stackWeight = new double[STACK];
+    private final int[] stackDepth = new int[STACK];
+    private final double[] local = new double[3];
+    private ShadingScene s;
+    private SceneIntersector si;
+    private TraceLog log;
+
+    /** Ray counters, cumulative; the worker reads and resets them. */
+    long primaryRays, shadowRays, secondaryRays;
+
+    WhittedTracer(SceneIntersector anyIntersector) {
+        this.ctx = anyIntersector.newContext();
+    }
+
+    /** A tracer for one-off use (tests, the {@code --pixel} debug trace). */
+    public static WhittedTracer forJob(RenderJob job) {
+        WhittedTracer t = new WhittedTracer(job.intersector());
+        t.bind(new ShadingScene(job));
+        return t;
+    }
+
+    void bind(ShadingScene scene) {
+        this.s = scene;
+        this.si = scene.intersector;
+    }
+
+    /** Sends a line per ray, hit and term to {@code log} (null: off, the default). */
+    public void setLog(TraceLog log) { this.log = log; }
+
+    public long primaryRays() { return primaryRays; }
+
+    public long shadowRays() { return shadowRays; }
+
+    public long secondaryRays() { return secondaryRays; }
+
+    /** Traces the camera ray {@code o + t d} and writes its linear RGB into {@code rgb[0..2]}. */
+    public void trace(double ox, double oy, double oz, double dx, double dy, double dz, double[] rgb) {
+        rgb[0] = 0; rgb[1] = 0; rgb[2] = 0;
+        primaryRays++;
+        int top = push(0, ox, oy, oz, dx, dy, dz, 1, 0);
+        while (top > 0) {
+            top--;
+            int o = 6 * top;
+            double w = stackWeight[top];
+            int depth = stackDepth[top];
+            top = shade(stackRay[o], stackRay[o + 1], stackRay[o + 2], stackRay[o + 3], stackRay[o + 4],
+                    stackRay[o + 5], w, depth, top, rgb);
+        }
+    }
+
+    private int push(int top, double ox, double oy, double oz, double dx, double dy, double dz, double w, int depth) {
+        int o = 6 * top;
+        stackRay[o] = ox; stackRay[o + 1] = oy; stackRay[o + 2] = oz;
+        stackRay[o + 3] = dx; stackRay[o + 4] = dy; stackRay[o + 5] = dz;
+        stackWeight[top] = w;
+        stackDepth[top] = depth;
+        return top + 1;
+    }
+
+    /** Shades one ray, adds {@code w ×} its local colour to {@code rgb}, pushes its children; returns the new top. */
+    private int shade(double ox, double oy, double oz, double dx, double dy, double dz, double w, int depth,
+                      int top, double[] rgb) {
+        if (log != null) {
+            log.line(String.format(Locale.ROOT, "%sray depth=%d weight=%.4f o=(%.6g, %.6g, %.6g) d=(%.6g, %.6g, %.6g)",
+                    indent(depth), depth, w, ox, oy, oz, dx, dy, dz));
+        }
+        if (!si.closestHit(ctx, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
+            rgb[0] += w * ShadingScene.BG_R; rgb[1] += w * ShadingScene.BG_G; rgb[2] += w * ShadingScene.BG_B;
+            if (log != null) {
+                log.line(indent(depth) + "  miss -> background");
+            }
+            return top;
+        }
+        si.surfacePoint(ctx, hit, sp);
+        // Unit direction and the normal facing the viewer
+        double dl = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double ux = dx * dl, uy = dy * dl, uz = dz * dl;
+        double nx = sp.nx, ny = sp.ny, nz = sp.nz;
+        if (!(nx * nx + ny * ny + nz * nz > 0.5)) { // degenerate normal: face the ray
+            nx = -ux; ny = -uy; nz = -uz;
+        }
+        boolean entering = nx * ux + ny * uy + nz * uz < 0;
+        if (!entering) {
+            nx = -nx; ny = -ny; nz = -nz;
+        }
+        int m = s.materialOffset(hit.kind, hit.index);
+        double[] mat = s.materials;
+        baseColour(m, local);
+        if (log != null) {
+            log.line(String.format(Locale.ROOT, "%s  hit %s %d t=%.9g u=%.6f v=%.6f p=(%.6g, %.6g, %.6g) n=(%.5f, %.5f, %.5f)%s"
+                            + " base=(%.4f, %.4f, %.4f)", indent(depth), kindName(hit.kind), hit.index, hit.t, hit.u, hit.v,
+                    sp.px, sp.py, sp.pz, nx, ny, nz, entering ? "" : " (back face, normal flipped)",
+                    local[0], local[1], local[2]));
+        }
+        if (s.mode != ShadingMode.PHONG) {
+            debugColour(nx, ny, nz);
+            rgb[0] += w * local[0]; rgb[1] += w * local[1]; rgb[2] += w * local[2];
+            return top;
+        }
+        // Local Phong illumination with shadow rays
+        double cr = local[0], cg = local[1], cb = local[2];
+        double ka = mat[m + ShadingScene.KA], kd = mat[m + ShadingScene.KD], ks = mat[m + ShadingScene.KS];
+        double shin = mat[m + ShadingScene.SHININESS];
+        double sumR = ka * cr, sumG = ka * cg, sumB = ka * cb;
+        double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
+        double[] lights = s.lights;
+        for (int k = 0, lo = 0; k < s.lightCount; k++, lo += 6) {
+            double lx = lights[lo] - sp.px, ly = lights[lo + 1] - sp.py, lz = lights[lo + 2] - sp.pz;
+            double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
+            if (!(dist > 0)) {
+                continue;
+            }
+            lx /= dist; ly /= dist; lz /= dist;
+            double ndl = nx * lx + ny * ly + nz * lz;
+            if (ndl <= 0) {
+                if (log != null) {
+                    log.line(String.format(Locale.ROOT, "%s  light %d behind the surface (n.l=%.4f)", indent(depth), k, ndl));
+                }
+                continue;
+            }
+            // A light at the origin of a camera ray sees everything that ray sees: no shadow ray needed
+            boolean atEye = depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
+            if (s.shadows && !atEye) {
+                shadowRays++;
+                boolean blocked = si.occluded(ctx, px, py, pz, lights[lo] - px, lights[lo + 1] - py,
+                        lights[lo + 2] - pz, 0, 1 - 1e-9);
+                if (log != null) {
+                    log.line(String.format(Locale.ROOT, "%s  shadow ray to light %d: %s", indent(depth), k,
+                            blocked ? "blocked" : "clear"));
+                }
+                if (blocked) {
+                    continue;
+                }
+            }
+            // Phong specular: reflect l about n, compare with the view direction v = -u
+            double rdv = 2 * ndl * (nx * -ux + ny * -uy + nz * -uz) - (lx * -ux + ly * -uy + lz * -uz);
+            double spec = rdv > 0 && ks > 0 ? ks * Math.pow(rdv, shin) : 0;
+            double diff = kd * ndl;
+            sumR += lights[lo + 3] * (diff * cr + spec);
+            sumG += lights[lo + 4] * (diff * cg + spec);
+            sumB += lights[lo + 5] * (diff * cb + spec);
+            if (log != null) {
+                log.line(String.format(Locale.ROOT, "%s  light %d: n.l=%.4f diffuse=%.4f r.v=%.4f specular=%.4f",
+                        indent(depth), k, ndl, diff, rdv, spec));
+            }
+        }
+        rgb[0] += w * sumR; rgb[1] += w * sumG; rgb[2] += w * sumB;
+        if (log != null) {
+            log.line(String.format(Locale.ROOT, "%s  local=(%.4f, %.4f, %.4f) ambient=%.3f x base", indent(depth),
+                    sumR, sumG, sumB, ka));
+        }
+        return spawn(ux, uy, uz, nx, ny, nz, entering, m, w, depth, top);
+    }
+
+    /** Pushes the reflected and refracted rays that pass the adaptive depth control. */
+    private int spawn(double ux, double uy, double uz, double nx, double ny, double nz, boolean entering, int m,
+                      double w, int depth, int top) {
+        double[] mat = s.materials;
+        double kr = mat[m + ShadingScene.KR], kt = mat[m + ShadingScene.KT];
+        if (kr <= 0 && kt <= 0 || depth >= s.maxDepth) {
+            return top;
+        }
+        double cosI = -(nx * ux + ny * uy + nz * uz);
+        double wr = kr, wt = 0;
+        double tx = 0, ty = 0, tz = 0;
+        if (kt > 0) {
+            double ior = mat[m + ShadingScene.IOR];
+            double eta = entering ? 1 / ior : ior;
+            double k = 1 - eta * eta * (1 - cosI * cosI);
+            if (k < 0) {
+                wr += kt; // total internal reflection
+                if (log != null) {
+                    log.line(indent(depth) + "  total internal reflection");
+                }
+            } else {
+                double cosT = Math.sqrt(k);
+                double r0 = (1 - ior) / (1 + ior);
+                r0 *= r0;
+                double c = 1 - (entering ? cosI : cosT);
+                double f = r0 + (1 - r0) * c * c * c * c * c;
+                wr += kt * f;
+                wt = kt * (1 - f);
+                double a = eta * cosI - cosT;
+                tx = eta * ux + a * nx; ty = eta * uy + a * ny; tz = eta * uz + a * nz;
+            }
+        }
+        if (log != null) {
+            log.line(String.format(Locale.ROOT, "%s  reflect weight=%.4f refract weight=%.4f (path %.4f, cut-off %.5f)",
+                    indent(depth), wr, wt, w, s.minAttenuation));
+        }
+        if (wt > 0 && w * wt >= s.minAttenuation) {
+            secondaryRays++;
+            top = push(top, sp.px - s.eps * nx, sp.py - s.eps * ny, sp.pz - s.eps * nz, tx, ty, tz, w * wt, depth + 1);
+        }
+        if (wr > 0 && w * wr >= s.minAttenuation) {
+            secondaryRays++;
+            double two = 2 * cosI;
+            top = push(top, sp.px + s.eps * nx, sp.py + s.eps * ny, sp.pz + s.eps * nz,
+                    ux + two * nx, uy + two * ny, uz + two * nz, w * wr, depth + 1);
+        }
+        return top;
+    }
+
+    /** Material colour at the hit, or its checker colour. */
+    private void baseColour(int m, double[] out) {
+        double[] mat = s.materials;
+        int squares = hit.kind == Hit.PATCH && s.patchChecker > 0 ? s.patchChecker : (int) mat[m + ShadingScene.CHECKER];
+        boolean second = false;
+        if (squares > 0) {
+            long cu = (long) Math.floor(hit.u * squares), cv = (long) Math.floor(hit.v * squares);
+            second = ((cu + cv) & 1) != 0;
+        }
+        int c = second ? ShadingScene.R2 : ShadingScene.R;
+        out[0] = mat[m + c]; out[1] = mat[m + c + 1]; out[2] = mat[m + c + 2];
+    }
+
+    /** Colour of the non-Phong modes into {@link #local} (which holds the base colour on entry). */
+    private void debugColour(double nx, double ny, double nz) {
+        switch (s.mode) {
+            case NORMALS -> {
+                local[0] = 0.5 * (nx + 1); local[1] = 0.5 * (ny + 1); local[2] = 0.5 * (nz + 1);
+            }
+            case UV -> {
+                local[0] = hit.u - Math.floor(hit.u); local[1] = hit.v - Math.floor(hit.v); local[2] = 0;
+            }
+            case PATCH_ID -> patchIdColour(hit.kind, hit.index, local);
+            default -> { } // FLAT: the base colour as is
+        }
+    }
+
+    /** A distinct, stable colour per patch (golden-ratio hues); planes grey, spheres white. */
+    static void patchIdColour(int kind, int index, double[] out) {
+        if (kind != Hit.PATCH) {
+            double g = kind == Hit.PLANE ? 0.3 : 0.9;
+            out[0] = g; out[1] = g; out[2] = g;
+            return;
+        }
+        double h = (index * 0.6180339887498949) % 1.0 * 6;
+        int sector = (int) h;
+        double f = h - sector, lo = 0.15, hi = 0.9, up = lo + (hi - lo) * f, down = hi - (hi - lo) * f;
+        switch (sector) {
+            case 0 -> { out[0] = hi; out[1] = up; out[2] = lo; }
+            case 1 -> { out[0] = down; out[1] = hi; out[2] = lo; }
+            case 2 -> { out[0] = lo; out[1] = hi; out[2] = up; }
+            case 3 -> { out[0] = lo; out[1] = down; out[2] = hi; }
+            case 4 -> { out[0] = up; out[1] = lo; out[2] = hi; }
+            default -> { out[0] = hi; out[1] = lo; out[2] = down; }
+        }
+    }
+
+    private static String kindName(int kind) {
+        return kind == Hit.PATCH ? "patch" : kind == Hit.PLANE ? "plane" : "sphere";
+    }
+
+    private static String indent(int depth) {
+        return "  ".repeat(depth);
+    }
+}

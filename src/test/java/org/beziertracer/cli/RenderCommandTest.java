@@ -1,0 +1,104 @@
+package org.beziertracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+
+class RenderCommandTest {
+
+    @TempDir
+    Path dir;
+
+    private record Run(int code, String out, String err) {}
+
+    private static Run run(String... args) {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = BezierTracerCommand.run(args, new PrintWriter(out), new PrintWriter(err));
+        return new Run(code, out.toString(), err.toString());
+    }
+
+    @Test
+    void statsPrintOneJsonLineWithEveryField() throws IOException {
+        Path png = dir.resolve("teapot.png");
+        Run r = run("render", "teapot", "-o", png.toString(), "--size", "80x60", "--stats", "--repeat", "3",
+                "--threads", "2", "--light", "-200,-350,450");
+        assertEquals(0, r.code(), r.err());
+        String[] lines = r.out().strip().split("\n");
+        assertEquals(1, lines.length, r.out());
+        JsonObject json = JsonParser.parseString(lines[0]).getAsJsonObject();
+        for (String key : new String[] {"width", "height", "spp", "threads", "method", "bvh", "primaryRays", "shadowRays",
+                "secondaryRays", "totalRays", "buildMillis", "frameMillis", "renderMillis", "mraysPerSecond",
+                "subPatches", "bvhNodes"}) {
+            assertTrue(json.has(key), "missing " + key + " in " + lines[0]);
+        }
+        assertEquals(80, json.get("width").getAsInt());
+        assertEquals(3, json.get("frameMillis").getAsJsonArray().size());
+        assertEquals(4800, json.get("primaryRays").getAsLong());
+        assertTrue(json.get("shadowRays").getAsLong() > 0);
+        BufferedImage img = ImageIO.read(png.toFile());
+        assertEquals(80, img.getWidth());
+        assertEquals(60, img.getHeight());
+        try (var files = Files.list(dir)) {
+            assertEquals(1, files.count(), "no temporary file left behind");
+        }
+    }
+
+    @Test
+    void cameraTextureAndShadingOptionsAreAccepted() {
+        Run r = run("render", "patch", "-o", dir.resolve("p.png").toString(), "--size", "40x30", "--spp", "4",
+                "--sampler", "jittered", "--method", "newton", "--no-bvh", "--shading", "flat", "--texture", "checker:4",
+                "--eye", "0,-5,5", "--target", "0,0,0", "--up", "0,0,1", "--fov", "30", "--no-shadows", "--depth", "2",
+                "--filter", "tent");
+        assertEquals(0, r.code(), r.err());
+        assertEquals("", r.err());
+    }
+
+    @Test
+    void pixelTracePrintsRaysHitsAndTerms() {
+        Run r = run("render", "teapot", "--size", "80x60", "--pixel", "40,30");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("ray depth=0"), r.out());
+        assertTrue(r.out().contains("hit patch"), r.out());
+        assertTrue(r.out().contains("diffuse="), r.out());
+    }
+
+    @Test
+    void absurdOrBadInputIsOneErrorLineAndExitCodeOne() {
+        String out = dir.resolve("x.png").toString();
+        String[][] cases = {
+                {"render", "teapot", "-o", out, "--size", "100000x100000"},
+                {"render", "teapot", "-o", out, "--spp", "0"},
+                {"render", "teapot", "-o", out, "--shading", "toon"},
+                {"render", "teapot", "-o", out, "--size", "abc"},
+                {"render", "teapot", "-o", out, "--eye", "1,2"},
+                {"render", "teapot", "-o", out, "--depth", "99"},
+                {"render", "teapot", "-o", out, "--texture", "stripes"},
+                {"render", "nosuchmodel.bpt", "-o", out},
+                {"render", "teapot", "-o", dir.resolve("missing/dir/x.png").toString(), "--size", "8x8"},
+                {"render", "teapot"},
+        };
+        for (String[] args : cases) {
+            Run r = run(args);
+            assertEquals(1, r.code(), String.join(" ", args) + " -> " + r.err());
+            assertEquals(1, r.err().strip().split("\n").length, "one line: " + r.err());
+            assertTrue(r.err().startsWith("beziertracer render: "), r.err());
+            assertFalse(r.err().contains("Exception"), r.err());
+        }
+        assertFalse(Files.exists(dir.resolve("x.png")));
+    }
+}

@@ -1,0 +1,183 @@
+package org.beziertracer.render;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+class RenderSessionTest {
+
+    private static RenderJob mirrorJob(int w, int h, int spp, String sampler, boolean progressive) {
+        RenderSettings s = new RenderSettings(w, h, spp, sampler, "clipping", true, "phong", 0, true, 5);
+        return TestScenes.job(TestScenes.reflection(), s)
+                .withOptions(RenderOptions.defaults().withThreads(2).withProgressive(progressive).withTileSize(16));
+    }
+
+    @Test
+    void progressivePassesEndOnExactlyTheOneShotImage() {
+        for (String sampler : new String[] {"regular", "jittered", "adaptive"}) {
+            RenderResult once = Renderer.renderOnce(mirrorJob(72, 56, 4, sampler, false));
+            List<Integer> passes = Collections.synchronizedList(new ArrayList<>());
+            AtomicInteger tiles = new AtomicInteger();
+            FrameSink sink = new FrameSink() {
+                @Override
+                public void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {
+                    tiles.incrementAndGet();
+                }
+
+                @Override
+                public void passDone(int generation, int pass, int passCount, FrameStats stats) {
+                    passes.add(pass);
+                }
+            };
+            RenderResult progressive = Renderer.renderOnce(mirrorJob(72, 56, 4, sampler, true), sink);
+            assertArrayEquals(once.film().linearRgb(), progressive.film().linearRgb(), sampler);
+            assertArrayEquals(once.argb(), progressive.argb(), sampler);
+            assertEquals(once.stats().primaryRays(), progressive.stats().primaryRays(),
+                    "each first sample is traced once: " + sampler);
+            int expectedPasses = 4 + (sampler.equals("adaptive") ? 1 : 2); // 8,4,2,1 + extra samples
+            assertEquals(expectedPasses, passes.size(), sampler);
+            assertEquals(expectedPasses * 5 * 4, tiles.get(), "every pass shows every 16-pixel tile");
+        }
+    }
+
+    @Test
+    void aCoarsePassFillsEachBlockWithItsAnchorPixel() {
+        RenderJob job = mirrorJob(64, 48, 1, "regular", true).withOptions(RenderOptions.defaults().withThreads(1)
+                .withTileSize(64));
+        int[][] first = new int[1][];
+        try (RenderSession session = new RenderSession(1, new FrameSink() {
+            @Override
+            public synchronized void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {
+                if (first[0] == null) {
+                    first[0] = argb.clone();
+                }
+            }
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {}
+        })) {
+            RenderResult r = session.render(job);
+            assertEquals(64 * 48, r.stats().primaryRays());
+        } catch (InterruptedException e) {
+            throw new AssertionError(e);
+        }
+        for (int y = 0; y < 48; y++) {
+            for (int x = 0; x < 64; x++) {
+                assertEquals(first[0][(y - y % 8) * 64 + x - x % 8], first[0][y * 64 + x], "pixel " + x + "," + y);
+            }
+        }
+    }
+
+    @Test
+    void jitteredRendersRepeatExactly() {
+        RenderResult a = Renderer.renderOnce(mirrorJob(40, 30, 4, "jittered", false));
+        RenderResult b = Renderer.renderOnce(mirrorJob(40, 30, 4, "jittered", true).withOptions(
+                RenderOptions.defaults().withThreads(1).withProgressive(false)));
+        assertArrayEquals(a.film().linearRgb(), b.film().linearRgb());
+    }
+
+    @Test
+    void adaptiveSamplingAddsSamplesOnlyWhereNeighboursDiffer() {
+        RenderSettings s = new RenderSettings(64, 48, 9, "adaptive", "clipping", true, "phong", 0, true, 5);
+        RenderResult r = Renderer.renderOnce(TestScenes.job(TestScenes.shadows(), s));
+        long pixels = 64 * 48;
+        long primary = r.stats().primaryRays();
+        assertTrue(primary > pixels && primary < 9 * pixels / 2, "primary rays " + primary);
+        assertEquals(1, r.film().sampleCount(0, 0), "flat background corner keeps one sample");
+    }
+
+    @Test
+    void cancellingMidFrameLeavesNoWorkerRunning() throws Exception {
+        RenderSettings s = new RenderSettings(640, 480, 16, "jittered", "clipping", true, "phong", 0, true, 5);
+        RenderJob job = RenderJob.prepare(Models.teapot(), s, RenderOptions.defaults().withThreads(2));
+        CountDownLatch firstTile = new CountDownLatch(1);
+        AtomicInteger lastPass = new AtomicInteger(-1);
+        try (RenderSession session = new RenderSession(2, new FrameSink() {
+            @Override
+            public void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {
+                firstTile.countDown();
+            }
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {
+                lastPass.set(pass);
+            }
+        })) {
+            int gen = session.start(job);
+            assertTrue(firstTile.await(30, TimeUnit.SECONDS), "no tile within 30 s");
+            session.cancel();
+            assertTrue(session.generation() > gen);
+            assertTrue(session.awaitIdle(5, TimeUnit.SECONDS), "workers still running after cancel");
+            assertEquals(0, session.activeWorkers());
+            assertThrows(CancellationException.class, session::await);
+            assertTrue(lastPass.get() < PassPlan.of(true, SamplerKind.JITTERED, 16).size() - 1, "it did not finish");
+        }
+    }
+
+    @Test
+    void aNewStartSupersedesTheRenderInProgress() throws Exception {
+        RenderSettings big = new RenderSettings(640, 480, 16, "jittered", "clipping", true, "phong", 0, true, 5);
+        RenderJob slow = RenderJob.prepare(Models.teapot(), big, RenderOptions.defaults().withThreads(2));
+        RenderJob quick = mirrorJob(32, 24, 1, "regular", false);
+        List<Integer> finished = Collections.synchronizedList(new ArrayList<>());
+        try (RenderSession session = new RenderSession(2, new FrameSink() {
+            @Override
+            public void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {}
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {
+                if (pass == passCount - 1) {
+                    finished.add(generation);
+                }
+            }
+        })) {
+            int g1 = session.start(slow);
+            int g2 = session.start(quick);
+            RenderResult r = session.await();
+            assertEquals(32, r.film().width());
+            assertTrue(session.awaitIdle(5, TimeUnit.SECONDS));
+            assertEquals(List.of(g2), finished, "only the newest generation " + g2 + " finishes, not " + g1);
+        }
+    }
+
+    @Test
+    void theTeapotHasNoNanPixels() {
+        for (String shading : new String[] {"phong", "normals"}) {
+            RenderSettings s = new RenderSettings(96, 72, 1, "regular", "clipping", true, shading, 0, true, 5);
+            RenderJob job = RenderJob.prepare(Models.teapot(), s, RenderOptions.defaults().withThreads(2));
+            for (Camera c : new Camera[] {job.camera(), job.camera().orbit(0, 60), job.camera().orbit(140, -30)}) {
+                float[] film = Renderer.renderOnce(job.withCamera(c)).film().linearRgb();
+                for (int k = 0; k < film.length; k++) {
+                    assertTrue(Float.isFinite(film[k]), shading + " " + c + ": NaN at pixel " + k / 3);
+                }
+            }
+        }
+    }
+
+    @Test
+    void pixelProbeReturnsTheRenderedPixel() {
+        RenderJob job = mirrorJob(48, 36, 4, "jittered", false);
+        RenderResult r = Renderer.renderOnce(job);
+        List<String> lines = new ArrayList<>();
+        double[] rgb = PixelProbe.trace(job, 30, 20, lines::add);
+        float[] px = new float[3];
+        r.film().pixel(30, 20, px);
+        for (int c = 0; c < 3; c++) {
+            assertEquals(px[c], rgb[c], 1e-5);
+        }
+        assertTrue(lines.stream().anyMatch(l -> l.contains("hit ")), String.join("\n", lines));
+    }
+}
