@@ -15,7 +15,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
+import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
 import org.beziertracer.render.Film;
@@ -118,7 +118,7 @@ final class RenderCommand implements Callable<Integer> {
      * default settings; at the merge, replace the body with {@code SceneFiles.load(nameOrPath)}.
      */
     static SceneDocument load(String nameOrPath) {
-        return new SceneDocument(Models.load(nameOrPath), RenderSettings.defaults());
+        return SceneFiles.load(nameOrPath);
     }
 
     @Override

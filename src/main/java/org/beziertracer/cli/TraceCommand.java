@@ -120,9 +120,10 @@ final class TraceCommand implements Callable<Integer> {
             double ms = traceNanos / 1e6;
             spec.commandLine().getErr().println(String.format(Locale.ROOT,
                     "trace: %d rays, %d hits, method %s, bvh %s, %d sub-patches, %d BVH nodes, depth %d, "
-                            + "build %.2f ms, trace %.1f ms, %.0f rays/s",
+                            + "build %.2f ms, trace %.1f ms, %.0f rays/s, %.2f leaf tests and %.2f clip steps per ray",
                     rays, hits, m.label(), !noBvh, si.subPatchCount(), si.nodeCount(), si.depth(),
-                    si.buildMillis(), ms, rays / Math.max(ms, 1e-9) * 1000));
+                    si.buildMillis(), ms, rays / Math.max(ms, 1e-9) * 1000,
+                    ctx.solverCalls / Math.max(1.0, rays), ctx.clipIterations / Math.max(1.0, rays)));
         }
         return 0;
     }

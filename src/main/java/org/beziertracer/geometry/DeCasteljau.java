@@ -194,6 +194,18 @@ public final class DeCasteljau {
      */
     static void reduceForward(double[] p, int off, int stride, int deg, int dim, double t, int levels) {
         double s = 1 - t;
+        if (dim == 3) {
+            // the hot case (3-D and ray-space nets), unrolled
+            for (int r = 1; r <= levels; r++) {
+                for (int k = 0, a = off; k <= deg - r; k++, a += stride) {
+                    int b = a + stride;
+                    p[a] = s * p[a] + t * p[b];
+                    p[a + 1] = s * p[a + 1] + t * p[b + 1];
+                    p[a + 2] = s * p[a + 2] + t * p[b + 2];
+                }
+            }
+            return;
+        }
         for (int r = 1; r <= levels; r++) {
             for (int k = 0, a = off; k <= deg - r; k++, a += stride) {
                 for (int c = 0; c < dim; c++) {
@@ -233,6 +245,15 @@ public final class DeCasteljau {
             for (int r = 1; r <= deg; r++) {
                 if (hi != null) {
                     copyPoint(lo, last, hi, hiOff + (deg - r + 1) * stride, dim);
+                }
+                if (dim == 3) {
+                    for (int k = deg, a = last; k >= r; k--, a -= stride) {
+                        int b = a - stride;
+                        lo[a] = s * lo[b] + t * lo[a];
+                        lo[a + 1] = s * lo[b + 1] + t * lo[a + 1];
+                        lo[a + 2] = s * lo[b + 2] + t * lo[a + 2];
+                    }
+                    continue;
                 }
                 for (int k = deg, a = last; k >= r; k--, a -= stride) {
                     for (int c = 0; c < dim; c++) {

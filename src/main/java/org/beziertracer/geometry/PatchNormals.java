@@ -57,6 +57,26 @@ public final class PatchNormals {
         if (crossAt(net, off, n, m, u, v, out, outOff, scratch, threshold)) {
             return;
         }
+        limitNormal(net, off, n, m, u, v, out, outOff, scratch, threshold);
+    }
+
+    /**
+     * As {@link #unitNormal}, for a caller that already evaluated the derivatives at
+     * {@code (u,v)}: {@code deriv[3..5] = S_u}, {@code deriv[6..8] = S_v} (the layout of
+     * {@link DeCasteljau#evaluateWithDerivatives}). Re-evaluates only at a degenerate point.
+     */
+    public static void unitNormal(double[] net, int off, int n, int m, double u, double v, double[] deriv,
+                                  double[] out, int outOff, double[] scratch) {
+        double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent(net, off, n, m);
+        double ux = deriv[3], uy = deriv[4], uz = deriv[5];
+        double vx = deriv[6], vy = deriv[7], vz = deriv[8];
+        if (!store(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx, threshold, out, outOff)) {
+            limitNormal(net, off, n, m, u, v, out, outOff, scratch, threshold);
+        }
+    }
+
+    private static void limitNormal(double[] net, int off, int n, int m, double u, double v,
+                                    double[] out, int outOff, double[] scratch, double threshold) {
         // Degenerate: step toward the centre (or, at the centre, toward an interior point)
         double tu = 0.5, tv = 0.5;
         if (Math.abs(u - 0.5) + Math.abs(v - 0.5) < 1e-3) {

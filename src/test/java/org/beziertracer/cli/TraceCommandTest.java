@@ -122,7 +122,7 @@ class TraceCommandTest {
     void randomRaysAndStatsReportThroughput() {
         Run r = run("trace", "teapot", "--random", "2000", "--stats", "-o", dir.resolve("r.csv").toString());
         assertEquals(0, r.code(), r.err());
-        assertTrue(r.err().matches("(?s)trace: 2000 rays, \\d+ hits, method clipping, bvh true, \\d+ sub-patches.*rays/s\\s*"), r.err());
+        assertTrue(r.err().matches("(?s)trace: 2000 rays, \\d+ hits, method clipping, bvh true, \\d+ sub-patches.*rays/s, [0-9.]+ leaf tests and [0-9.]+ clip steps per ray\\s*"), r.err());
     }
 
     @Test

@@ -246,4 +246,29 @@ class PatchNormalsTest {
         assertFiniteUnit(normal(line, 2, 1, 0, 1), "patch collapsed to a line");
         assertFiniteUnit(normal(line, 2, 1, 0.5, 0.5), "patch collapsed to a line, centre");
     }
+
+    @Test
+    void theOverloadTakingDerivativesAgreesWithTheEvaluatingOne() {
+        java.util.Random rnd = new java.util.Random(77);
+        double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH], e = new double[9], a = new double[3], b = new double[3];
+        for (int trial = 0; trial < 200; trial++) {
+            int n = 1 + rnd.nextInt(6), m = 1 + rnd.nextInt(6);
+            double[] net = new double[(n + 1) * (m + 1) * 3];
+            for (int k = 0; k < net.length; k++) {
+                net[k] = rnd.nextDouble();
+            }
+            if (trial % 4 == 0) { // collapse the v=0 edge to a point
+                for (int i = 1; i <= n; i++) {
+                    System.arraycopy(net, 0, net, 3 * i, 3);
+                }
+            }
+            double u = trial % 4 == 0 ? rnd.nextDouble() : rnd.nextDouble(), v = trial % 4 == 0 ? 0 : rnd.nextDouble();
+            DeCasteljau.evaluateWithDerivatives(net, 0, n, m, u, v, e, scratch);
+            PatchNormals.unitNormal(net, 0, n, m, u, v, a, 0, scratch);
+            PatchNormals.unitNormal(net, 0, n, m, u, v, e, b, 0, scratch);
+            for (int c = 0; c < 3; c++) {
+                assertEquals(a[c], b[c], 1e-12, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
+            }
+        }
+    }
 }
