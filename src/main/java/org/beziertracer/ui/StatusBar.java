@@ -16,7 +16,7 @@ import javax.swing.SwingConstants;
 public final class StatusBar extends JPanel {
 
     private final AppController c;
-    private final JLabel frame = label("frame time of the latest pass");
+    private final JLabel frame = label("time since the render started, at the latest pass; snapshot: re-split and BVH refit (or build)");
     private final JLabel rays = label("millions of rays per second");
     private final JLabel pass = label("progressive pass finished / passes per frame");
     private final JLabel spp = label("samples per pixel");
@@ -57,7 +57,7 @@ public final class StatusBar extends JPanel {
             rays.setText("—");
             pass.setText("—");
         } else if (s != null) {
-            frame.setText(String.format(Locale.ROOT, "%.1f ms", s.millis()));
+            frame.setText(String.format(Locale.ROOT, "%.1f ms (snapshot %.1f ms)", s.millis(), s.prepMillis()));
             rays.setText(String.format(Locale.ROOT, "%.2f Mrays/s", s.mraysPerSecond()));
             pass.setText("pass " + s.pass() + " of " + s.passCount());
         }
