@@ -338,18 +338,7 @@ class AppGuiTest {
         Scene before = GuiDriver.onEdt(() -> d.c.scene());
         BufferedImage img0 = d.capturePanel();
         SwingUtilities.invokeLater(() -> d.c.open(bad));
-        JDialog dialog = null;
-        for (int k = 0; k < 200 && dialog == null; k++) {
-            d.robot.delay(25);
-            dialog = GuiDriver.onEdt(() -> {
-                for (Window w : Window.getWindows()) {
-                    if (w instanceof JDialog jd && jd.isShowing() && jd.getContentPane().getComponent(0) instanceof JOptionPane) {
-                        return jd;
-                    }
-                }
-                return null;
-            });
-        }
+        JDialog dialog = waitForOptionDialog();
         assertNotNull(dialog, "an error dialog opened");
         JDialog shown = dialog;
         String message = GuiDriver.onEdt(() -> String.valueOf(((JOptionPane) shown.getContentPane().getComponent(0)).getMessage()));
@@ -376,5 +365,56 @@ class AppGuiTest {
         }));
         assertTrue(count[0] >= 22, "toolbox controls found: " + count[0]);
         assertEquals(java.util.List.of(), missing);
+    }
+
+    @Test
+    @Order(9)
+    void closingWithUnsavedEditsAsksAndCancelKeepsTheWindow() {
+        GuiDriver.onEdt(() -> d.c.randomizeControlPoints(5));
+        assertTrue(GuiDriver.onEdt(() -> d.c.history().isDirty()));
+        SwingUtilities.invokeLater(() -> d.frame.dispatchEvent(
+                new java.awt.event.WindowEvent(d.frame, java.awt.event.WindowEvent.WINDOW_CLOSING)));
+        JDialog dialog = waitForOptionDialog();
+        String message = GuiDriver.onEdt(() -> String.valueOf(((JOptionPane) dialog.getContentPane().getComponent(0)).getMessage()));
+        assertTrue(message.contains("unsaved edits"), message);
+        javax.swing.AbstractButton cancel = GuiDriver.onEdt(() -> findButton(dialog, "Cancel"));
+        assertNotNull(cancel, "a Cancel button");
+        d.click(cancel);
+        d.settle();
+        assertTrue(GuiDriver.onEdt(() -> d.frame.isDisplayable() && d.frame.isShowing()), "the window stays open");
+        assertTrue(GuiDriver.onEdt(() -> d.c.history().isDirty()), "the edits stay");
+    }
+
+    private static JDialog waitForOptionDialog() {
+        for (int k = 0; k < 200; k++) {
+            d.robot.delay(25);
+            JDialog found = GuiDriver.onEdt(() -> {
+                for (Window w : Window.getWindows()) {
+                    if (w instanceof JDialog jd && jd.isShowing() && jd.getContentPane().getComponent(0) instanceof JOptionPane) {
+                        return jd;
+                    }
+                }
+                return null;
+            });
+            if (found != null) {
+                return found;
+            }
+        }
+        throw new AssertionError("no dialog opened");
+    }
+
+    private static javax.swing.AbstractButton findButton(java.awt.Container root, String text) {
+        for (java.awt.Component comp : root.getComponents()) {
+            if (comp instanceof javax.swing.AbstractButton b && text.equals(b.getText())) {
+                return b;
+            }
+            if (comp instanceof java.awt.Container ct) {
+                javax.swing.AbstractButton hit = findButton(ct, text);
+                if (hit != null) {
+                    return hit;
+                }
+            }
+        }
+        return null;
     }
 }
