@@ -3,6 +3,7 @@ package org.beziertracer.ui;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
@@ -26,5 +27,47 @@ class RayTraceEngineTest {
         SceneIntersector s2 = RayTraceEngine.update(s1, b, io.withMethod(Method.NEWTON));
         assertNotSame(s1, s2);
         assertEquals(Method.NEWTON, s2.options().method());
+    }
+
+    @Test
+    void aBurstOfEditsEndsOnThePictureOfTheNewest() throws InterruptedException {
+        ToolSettings t = new ToolSettings();
+        Scene scene = Models.patch();
+        OrbitView view = OrbitView.fit(scene.controlBounds(), t.fovDegrees());
+        java.util.concurrent.atomic.AtomicInteger finished = new java.util.concurrent.atomic.AtomicInteger();
+        FrameBuffer fb = new FrameBuffer(64, 48, () -> {});
+        RenderRequest last = null;
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.onStatus(st -> {
+                if (st.pass() == st.passCount()) {
+                    finished.incrementAndGet();
+                }
+            });
+            for (int k = 0; k < 60; k++) {
+                scene = NetEdits.movePoint(scene, new PointRef(0, 1, 2), -0.5, 0.5, 0.05 * k);
+                last = new RenderRequest(scene, view.camera(64 / 48.0), t.renderSettings(64, 48), 1, fb);
+                engine.submit(last);
+            }
+            waitIdle(engine);
+        }
+        assertTrue(finished.get() < 60, "stale edits were coalesced or cancelled: " + finished.get() + " full frames");
+        FrameBuffer alone = new FrameBuffer(64, 48, () -> {});
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.submit(new RenderRequest(last.scene(), last.camera(), last.settings(), 1, alone));
+            waitIdle(engine);
+        }
+        for (int y = 0; y < 48; y++) {
+            for (int x = 0; x < 64; x++) {
+                assertEquals(alone.rgb(x, y), fb.rgb(x, y), "pixel " + x + "," + y + " shows the newest edit");
+            }
+        }
+    }
+
+    private static void waitIdle(RayTraceEngine engine) throws InterruptedException {
+        long end = System.nanoTime() + 30_000_000_000L;
+        while (engine.busy()) {
+            assertTrue(System.nanoTime() < end, "engine did not finish");
+            Thread.sleep(5);
+        }
     }
 }
