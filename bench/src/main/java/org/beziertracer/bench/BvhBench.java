@@ -29,6 +29,13 @@ public class BvhBench {
     @Param({"1", "32", "3200"})
     public int patchCount;
 
+    /** Split settings (defaults of {@link SplitOptions}); sweep with {@code -p flatness=..,.. -p maxDepth=..}. */
+    @Param({"default"})
+    public String flatness;
+
+    @Param({"default"})
+    public String maxDepth;
+
     Scene scene;
     SubPatchTable table;
     double[] bounds;
@@ -39,7 +46,9 @@ public class BvhBench {
     @Setup
     public void setup() {
         scene = Fixtures.teapots(patchCount);
-        split = SplitOptions.defaults();
+        SplitOptions d = SplitOptions.defaults();
+        split = new SplitOptions(true, flatness.equals("default") ? d.flatnessTolerance() : Double.parseDouble(flatness),
+                maxDepth.equals("default") ? d.maxDepth() : Integer.parseInt(maxDepth));
         table = SubPatchTable.build(scene.patches(), split);
         bounds = table.bounds.clone();
         options = BvhOptions.defaults();
