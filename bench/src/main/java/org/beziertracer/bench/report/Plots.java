@@ -29,7 +29,7 @@ import com.google.gson.JsonParser;
 /**
  * Bar charts from JMH JSON results (plain Java 2D, written as PNG). One chart per input file:
  * a bar per (benchmark method, parameter set), the primary score with its 99.9 % error as a
- * whisker. With {@code --rays}, time per ray ({@code ns/op}) is converted to millions of rays per
+ * whisker (clipped at the chart's edge, 1.3× the largest bar). With {@code --rays}, time per ray ({@code ns/op}) is converted to millions of rays per
  * second (the error interval converted end to end).
  *
  * <pre>
@@ -141,10 +141,12 @@ public final class Plots {
         g.setFont(font);
         g.setColor(Color.DARK_GRAY);
         g.drawString(axis, left, 46);
+        // Axis from the values; whiskers wider than the chart (noisy runs) are clipped at its edge
         double max = 0;
         for (Bar b : bars) {
-            max = Math.max(max, Math.max(b.value(), b.hi()));
+            max = Math.max(max, b.value());
         }
+        max *= 1.3;
         if (!(max > 0)) {
             max = 1;
         }
@@ -179,7 +181,8 @@ public final class Plots {
             g.fillRect(x0, y + 4, Math.max(w, 1), rowH - 8);
             // Error whisker
             g.setColor(Color.BLACK);
-            int xl = x0 + (int) Math.round(b.lo() / max * barArea), xh = x0 + (int) Math.round(b.hi() / max * barArea);
+            int xl = x0 + (int) Math.round(Math.max(0, b.lo()) / max * barArea);
+            int xh = x0 + (int) Math.round(Math.min(max, b.hi()) / max * barArea);
             int ym = y + rowH / 2;
             g.drawLine(xl, ym, xh, ym);
             g.drawLine(xl, ym - 4, xl, ym + 4);

@@ -33,7 +33,7 @@ public final class Summary {
                 runs = JsonParser.parseReader(r).getAsJsonArray();
             }
             System.out.println("### " + file);
-            System.out.println("| benchmark | params | mean ± error | median | min | median rays/s | B/op |");
+            System.out.println("| benchmark | params | mean ± error | median | min | median ops/s (rays/s for ray loops) | B/op |");
             System.out.println("|---|---|---|---|---|---|---|");
             for (JsonElement e : runs) {
                 JsonObject run = e.getAsJsonObject();
