@@ -54,6 +54,11 @@ final class TraceCommand implements Callable<Integer> {
     @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
     boolean noBvh;
 
+    @Option(names = "--tessellate", paramLabel = "K", defaultValue = "0",
+            description = "intersect a uniform KxK triangle tessellation of every patch instead of the exact "
+                    + "surface (0 = exact, the default); normals interpolated from the analytic vertex normals")
+    int tessellate;
+
     @Option(names = {"-i", "--input"}, paramLabel = "RAYS", description = "ray file (default: standard input)")
     Path input;
 
@@ -77,7 +82,8 @@ final class TraceCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
         Scene scene = Models.load(model);
-        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(m).withBvh(!noBvh));
+        SceneIntersector si = SceneIntersector.build(scene,
+                IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate));
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
@@ -119,9 +125,10 @@ final class TraceCommand implements Callable<Integer> {
         if (stats) {
             double ms = traceNanos / 1e6;
             spec.commandLine().getErr().println(String.format(Locale.ROOT,
-                    "trace: %d rays, %d hits, method %s, bvh %s, %d sub-patches, %d BVH nodes, depth %d, "
+                    "trace: %d rays, %d hits, method %s, bvh %s, %d %s, %d BVH nodes, depth %d, "
                             + "build %.2f ms, trace %.1f ms, %.0f rays/s, %.2f leaf tests and %.2f clip steps per ray",
-                    rays, hits, m.label(), !noBvh, si.subPatchCount(), si.nodeCount(), si.depth(),
+                    rays, hits, tessellate > 0 ? "tessellated " + tessellate + "x" + tessellate : m.label(), !noBvh,
+                    si.primitiveCount(), tessellate > 0 ? "triangles" : "sub-patches", si.nodeCount(), si.depth(),
                     si.buildMillis(), ms, rays / Math.max(ms, 1e-9) * 1000,
                     ctx.solverCalls / Math.max(1.0, rays), ctx.clipIterations / Math.max(1.0, rays)));
         }

@@ -20,8 +20,16 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
         }
     }
 
-    /** Adaptive splitting with the defaults tuned for Bézier clipping (see docs/performance.md). */
-    public static SplitOptions defaults() { return new SplitOptions(true, 0.05, 8); }
+    /**
+     * Adaptive splitting with the defaults tuned for Bézier clipping on the teapot (see
+     * docs/performance.md, "Sub-patch tuning"): flatness 0.05 of the box diagonal, at most 6
+     * halvings. Against the former 0.05 / 8 it makes 1,566 instead of 3,856 teapot sub-patches
+     * for the same work per ray (1.18 vs 1.16 solver calls, 2.29 vs 2.21 clip iterations) and no
+     * measurable change in rays/s, with a smaller BVH and a faster split. Coarser settings
+     * (0.1 / 5) are as fast for clipping but make Newton's one-root-per-leaf start miss nearer
+     * roots on wavy degree-9 patches ({@code BezierClipperTest}), so 6 is the floor for now.
+     */
+    public static SplitOptions defaults() { return new SplitOptions(true, 0.05, 6); }
 
     /** One sub-patch per patch. */
     public static SplitOptions wholePatches() { return new SplitOptions(false, 1, 0); }

@@ -17,11 +17,19 @@ public final class Hit {
     public int kind;
     /** Index of the patch, plane or sphere in the scene. */
     public int index;
-    /** Sub-patch (BVH leaf) that produced a patch hit; -1 otherwise. */
+    /**
+     * Sub-patch (BVH leaf) that produced a patch hit; in tessellated mode the triangle; -1 for
+     * planes and spheres.
+     */
     public int subPatch;
+    /**
+     * Tessellated mode only: barycentric weights of the hit triangle's second and third corner
+     * (the first is {@code 1 - b1 - b2}); {@code u, v} are interpolated with them.
+     */
+    public double b1, b2;
 
     public void set(Hit o) {
-        t = o.t; u = o.u; v = o.v; kind = o.kind; index = o.index; subPatch = o.subPatch;
+        t = o.t; u = o.u; v = o.v; kind = o.kind; index = o.index; subPatch = o.subPatch; b1 = o.b1; b2 = o.b2;
     }
 
     @Override

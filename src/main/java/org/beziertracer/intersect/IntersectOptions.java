@@ -1,23 +1,55 @@
 package org.beziertracer.intersect;
 
+import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.geometry.SplitOptions;
+import org.beziertracer.geometry.Tessellator;
 
 /**
  * How a scene is intersected.
  *
- * @param method solver at the BVH leaves
- * @param bvh    true: sub-patch BVH (pre-split patches, binned-SAH BVH); false: one box per whole
- *               patch, tested in a flat list, the solver starting on the whole patch
- * @param split  pre-split options used when {@code bvh} is on
+ * @param method     solver at the BVH leaves (exact mode only)
+ * @param bvh        true: sub-patch BVH (pre-split patches, binned-SAH BVH); false: one box per
+ *                   whole patch, tested in a flat list, the solver starting on the whole patch
+ *                   (in tessellated mode: the triangles tested in a flat list)
+ * @param split      pre-split options used when {@code bvh} is on (exact mode only)
+ * @param bvhOptions leaf size and bin count of the BVH
+ * @param tessellate 0: exact intersection of the Bézier patches; {@code K ≥ 1}: every patch is
+ *                   replaced by a uniform {@code K×K} grid of cells, two triangles each
+ *                   ({@link Tessellator}), intersected as a triangle mesh with interpolated
+ *                   analytic vertex normals (the "fair comparator" of the exact path)
  */
-public record IntersectOptions(Method method, boolean bvh, SplitOptions split) {
+public record IntersectOptions(Method method, boolean bvh, SplitOptions split, BvhOptions bvhOptions,
+                               int tessellate) {
+
+    public IntersectOptions {
+        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
+                    + ", got " + tessellate);
+        }
+    }
+
+    /** Exact mode with the default BVH options. */
+    public IntersectOptions(Method method, boolean bvh, SplitOptions split) {
+        this(method, bvh, split, BvhOptions.defaults(), 0);
+    }
+
     public static IntersectOptions defaults() {
         return new IntersectOptions(Method.CLIPPING, true, SplitOptions.defaults());
     }
 
-    public IntersectOptions withMethod(Method m) { return new IntersectOptions(m, bvh, split); }
+    public IntersectOptions withMethod(Method m) { return new IntersectOptions(m, bvh, split, bvhOptions, tessellate); }
 
-    public IntersectOptions withBvh(boolean on) { return new IntersectOptions(method, on, split); }
+    public IntersectOptions withBvh(boolean on) { return new IntersectOptions(method, on, split, bvhOptions, tessellate); }
+
+    public IntersectOptions withSplit(SplitOptions s) { return new IntersectOptions(method, bvh, s, bvhOptions, tessellate); }
+
+    public IntersectOptions withBvhOptions(BvhOptions o) { return new IntersectOptions(method, bvh, split, o, tessellate); }
+
+    /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
+    public IntersectOptions withTessellate(int k) { return new IntersectOptions(method, bvh, split, bvhOptions, k); }
+
+    /** True in tessellated (triangle mesh) mode. */
+    public boolean tessellated() { return tessellate > 0; }
 
     /** The split options in force: whole patches when the BVH is off. */
     public SplitOptions effectiveSplit() { return bvh ? split : SplitOptions.wholePatches(); }

@@ -2,10 +2,10 @@ package org.beziertracer.intersect;
 
 import org.beziertracer.accel.Accelerator;
 import org.beziertracer.accel.Bvh;
-import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.accel.FlatList;
 import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.PatchNormals;
+import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
@@ -18,11 +18,18 @@ import org.beziertracer.model.Scene;
  * {@link TraceContext}. An edit of one patch makes a new snapshot with {@link #withPatch}, which
  * re-splits only that patch and refits the BVH (or rebuilds it when the number of sub-patches
  * changed).
+ *
+ * <p>In tessellated mode ({@link IntersectOptions#tessellate()} {@code = K > 0}) the patches are
+ * replaced by a uniform triangle mesh ({@link TriangleMesh}) in the same kind of BVH; hits still
+ * report the patch index and its (u,v), interpolated over the triangle, and
+ * {@link #surfacePoint} returns the point on the triangle with the interpolated analytic normal.
  */
 public final class SceneIntersector {
 
     final Scene scene;
     final SubPatchTable table;
+    /** The triangles in tessellated mode; null in exact mode. */
+    final TriangleMesh mesh;
     final Accelerator accel;
     final IntersectOptions options;
     final Method method;
@@ -32,10 +39,11 @@ public final class SceneIntersector {
     final double sceneSize;
     final double buildMillis;
 
-    private SceneIntersector(Scene scene, SubPatchTable table, Accelerator accel, IntersectOptions options,
-                             double buildMillis) {
+    private SceneIntersector(Scene scene, SubPatchTable table, TriangleMesh mesh, Accelerator accel,
+                             IntersectOptions options, double buildMillis) {
         this.scene = scene;
         this.table = table;
+        this.mesh = mesh;
         this.accel = accel;
         this.options = options;
         this.method = options.method();
@@ -49,13 +57,22 @@ public final class SceneIntersector {
     /** Splits the patches and builds the acceleration structure. */
     public static SceneIntersector build(Scene scene, IntersectOptions options) {
         long t0 = System.nanoTime();
+        if (options.tessellated()) {
+            SubPatchTable whole = SubPatchTable.build(scene.patches(), SplitOptions.wholePatches());
+            TriangleMesh mesh = scene.patches().isEmpty() ? null
+                    : TriangleMesh.build(scene.patches(), options.tessellate());
+            Accelerator accel = mesh == null ? FlatList.build(new double[0], 0)
+                    : options.bvh() ? Bvh.build(mesh.bounds, mesh.count, options.bvhOptions())
+                    : FlatList.build(mesh.bounds, mesh.count);
+            return new SceneIntersector(scene, whole, mesh, accel, options, (System.nanoTime() - t0) / 1e6);
+        }
         SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit());
         Accelerator accel = buildAccel(table, options);
-        return new SceneIntersector(scene, table, accel, options, (System.nanoTime() - t0) / 1e6);
+        return new SceneIntersector(scene, table, null, accel, options, (System.nanoTime() - t0) / 1e6);
     }
 
     private static Accelerator buildAccel(SubPatchTable table, IntersectOptions options) {
-        return options.bvh() ? Bvh.build(table.bounds, table.count, BvhOptions.defaults())
+        return options.bvh() ? Bvh.build(table.bounds, table.count, options.bvhOptions())
                 : FlatList.build(table.bounds, table.count);
     }
 
@@ -64,6 +81,9 @@ public final class SceneIntersector {
      * refitted when its sub-patch count is unchanged, else rebuilt.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
+        if (options.tessellated()) {
+            return build(scene.withPatch(index, patch), options); // the mesh is rebuilt whole
+        }
         long t0 = System.nanoTime();
         SubPatchTable newTable = table.withPatch(index, patch);
         Accelerator newAccel;
@@ -72,7 +92,7 @@ public final class SceneIntersector {
         } else {
             newAccel = buildAccel(newTable, options);
         }
-        return new SceneIntersector(scene.withPatch(index, patch), newTable, newAccel, options,
+        return new SceneIntersector(scene.withPatch(index, patch), newTable, null, newAccel, options,
                 (System.nanoTime() - t0) / 1e6);
     }
 
@@ -90,11 +110,20 @@ public final class SceneIntersector {
         ctx.tMin = tMin;
         ctx.found = false;
         double best = tMax;
-        if (table.count > 0) {
+        if (mesh != null) {
+            TriangleMesh.setRay(ctx);
+        }
+        if (accel.primCount() > 0) {
             best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
         }
         boolean any = ctx.found;
         if (any) {
+            if (mesh != null) {
+                // Tessellated: the patch parameters, interpolated over the winning triangle only
+                Hit b = ctx.best;
+                b.u = mesh.uv(b.subPatch, b.b1, b.b2, 0);
+                b.v = mesh.uv(b.subPatch, b.b1, b.b2, 1);
+            }
             hit.set(ctx.best);
             best = hit.t;
         }
@@ -148,7 +177,10 @@ public final class SceneIntersector {
                 return true;
             }
         }
-        return table.count > 0
+        if (mesh != null) {
+            TriangleMesh.setRay(ctx);
+        }
+        return accel.primCount() > 0
                 && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
     }
 
@@ -182,7 +214,9 @@ public final class SceneIntersector {
         sp.v = hit.v;
         sp.kind = hit.kind;
         sp.index = hit.index;
-        if (hit.kind == Hit.PATCH) {
+        if (hit.kind == Hit.PATCH && mesh != null) {
+            mesh.surfacePoint(hit.subPatch, hit.b1, hit.b2, sp);
+        } else if (hit.kind == Hit.PATCH) {
             int k = hit.index;
             double[] e = ctx.eval;
             int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
@@ -206,7 +240,14 @@ public final class SceneIntersector {
 
     public IntersectOptions options() { return options; }
 
+    /** Sub-patches in exact mode (whole patches with the BVH off). */
     public int subPatchCount() { return table.count; }
+
+    /** Triangles in tessellated mode, 0 in exact mode. */
+    public int triangleCount() { return mesh == null ? 0 : mesh.count; }
+
+    /** Primitives in the acceleration structure: sub-patches, or triangles in tessellated mode. */
+    public int primitiveCount() { return accel.primCount(); }
 
     public int nodeCount() { return accel.nodeCount(); }
 

@@ -31,6 +31,11 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     /** 1/|d|: converts the third ray-space coordinate (a distance) into the ray parameter t. */
     double invLength;
 
+    // Tessellated mode: the watertight triangle test's per-ray permutation and shear (TriangleMesh.setRay)
+    int kx, ky, kz;
+    double shearX, shearY, shearZ;
+    double permOx, permOy, permOz;
+
     // Scratch owned by this thread
     /** BVH traversal stack; grown (rarely, outside the per-ray loop) when a deeper BVH arrives. */
     int[] stack = new int[256];
@@ -55,6 +60,8 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
 
     // Root found by the last solver call, in the parent patch's parameters
     double rootT, rootU, rootV;
+    /** Tessellated mode: barycentric weights of the hit triangle's second and third corner. */
+    double rootB1, rootB2;
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
@@ -96,6 +103,20 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
 
     @Override
     public double intersect(int prim, double tMax) {
+        TriangleMesh mesh = scene.mesh;
+        if (mesh != null) {
+            if (mesh.intersect(this, prim, tMin, tMax)) {
+                found = true;
+                best.t = rootT;
+                best.b1 = rootB1;
+                best.b2 = rootB2;
+                best.kind = Hit.PATCH;
+                best.index = mesh.patchOf[prim];
+                best.subPatch = prim;
+                return rootT;
+            }
+            return tMax;
+        }
         if (scene.solvePatch(this, prim, tMin, tMax)) {
             found = true;
             best.t = rootT;
@@ -111,6 +132,10 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
 
     @Override
     public boolean occludes(int prim, double tMax) {
+        TriangleMesh mesh = scene.mesh;
+        if (mesh != null) {
+            return mesh.intersect(this, prim, tMin, tMax);
+        }
         return scene.solvePatch(this, prim, tMin, tMax);
     }
 }
