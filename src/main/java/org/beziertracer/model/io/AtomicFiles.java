@@ -45,4 +45,15 @@ public final class AtomicFiles {
             }
         }
     }
+
+    /** The text {@code content} writes, for writers that also offer a {@code toString} form. */
+    public static String toText(Content content) {
+        java.io.StringWriter out = new java.io.StringWriter();
+        try {
+            content.writeTo(out);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        return out.toString();
+    }
 }

@@ -1,8 +1,6 @@
 package org.beziertracer.model.io;
 
 import java.io.IOException;
-import java.io.StringWriter;
-import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.List;
@@ -27,13 +25,7 @@ public final class BptWriter {
 
     /** The BPT text of the patches. */
     public static String toString(List<BezierPatch> patches) {
-        StringWriter out = new StringWriter();
-        try {
-            write(out, patches);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return out.toString();
+        return AtomicFiles.toText(out -> write(out, patches));
     }
 
     /** Writes BPT text to {@code out} (not closed). */

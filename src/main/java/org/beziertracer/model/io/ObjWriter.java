@@ -1,8 +1,6 @@
 package org.beziertracer.model.io;
 
 import java.io.IOException;
-import java.io.StringWriter;
-import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.List;
@@ -35,13 +33,7 @@ public final class ObjWriter {
 
     /** The OBJ text of the patches. */
     public static String toString(List<BezierPatch> patches) {
-        StringWriter out = new StringWriter();
-        try {
-            write(out, patches);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return out.toString();
+        return AtomicFiles.toText(out -> write(out, patches));
     }
 
     /** Writes OBJ text to {@code out} (not closed). */
