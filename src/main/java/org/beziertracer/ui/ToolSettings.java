@@ -16,10 +16,11 @@ public final class ToolSettings {
     /** Cells per patch side offered by the tessellated mode (K×K cells, two triangles each). */
     public static final int[] TESSELLATION_CHOICES = {4, 8, 16, 32, 64};
     /**
-     * Default K: the smallest K whose teapot silhouette stays within 0.5 px of the exact one at
-     * 800×600 (docs/performance.md, "Exact vs tessellated at equal accuracy").
+     * Default K: the first offered choice whose teapot silhouette stays within 0.5 px of the exact
+     * one at 800×600 (0.32 px; the smallest such K is 15; docs/performance.md, "Exact vs
+     * tessellated at equal accuracy").
      */
-    public static final int DEFAULT_TESSELLATION = 32;
+    public static final int DEFAULT_TESSELLATION = 16;
 
     public boolean rayTrace = true;
     public boolean controlPolygon = true;
