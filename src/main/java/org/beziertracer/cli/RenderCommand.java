@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 
+import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -74,6 +75,11 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
     boolean noBvh;
 
+    @Option(names = "--tessellate", paramLabel = "K", defaultValue = "0",
+            description = "render a uniform KxK triangle tessellation of every patch instead of the exact "
+                    + "surface (0 = exact, the default; at most 1024), same BVH and shading")
+    int tessellate;
+
     @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id", description = "shading mode")
     String shading;
 
@@ -129,9 +135,13 @@ final class RenderCommand implements Callable<Integer> {
         if (repeat < 1 || repeat > MAX_REPEAT) {
             throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
         }
+        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
+                    + ", got " + tessellate);
+        }
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
-                .withFilter(PixelFilter.parse(filter));
+                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
         SceneDocument doc = load(model);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
@@ -143,6 +153,7 @@ final class RenderCommand implements Callable<Integer> {
             }
             scene = scene.toBuilder().lights(list).build();
         }
+        checkMeshMemory(tessellate, scene.patchCount());
         RenderJob job = RenderJob.prepare(scene, settings, options);
         job = job.withCamera(camera(job.camera()));
         PrintWriter out = spec.commandLine().getOut();
@@ -236,6 +247,25 @@ final class RenderCommand implements Callable<Integer> {
         }
     }
 
+    /** About the bytes per triangle of a tessellated scene: corners, normals, (u,v), boxes and BVH nodes. */
+    static final long BYTES_PER_TRIANGLE = 320;
+
+    /** Refuses a tessellation whose triangles would not fit in the heap. */
+    static void checkMeshMemory(int k, int patches) {
+        if (k == 0) {
+            return;
+        }
+        long triangles = 2L * k * k * patches;
+        long need = triangles * BYTES_PER_TRIANGLE;
+        Runtime rt = Runtime.getRuntime();
+        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
+        if (need > free * 0.8) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "--tessellate %d makes %d triangles, about %d MB, but only %d MB of heap is free; use a smaller K or a larger -Xmx",
+                    k, triangles, need >> 20, free >> 20));
+        }
+    }
+
     static Vec3 vec(String option, String text) {
         String[] parts = text.split(",", -1);
         if (parts.length != 3) {
@@ -286,6 +316,7 @@ final class RenderCommand implements Callable<Integer> {
         m.put("threads", threadCount);
         m.put("method", s.method());
         m.put("bvh", s.bvh());
+        m.put("tessellate", job.options().tessellate());
         m.put("shading", s.shading());
         m.put("shadows", s.shadows());
         m.put("primaryRays", last.stats().primaryRays());
@@ -298,6 +329,7 @@ final class RenderCommand implements Callable<Integer> {
         m.put("mraysPerSecond", round(median > 0 ? last.stats().totalRays() / (median * 1e3) : 0));
         m.put("subPatches", job.intersector().subPatchCount());
         m.put("bvhNodes", job.intersector().nodeCount());
+        m.put("triangles", job.intersector().triangleCount());
         return new Gson().toJson(m);
     }
 

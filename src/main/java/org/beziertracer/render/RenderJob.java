@@ -15,7 +15,8 @@ import org.beziertracer.model.Sphere;
  * builds a new job for every edit, camera move or settings change and passes it to
  * {@link RenderSession#start}. The image size is {@code settings.width() × settings.height()}.
  *
- * <p>The intersector must have been built with the method and BVH switch the settings ask for;
+ * <p>The intersector must have been built with the method and BVH switch the settings ask for
+ * (and the tessellation the options ask for);
  * {@link #prepare} does that. An edit of one patch can reuse the old snapshot via
  * {@link SceneIntersector#withPatch} and {@link #withIntersector}.
  */
@@ -28,12 +29,13 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
     }
 
     /**
-     * Builds the intersector (method and BVH from {@code settings}) and picks the camera: the scene's
+     * Builds the intersector (method and BVH from {@code settings}, exact or tessellated from
+     * {@link RenderOptions#tessellate()}) and picks the camera: the scene's
      * own, else {@link #defaultCamera}.
      */
     public static RenderJob prepare(Scene scene, RenderSettings settings, RenderOptions options) {
         IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(settings.method()))
-                .withBvh(settings.bvh());
+                .withBvh(settings.bvh()).withTessellate(options.tessellate());
         SceneIntersector si = SceneIntersector.build(scene, io);
         Camera camera = scene.camera().map(Camera::new)
                 .orElseGet(() -> defaultCamera(scene, (double) settings.width() / settings.height()));
@@ -77,6 +79,7 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
     /** Same intersector: only for settings with the same method and BVH switch. */
     public RenderJob withSettings(RenderSettings s) { return new RenderJob(intersector, camera, s, options); }
 
+    /** Same intersector: only for options with the same {@link RenderOptions#tessellate()}. */
     public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o); }
 
     public RenderJob withIntersector(SceneIntersector si) { return new RenderJob(si, camera, settings, options); }

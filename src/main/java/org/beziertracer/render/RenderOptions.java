@@ -1,5 +1,7 @@
 package org.beziertracer.render;
 
+import org.beziertracer.geometry.Tessellator;
+
 /**
  * Engine settings that are not part of a scene file.
  *
@@ -15,9 +17,13 @@ package org.beziertracer.render;
  * @param minAttenuation     adaptive depth control: a reflected or refracted ray is not traced when the product
  *                           of the attenuations along its path is below this (default 1/256)
  * @param seed               seed of the jittered and adaptive samplers
+ * @param tessellate         0: exact Bézier intersection (default); {@code K ≥ 1}: every patch is rendered as a
+ *                           uniform {@code K×K} grid of triangle pairs with analytic vertex normals
+ *                           ({@link org.beziertracer.intersect.IntersectOptions#tessellate()}), through the
+ *                           same BVH and shading
  */
 public record RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
-                            double adaptiveThreshold, double minAttenuation, long seed) {
+                            double adaptiveThreshold, double minAttenuation, long seed, int tessellate) {
 
     public static final int MAX_THREADS = 256;
 
@@ -40,43 +46,55 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
         if (!(minAttenuation > 0 && minAttenuation < 1)) {
             throw new IllegalArgumentException("minimum attenuation must be in (0,1), got " + minAttenuation);
         }
+        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
+                    + ", got " + tessellate);
+        }
     }
 
-    /** All processors, 32-pixel tiles, progressive, every pass shown, box filter, threshold 0.05, 1/256. */
+    /** All processors, 32-pixel tiles, progressive, every pass shown, box filter, threshold 0.05, 1/256, exact. */
     public static RenderOptions defaults() {
         return new RenderOptions(Runtime.getRuntime().availableProcessors(), 32, true, 1, PixelFilter.BOX,
-                0.05, 1.0 / 256, 1);
+                0.05, 1.0 / 256, 1, 0);
     }
 
     public RenderOptions withThreads(int n) {
-        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withProgressive(boolean on) {
-        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withPassesPerFrame(int n) {
-        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed);
+        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withFilter(PixelFilter f) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withTileSize(int size) {
-        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed);
+        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withMinAttenuation(double a) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, a, seed);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, a, seed, tessellate);
     }
 
     public RenderOptions withAdaptiveThreshold(double t) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, t, minAttenuation, seed);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, t, minAttenuation, seed, tessellate);
     }
 
     public RenderOptions withSeed(long s) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, s);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, s, tessellate);
     }
+
+    /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
+    public RenderOptions withTessellate(int k) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k);
+    }
+
+    /** True in tessellated (triangle mesh) mode. */
+    public boolean tessellated() { return tessellate > 0; }
 }

@@ -75,6 +75,12 @@ public final class AppActions {
                 () -> t.reflections, () -> t.reflections = !t.reflections);
         toggle("bvh", "Sub-patch BVH", "Pre-split patches in a BVH (off: whole patches in a list); "
                 + "the status bar shows the measured speed-up", key(KeyEvent.VK_B, CTRL), () -> t.bvh, () -> t.bvh = !t.bvh);
+        toggle("tessellated", "Tessellated (K×K)", "Render every patch as a uniform K×K triangle mesh with analytic "
+                + "vertex normals (off: the exact surface); the status bar shows \"tessellated K\"",
+                key(KeyEvent.VK_K, CTRL), () -> t.tessellated, () -> t.tessellated = !t.tessellated);
+        add("tessellation", "Next Tessellation K", "Cycle K of the tessellated mode (4, 8, 16, 32, 64)",
+                key(KeyEvent.VK_K, CTRL | SHIFT),
+                () -> c.setTessellation(next(ToolSettings.TESSELLATION_CHOICES, t.tessellation)));
         add("method", "Next Intersection Method", "Cycle clipping → Newton → subdivision", key(KeyEvent.VK_M, CTRL),
                 () -> c.setMethod(Method.values()[(t.method.ordinal() + 1) % Method.values().length]));
         add("light", "Next Light Position", "Cycle the light position", key(KeyEvent.VK_L, CTRL),

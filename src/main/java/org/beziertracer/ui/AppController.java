@@ -154,7 +154,7 @@ public final class AppController {
         Scene rendered = tools.light.apply(scene());
         CameraSpec cam = view.camera((double) buffer.width() / buffer.height());
         engine.submit(new RenderRequest(rendered, cam, tools.renderSettings(buffer.width(), buffer.height()),
-                tools.interactivity, buffer));
+                tools.interactivity, buffer, tools.tessellate()));
         repaint.run();
     }
 
@@ -298,6 +298,18 @@ public final class AppController {
     public void toggleRayTrace() { setting(() -> tools.rayTrace = !tools.rayTrace); }
 
     public void setMethod(Method m) { setting(() -> tools.method = m); }
+
+    /** Tessellated mode on or off (the exact surface when off). */
+    public void setTessellated(boolean on) { setting(() -> tools.tessellated = on); }
+
+    /** K of the tessellated mode (1..{@value org.beziertracer.geometry.Tessellator#MAX_SEGMENTS}). */
+    public void setTessellation(int k) {
+        if (k < 1 || k > org.beziertracer.geometry.Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("tessellation must be 1.." + org.beziertracer.geometry.Tessellator.MAX_SEGMENTS
+                    + ", got " + k);
+        }
+        setting(() -> tools.tessellation = k);
+    }
 
     // ------------------------------------------------------------------ files
 

@@ -24,7 +24,7 @@ public final class AppMenuBar extends JMenuBar {
                 "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "dark");
         JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", null,
-                "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh");
+                "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
         help.setMnemonic('H');
         JMenuItem aboutItem = new JMenuItem("About Bézier Tracer");

@@ -103,10 +103,12 @@ public final class RayTraceEngine implements PictureEngine {
     private void start(RenderRequest r) {
         long t0 = System.nanoTime();
         RenderSettings s = r.settings();
-        IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(s.method())).withBvh(s.bvh());
+        IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(s.method())).withBvh(s.bvh())
+                .withTessellate(r.tessellate());
         snapshot = update(snapshot, r.scene(), io);
         prepMillis = (System.nanoTime() - t0) / 1e6;
-        RenderOptions options = RenderOptions.defaults().withPassesPerFrame(Math.max(1, Math.min(16, r.passesPerFrame())));
+        RenderOptions options = RenderOptions.defaults().withPassesPerFrame(Math.max(1, Math.min(16, r.passesPerFrame())))
+                .withTessellate(r.tessellate());
         RenderJob job = new RenderJob(snapshot, new Camera(r.camera()), s, options);
         session.cancel();
         target = r.target();
@@ -146,11 +148,11 @@ public final class RayTraceEngine implements PictureEngine {
     }
 
     /** What must match for two frame times to be comparable: everything but the BVH switch. */
-    private record TimingKey(Scene scene, CameraSpec camera, RenderSettings settings) {
+    private record TimingKey(Scene scene, CameraSpec camera, RenderSettings settings, int tessellate) {
         static TimingKey of(RenderRequest r) {
             RenderSettings s = r.settings();
             return new TimingKey(r.scene(), r.camera(), new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
-                    s.method(), true, s.shading(), s.checker(), s.shadows(), s.maxDepth()));
+                    s.method(), true, s.shading(), s.checker(), s.shadows(), s.maxDepth()), r.tessellate());
         }
     }
 
@@ -188,7 +190,7 @@ public final class RayTraceEngine implements PictureEngine {
                 speedUp = millisBvhOff / millisBvhOn;
             }
             listener.accept(new RenderStatus(pass + 1, passCount, stats.millis(), stats.mraysPerSecond(),
-                    r.settings().spp(), r.settings().method(), r.settings().bvh(), speedUp, prepMillis));
+                    r.settings().spp(), r.settings().method(), r.settings().bvh(), speedUp, prepMillis, r.tessellate()));
         }
     }
 

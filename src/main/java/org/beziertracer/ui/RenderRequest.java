@@ -12,7 +12,13 @@ import org.beziertracer.model.Scene;
  * @param settings       size in device pixels, samples, method, BVH, shading, checker, shadows, depth
  * @param passesPerFrame progressive passes per displayed frame (the memoir's interactivity)
  * @param target         the picture to paint into; its size equals the settings' size
+ * @param tessellate     0: exact Bézier intersection; {@code K ≥ 1}: a uniform K×K triangle mesh per patch
  */
 public record RenderRequest(Scene scene, CameraSpec camera, RenderSettings settings, int passesPerFrame,
-                            FrameBuffer target) {
+                            FrameBuffer target, int tessellate) {
+
+    /** An exact (not tessellated) render. */
+    public RenderRequest(Scene scene, CameraSpec camera, RenderSettings settings, int passesPerFrame, FrameBuffer target) {
+        this(scene, camera, settings, passesPerFrame, target, 0);
+    }
 }

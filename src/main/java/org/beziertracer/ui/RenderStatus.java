@@ -14,7 +14,8 @@ package org.beziertracer.ui;
  * @param bvhSpeedUp     measured frame time without the BVH divided by the time with it, for the
  *                       same picture; 0 when not measured yet
  * @param prepMillis     time to re-split and refit (or build) the scene snapshot
+ * @param tessellate     0: exact; {@code K ≥ 1}: rendered as a K×K triangle mesh per patch
  */
 public record RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, String method,
-                           boolean bvh, double bvhSpeedUp, double prepMillis) {
+                           boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate) {
 }

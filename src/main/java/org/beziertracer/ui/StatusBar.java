@@ -20,7 +20,7 @@ public final class StatusBar extends JPanel {
     private final JLabel rays = label("millions of rays per second");
     private final JLabel pass = label("progressive pass finished / passes per frame");
     private final JLabel spp = label("samples per pixel");
-    private final JLabel method = label("intersection method");
+    private final JLabel method = label("intersection method, or \"tessellated K\" when the surface is rendered as K×K triangles per patch");
     private final JLabel bvh = label("sub-patch BVH and its measured speed-up over whole patches");
     private final JLabel model = label("patches and control points of the model");
     private final JLabel message = label("last action");
@@ -38,6 +38,7 @@ public final class StatusBar extends JPanel {
         frame.setName("status.frame");
         pass.setName("status.pass");
         bvh.setName("status.bvh");
+        method.setName("status.method");
         message.setName("status.message");
         c.addListener(this::refresh);
         refresh();
@@ -62,7 +63,7 @@ public final class StatusBar extends JPanel {
             pass.setText("pass " + s.pass() + " of " + s.passCount());
         }
         spp.setText((t.superSampling ? t.samplesPerPixel : 1) + " spp");
-        method.setText(t.method.label());
+        method.setText(t.intersectionLabel());
         String speedUp = s != null && s.bvhSpeedUp() > 0 ? String.format(Locale.ROOT, " ×%.1f", s.bvhSpeedUp()) : "";
         bvh.setText(t.bvh ? "BVH on" + speedUp : "BVH off" + speedUp);
         int points = 0;
@@ -80,6 +81,7 @@ public final class StatusBar extends JPanel {
             case "frame" -> frame.getText();
             case "pass" -> pass.getText();
             case "bvh" -> bvh.getText();
+            case "method" -> method.getText();
             default -> message.getText();
         };
     }

@@ -13,6 +13,14 @@ public final class ToolSettings {
     public static final int[] SPP_CHOICES = {4, 9, 16};
     /** Checker squares per unit of (u,v) when the texture is on. */
     public static final int CHECKER_SQUARES = 8;
+    /** Cells per patch side offered by the tessellated mode (K×K cells, two triangles each). */
+    public static final int[] TESSELLATION_CHOICES = {4, 8, 16, 32, 64};
+    /**
+     * Default K: the first offered choice whose teapot silhouette stays within 0.5 px of the exact
+     * one at 800×600 (0.32 px; the smallest such K is 15; docs/performance.md, "Exact vs
+     * tessellated at equal accuracy").
+     */
+    public static final int DEFAULT_TESSELLATION = 16;
 
     public boolean rayTrace = true;
     public boolean controlPolygon = true;
@@ -32,6 +40,10 @@ public final class ToolSettings {
     public int perspective = 36;
     public Method method = Method.CLIPPING;
     public boolean bvh = true;
+    /** Render a uniform {@link #tessellation}² triangle mesh per patch instead of the exact surface. */
+    public boolean tessellated;
+    /** K of the tessellated mode, one of {@link #TESSELLATION_CHOICES}. */
+    public int tessellation = DEFAULT_TESSELLATION;
     public boolean shadows = true;
     public boolean reflections = true;
     public LightPlacement light = LightPlacement.SCENE;
@@ -47,6 +59,16 @@ public final class ToolSettings {
     /** Slider position of a field of view (inverse of {@link #fovDegrees()}). */
     public static int perspectiveOf(double fovDegrees) {
         return (int) Math.round(fovDegrees * 100 / OrbitView.MAX_FOV_DEGREES);
+    }
+
+    /** 0 (exact) or the K of the tessellated mode, for the render request. */
+    public int tessellate() {
+        return tessellated ? tessellation : 0;
+    }
+
+    /** What the status bar shows for the intersection: the method, or "tessellated K". */
+    public String intersectionLabel() {
+        return tessellated ? "tessellated " + tessellation : method.label();
     }
 
     /** Shading label for the renderer. */

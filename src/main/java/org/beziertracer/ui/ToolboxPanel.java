@@ -39,6 +39,8 @@ public final class ToolboxPanel extends JPanel {
     private final JSpinner gridV;
     private final JComboBox<Integer> spp = new JComboBox<>(new Integer[] {4, 9, 16});
     private final JComboBox<Method> method = new JComboBox<>(Method.values());
+    private final JComboBox<Integer> tessellation = new JComboBox<>(
+            java.util.Arrays.stream(ToolSettings.TESSELLATION_CHOICES).boxed().toArray(Integer[]::new));
     private final JComboBox<LightPlacement> light = new JComboBox<>(LightPlacement.values());
 
     public ToolboxPanel(AppController controller, AppActions actions) {
@@ -99,6 +101,10 @@ public final class ToolboxPanel extends JPanel {
         quality.add(labelled("Interactivity", interactivity));
         quality.add(labelled("Method", combo(method, "method", "Ray–patch intersection method")));
         quality.add(check("bvh"));
+        quality.add(check("tessellated"));
+        quality.add(labelled("K (cells per side)", combo(tessellation, "tessellation",
+                "Tessellated mode: K×K cells per patch, two triangles each")));
+        tessellation.addActionListener(e -> onInt(c::setTessellation, (Integer) tessellation.getSelectedItem()));
         spp.addActionListener(e -> onInt(v -> c.setting(() -> t.samplesPerPixel = v), (Integer) spp.getSelectedItem()));
         method.addActionListener(e -> onInt(v -> c.setMethod(Method.values()[v]), method.getSelectedIndex()));
         interactivity.addChangeListener(e -> onInt(v -> c.setting(() -> t.interactivity = v), interactivity.getValue()));
@@ -132,6 +138,8 @@ public final class ToolboxPanel extends JPanel {
             spp.setSelectedItem(t.samplesPerPixel);
             spp.setEnabled(t.superSampling);
             method.setSelectedItem(t.method);
+            tessellation.setSelectedItem(t.tessellation);
+            tessellation.setEnabled(t.tessellated);
             light.setSelectedItem(t.light);
         } finally {
             syncing = false;
@@ -181,6 +189,7 @@ public final class ToolboxPanel extends JPanel {
         String key = switch (id) {
             case "light" -> shortcut("light");
             case "spp" -> shortcut("spp");
+            case "tessellation" -> shortcut("tessellation");
             default -> shortcut("method");
         };
         box.setToolTipText(tip + " (" + key + ")");

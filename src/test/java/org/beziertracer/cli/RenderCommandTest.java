@@ -69,6 +69,38 @@ class RenderCommandTest {
     }
 
     @Test
+    void tessellateRendersTheTriangleMeshAndReportsKInTheStats() throws IOException {
+        Path exact = dir.resolve("exact.png"), mesh = dir.resolve("mesh.png");
+        Run e = run("render", "teapot", "-o", exact.toString(), "--size", "80x60", "--stats", "--threads", "1");
+        Run t = run("render", "teapot", "-o", mesh.toString(), "--size", "80x60", "--stats", "--threads", "1",
+                "--tessellate", "16");
+        assertEquals(0, e.code(), e.err());
+        assertEquals(0, t.code(), t.err());
+        JsonObject je = JsonParser.parseString(e.out().strip()).getAsJsonObject();
+        JsonObject jt = JsonParser.parseString(t.out().strip()).getAsJsonObject();
+        assertEquals(0, je.get("tessellate").getAsInt(), "exact by default");
+        assertEquals(0, je.get("triangles").getAsInt());
+        assertEquals(16, jt.get("tessellate").getAsInt());
+        assertEquals(32 * 16 * 16 * 2, jt.get("triangles").getAsInt(), "teapot: 32 patches, 2 triangles per cell");
+        assertEquals(je.get("primaryRays").getAsLong(), jt.get("primaryRays").getAsLong());
+        BufferedImage a = ImageIO.read(exact.toFile()), b = ImageIO.read(mesh.toFile());
+        int differing = 0, covered = 0;
+        for (int y = 0; y < 60; y++) {
+            for (int x = 0; x < 80; x++) {
+                int pa = a.getRGB(x, y), pb = b.getRGB(x, y);
+                if (pa != a.getRGB(0, 0)) {
+                    covered++;
+                }
+                if (Math.abs((pa & 0xff) - (pb & 0xff)) > 24) {
+                    differing++;
+                }
+            }
+        }
+        assertTrue(covered > 500, "the teapot covers the frame: " + covered);
+        assertTrue(differing < covered / 20, "K = 16 looks like the exact teapot: " + differing + " of " + covered);
+    }
+
+    @Test
     void pixelTracePrintsRaysHitsAndTerms() {
         Run r = run("render", "teapot", "--size", "80x60", "--pixel", "40,30");
         assertEquals(0, r.code(), r.err());
@@ -91,6 +123,9 @@ class RenderCommandTest {
                 {"render", "nosuchmodel.bpt", "-o", out},
                 {"render", "teapot", "-o", dir.resolve("missing/dir/x.png").toString(), "--size", "8x8"},
                 {"render", "teapot"},
+                {"render", "teapot", "-o", out, "--tessellate", "-1"},
+                {"render", "teapot", "-o", out, "--tessellate", "1025"},
+                {"render", "teapot", "-o", out, "--tessellate", "1000"},
         };
         for (String[] args : cases) {
             Run r = run(args);

@@ -150,6 +150,26 @@ class AppControllerTest {
     }
 
     @Test
+    void tessellatedModeReachesTheRenderRequestAndTheStatusLabel() {
+        RenderRequest exact = engine.requests.get(engine.requests.size() - 1);
+        assertEquals(0, exact.tessellate(), "exact by default");
+        assertEquals("clipping", c.tools().intersectionLabel());
+        c.setTessellated(true);
+        RenderRequest r = engine.requests.get(engine.requests.size() - 1);
+        assertEquals(ToolSettings.DEFAULT_TESSELLATION, r.tessellate());
+        assertEquals("tessellated " + ToolSettings.DEFAULT_TESSELLATION, c.tools().intersectionLabel());
+        c.setTessellation(8);
+        r = engine.requests.get(engine.requests.size() - 1);
+        assertEquals(8, r.tessellate());
+        assertEquals("tessellated 8", c.tools().intersectionLabel());
+        assertEquals(exact.settings(), r.settings(), "same method, BVH and shading: only the surface changes");
+        c.setTessellated(false);
+        assertEquals(0, engine.requests.get(engine.requests.size() - 1).tessellate());
+        assertEquals(8, c.tools().tessellation, "K is kept for the next time the mode is on");
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.setTessellation(0));
+    }
+
+    @Test
     void randomizeShowsItsSeedAndResetFlattens() {
         c.randomizeControlPoints(1234);
         assertTrue(c.message().contains("1234"), c.message());

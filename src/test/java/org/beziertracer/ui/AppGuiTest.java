@@ -239,6 +239,37 @@ class AppGuiTest {
         d.settle();
         String bvh = GuiDriver.onEdt(() -> d.frame.statusBar().text("bvh"));
         assertTrue(bvh.matches("BVH on ×\\d+\\.\\d"), "measured speed-up after off → on: " + bvh);
+
+        // Tessellated mode: on a curved (randomized) patch a coarse K = 4 mesh differs visibly from the
+        // exact surface; the status names it
+        GuiDriver.onEdt(() -> d.c.randomizeControlPoints(1234));
+        d.settle();
+        BufferedImage exact = d.capturePanel();
+        assertEquals("clipping", GuiDriver.onEdt(() -> d.frame.statusBar().text("method")));
+        javax.swing.JComboBox<?> kBox = d.find("tool.tessellation");
+        assertFalse(GuiDriver.onEdt(kBox::isEnabled),
+                "K is only offered in tessellated mode");
+        d.click(d.find("tool.tessellated"));
+        d.settle();
+        assertTrue(t.tessellated);
+        assertEquals(ToolSettings.DEFAULT_TESSELLATION, d.c.status().tessellate(), "the render used the mesh");
+        assertEquals("tessellated " + ToolSettings.DEFAULT_TESSELLATION,
+                GuiDriver.onEdt(() -> d.frame.statusBar().text("method")));
+        assertTrue(GuiDriver.onEdt(kBox::isEnabled));
+        GuiDriver.onEdt(() -> d.c.setTessellation(4));
+        d.settle();
+        assertEquals(4, d.c.status().tessellate());
+        assertEquals("tessellated 4", GuiDriver.onEdt(() -> d.frame.statusBar().text("method")));
+        Rectangle all = new Rectangle(0, 0, exact.getWidth(), exact.getHeight());
+        int facets = GuiDriver.differing(exact, d.capturePanel(), all, 6);
+        assertTrue(facets > 20, "K = 4 facets differ from the exact surface: " + facets + " pixels");
+        d.key(KeyEvent.VK_K, KeyEvent.VK_CONTROL);
+        d.settle();
+        assertFalse(t.tessellated, "Ctrl+K toggles the tessellated mode");
+        assertEquals(0, d.c.status().tessellate());
+        assertEquals("clipping", GuiDriver.onEdt(() -> d.frame.statusBar().text("method")));
+        GuiDriver.onEdt(() -> d.c.setting(() -> t.tessellation = ToolSettings.DEFAULT_TESSELLATION));
+        d.settle();
     }
 
     @Test

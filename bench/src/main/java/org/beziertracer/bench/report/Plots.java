@@ -30,7 +30,9 @@ import com.google.gson.JsonParser;
  * Bar charts from JMH JSON results (plain Java 2D, written as PNG). One chart per input file:
  * a bar per (benchmark method, parameter set), the primary score with its 99.9 % error as a
  * whisker (clipped at the chart's edge, 1.3× the largest bar). With {@code --rays}, time per ray ({@code ns/op}) is converted to millions of rays per
- * second (the error interval converted end to end).
+ * second (the error interval converted end to end). Sample-time results ({@code -bm sample}, e.g.
+ * {@code FrameBench}) are drawn as the <b>median</b> with a whisker from the fastest sample to the
+ * 90th percentile (JMH's percentiles), since the mean of a noisy shared machine is skewed.
  *
  * <pre>
  * java -cp bench/target/benchmarks.jar org.beziertracer.bench.report.Plots \
@@ -91,6 +93,14 @@ public final class Plots {
                 }
             }
             JsonObject primary = run.getAsJsonObject("primaryMetric");
+            if ("sample".equals(run.has("mode") ? run.get("mode").getAsString() : "")
+                    && primary.has("scorePercentiles") && !rays) {
+                JsonObject pc = primary.getAsJsonObject("scorePercentiles");
+                unit = primary.get("scoreUnit").getAsString();
+                bars.add(new Bar(label.toString(), pc.get("50.0").getAsDouble(), pc.get("0.0").getAsDouble(),
+                        pc.get("90.0").getAsDouble()));
+                continue;
+            }
             double score = primary.get("score").getAsDouble();
             double err = primary.get("scoreError").isJsonPrimitive()
                     && !Double.isNaN(primary.get("scoreError").getAsDouble()) ? primary.get("scoreError").getAsDouble() : 0;

@@ -20,7 +20,9 @@ import com.google.gson.JsonParser;
 /**
  * Markdown table of JMH JSON results: per (benchmark, params) the mean ± 99.9 % error, the
  * median and minimum of the measurement iterations, and, for time per ray, the median in rays/s.
- * The median resists the noise of a shared machine better than the mean.
+ * The median resists the noise of a shared machine better than the mean. Sample-time results
+ * ({@code FrameBench}) take median and minimum from JMH's percentiles, and the last column is
+ * frames (ops) per second at the median.
  * <pre>java -cp bench/target/benchmarks.jar org.beziertracer.bench.report.Summary bench/results/scene.json</pre>
  */
 public final class Summary {
@@ -48,6 +50,17 @@ public final class Summary {
                 JsonObject pm = run.getAsJsonObject("primaryMetric");
                 String unit = pm.get("scoreUnit").getAsString();
                 List<Double> raw = new ArrayList<>();
+                if (!pm.has("rawData") && pm.has("scorePercentiles")) {
+                    // Sample-time mode: JMH keeps a histogram; its percentiles give median and min
+                    JsonObject pc = pm.getAsJsonObject("scorePercentiles");
+                    double err = pm.get("scoreError").getAsDouble();
+                    double median = pc.get("50.0").getAsDouble();
+                    System.out.printf(Locale.ROOT, "| %s | %s | %.4g ± %.2g %s | %.4g | %.4g | %s | %s |%n", name,
+                            params.toString().replaceAll("[{}]", ""), pm.get("score").getAsDouble(),
+                            Double.isNaN(err) ? 0 : err, unit, median, pc.get("0.0").getAsDouble(),
+                            String.format(Locale.ROOT, "%,.1f", unitsPerSecond(unit) / median), "");
+                    continue;
+                }
                 for (JsonElement fork : pm.getAsJsonArray("rawData")) {
                     for (JsonElement x : fork.getAsJsonArray()) {
                         raw.add(x.getAsDouble());
@@ -69,5 +82,16 @@ public final class Summary {
             }
             System.out.println();
         }
+    }
+
+    /** Operations per second for a score of 1 in {@code unit} (time per op units only). */
+    private static double unitsPerSecond(String unit) {
+        return switch (unit) {
+            case "ns/op" -> 1e9;
+            case "us/op" -> 1e6;
+            case "ms/op" -> 1e3;
+            case "s/op" -> 1;
+            default -> Double.NaN;
+        };
     }
 }
