@@ -132,6 +132,9 @@ final class RenderCommand implements Callable<Integer> {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
+        if (output != null && !output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png")) {
+            throw new IllegalArgumentException(output + ": the output must be a .png file");
+        }
         if (repeat < 1 || repeat > MAX_REPEAT) {
             throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
         }

@@ -113,6 +113,7 @@ class RenderCommandTest {
     void absurdOrBadInputIsOneErrorLineAndExitCodeOne() {
         String out = dir.resolve("x.png").toString();
         String[][] cases = {
+                {"render", "teapot", "-o", dir.resolve("x.txt").toString()},
                 {"render", "teapot", "-o", out, "--size", "100000x100000"},
                 {"render", "teapot", "-o", out, "--spp", "0"},
                 {"render", "teapot", "-o", out, "--shading", "toon"},
