@@ -212,41 +212,31 @@ final class BezierClipper {
             lo[c] = Double.POSITIVE_INFINITY;
             hi[c] = Double.NEGATIVE_INFINITY;
         }
-        for (int j = 0, p = base; j <= m; j++) {
-            for (int i = 0; i <= n; i++, p += 3) {
-                double dist = lx * net[p + 1] - ly * net[p];
-                int c = alongU ? i : j;
-                if (dist < lo[c]) lo[c] = dist;
-                if (dist > hi[c]) hi[c] = dist;
+        if (alongU) {
+            for (int j = 0, p = base; j <= m; j++) {
+                for (int i = 0; i <= n; i++, p += 3) {
+                    double dist = lx * net[p + 1] - ly * net[p];
+                    if (dist < lo[i]) lo[i] = dist;
+                    if (dist > hi[i]) hi[i] = dist;
+                }
+            }
+        } else {
+            for (int j = 0, p = base; j <= m; j++) {
+                double rowLo = Double.POSITIVE_INFINITY, rowHi = Double.NEGATIVE_INFINITY;
+                for (int i = 0; i <= n; i++, p += 3) {
+                    double dist = lx * net[p + 1] - ly * net[p];
+                    if (dist < rowLo) rowLo = dist;
+                    if (dist > rowHi) rowHi = dist;
+                }
+                lo[j] = rowLo;
+                hi[j] = rowHi;
             }
         }
         // Where the convex hull of the points (c/deg, distance) meets zero
-        double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
-        double invDeg = 1.0 / deg;
-        for (int c = 0; c <= deg; c++) {
-            double xc = c * invDeg;
-            if (lo[c] <= eps && hi[c] >= -eps) {
-                if (xc < a) a = xc;
-                if (xc > b) b = xc;
-            }
-            for (int e = c + 1; e <= deg; e++) {
-                double xe = e * invDeg;
-                for (int sc = 0; sc < 2; sc++) {
-                    double yc = sc == 0 ? lo[c] : hi[c];
-                    for (int se = 0; se < 2; se++) {
-                        double ye = se == 0 ? lo[e] : hi[e];
-                        if ((yc < 0 && ye > 0) || (yc > 0 && ye < 0)) {
-                            double x = xc + (xe - xc) * (yc / (yc - ye));
-                            if (x < a) a = x;
-                            if (x > b) b = x;
-                        }
-                    }
-                }
-            }
-        }
-        if (!(a <= b)) {
+        if (!HullClip.zeroInterval(lo, hi, deg, eps, ctx.clip)) {
             return false;
         }
+        double a = ctx.clip[0], b = ctx.clip[1];
         ctx.clip[0] = Math.max(0, a - WIDEN);
         ctx.clip[1] = Math.min(1, b + WIDEN);
         return true;
