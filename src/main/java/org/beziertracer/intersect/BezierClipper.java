@@ -35,6 +35,10 @@ final class BezierClipper {
     static final double WIDEN = 1e-10;
     /** Cap on clip steps per leaf. */
     static final int MAX_STEPS = 400;
+    /** Newton attempts per leaf on pieces proven to hold at most one root ({@link RootUniqueness}). */
+    static final int MAX_NEWTON_TRIES = 2;
+    /** Iteration cap of such an attempt; a failed attempt falls back to clipping. */
+    static final int NEWTON_STEPS = 8;
     /** A piece whose ray-space extent is below this fraction of the leaf size is a root candidate. */
     static final double CONVERGED_EXTENT = 1e-7;
     /** ... or whose parameter box (local to the leaf) is this narrow in both directions. */
@@ -62,7 +66,7 @@ final class BezierClipper {
         double best = tMax;
         boolean found = false;
         double bestU = 0, bestV = 0;
-        int steps = 0;
+        int steps = 0, newtonTries = 0;
         double invLength = ctx.invLength;
 
         while (sp > 0) {
@@ -125,7 +129,23 @@ final class BezierClipper {
                 v0 = v0 + dv * a;
             }
             boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
-            if (keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD) {
+            boolean stalled = keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD;
+            if (!stalled && newtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                // At most one root in this piece: Newton on the parent, confined to the piece, finds it
+                newtonTries++;
+                if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * u0, leafU0 + leafDu * u1,
+                        leafV0 + leafDv * v0, leafV0 + leafDv * v1, tolerance)) {
+                    if (ctx.rootT > tMin && ctx.rootT < best) {
+                        best = ctx.rootT;
+                        bestU = ctx.rootU;
+                        bestV = ctx.rootV;
+                        found = true;
+                    }
+                    sp--; // the piece's only root is known, whatever its t
+                    continue;
+                }
+            }
+            if (stalled) {
                 if (sp == TraceContext.MAX_ENTRIES) {
                     sp--; // stack full: drop this piece (bounded work)
                     continue;
@@ -140,6 +160,22 @@ final class BezierClipper {
             ctx.rootV = bestV;
         }
         return found;
+    }
+
+    /**
+     * Newton on parent patch {@code k} from the centre of the piece's parameter box
+     * {@code [u0,u1]×[v0,v1]}, every iterate confined to that box; true when it converged (the
+     * root is then in {@code ctx.root*} and lies in the piece), refined by one more step so it is
+     * as exact as the polish of a fully clipped piece.
+     */
+    static boolean newtonInPiece(TraceContext ctx, SubPatchTable tab, int k, double u0, double u1,
+                                 double v0, double v1, double tolerance) {
+        if (RayPatchNewton.solve(ctx, tab, k, 0.5 * (u0 + u1), 0.5 * (v0 + v1), NEWTON_STEPS,
+                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
+            return false;
+        }
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1);
+        return true;
     }
 
     /** Diagonal of the leaf's control box. */
