@@ -89,6 +89,12 @@ final class DeCasteljau3 {
      */
     static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v,
                                         double[] out, int outOff, double[] scratch, int scratchOff) {
+        if (n == 3 && m == 3) {
+            for (int c = 0; c < 3; c++) {
+                bicubicWithDerivatives(net, off + c, u, v, out, outOff + c);
+            }
+            return;
+        }
         final int dim = 3, rowStride = (n + 1) * dim;
         int work = scratchOff;
         int colA = scratchOff + DeCasteljau.MAX_ORDER * dim;
@@ -137,5 +143,50 @@ final class DeCasteljau3 {
             out[outOff + dim + c] = n * (hi - lo);
             out[outOff + 2 * dim + c] = m * (su * (b01 - b00) + u * (b11 - b10));
         }
+    }
+
+    /**
+     * One coordinate of a bicubic net (points 3 doubles apart, rows 12) at {@code (u,v)}: value,
+     * {@code ∂/∂u} and {@code ∂/∂v} into {@code out[o]}, {@code out[o+3]}, {@code out[o+6]}; the
+     * same operations as the generic path, on locals.
+     */
+    private static void bicubicWithDerivatives(double[] p, int o, double u, double v, double[] out, int oo) {
+        double su = 1 - u;
+        // Every row in u down to level 2: a_j = b_0^2, b_j = b_1^2 of row j
+        double a0, a1, a2, a3, b0, b1, b2, b3;
+        {
+            double l0 = su * p[o] + u * p[o + 3], l1 = su * p[o + 3] + u * p[o + 6], l2 = su * p[o + 6] + u * p[o + 9];
+            a0 = su * l0 + u * l1;
+            b0 = su * l1 + u * l2;
+        }
+        {
+            int r = o + 12;
+            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            a1 = su * l0 + u * l1;
+            b1 = su * l1 + u * l2;
+        }
+        {
+            int r = o + 24;
+            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            a2 = su * l0 + u * l1;
+            b2 = su * l1 + u * l2;
+        }
+        {
+            int r = o + 36;
+            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            a3 = su * l0 + u * l1;
+            b3 = su * l1 + u * l2;
+        }
+        // Both columns in v down to level 2
+        double sv = 1 - v;
+        double ca0 = sv * a0 + v * a1, ca1 = sv * a1 + v * a2, ca2 = sv * a2 + v * a3;
+        double cb0 = sv * b0 + v * b1, cb1 = sv * b1 + v * b2, cb2 = sv * b2 + v * b3;
+        double b00 = sv * ca0 + v * ca1, b01 = sv * ca1 + v * ca2;
+        double b10 = sv * cb0 + v * cb1, b11 = sv * cb1 + v * cb2;
+        double lo = sv * b00 + v * b01;
+        double hi = sv * b10 + v * b11;
+        out[oo] = su * lo + u * hi;
+        out[oo + 3] = 3 * (hi - lo);
+        out[oo + 6] = 3 * (su * (b01 - b00) + u * (b11 - b10));
     }
 }
