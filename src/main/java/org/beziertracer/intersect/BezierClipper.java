@@ -101,6 +101,37 @@ final class BezierClipper {
                 continue;
             }
             ctx.clipIterations++;
+            if (steps == 1) {
+                // The whole leaf: clip both directions on the unrestricted net (both
+                // intervals hold every root of the leaf)
+                if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
+                    sp--;
+                    continue;
+                }
+                double a = ctx.clip[0], b = ctx.clip[1];
+                if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
+                    sp--;
+                    continue;
+                }
+                double c = ctx.clip[0], d = ctx.clip[1];
+                if (RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                    // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
+                    // no restriction needed
+                    newtonTries++;
+                    if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * a, leafU0 + leafDu * b,
+                            leafV0 + leafDv * c, leafV0 + leafDv * d, tolerance)) {
+                        return ctx.rootT > tMin && ctx.rootT < tMax;
+                    }
+                }
+                if (b - a < 1) {
+                    DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+                }
+                if (d - c < 1) {
+                    DeCasteljau.restrictV(arena, base, n, m, 3, c, d);
+                }
+                boxes[b4] = a; boxes[b4 + 1] = b; boxes[b4 + 2] = c; boxes[b4 + 3] = d;
+                continue;
+            }
             // Clip in u
             if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
                 sp--;
