@@ -1,6 +1,7 @@
 package org.beziertracer.geometry;
 
 import java.util.List;
+import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
 import org.beziertracer.model.BezierPatch;
@@ -23,6 +24,9 @@ import org.beziertracer.model.BezierPatch;
  * pieces are reused.
  */
 public final class SubPatchTable {
+
+    /** Scenes with at least this many patches are split in parallel. */
+    static final int PARALLEL_PATCHES = 64;
 
     private final List<BezierPatch> patches;
     private final PatchPieces[] pieces;
@@ -101,9 +105,10 @@ public final class SubPatchTable {
     /** Splits every patch. */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
         PatchPieces[] pieces = new PatchPieces[patches.size()];
-        for (int k = 0; k < pieces.length; k++) {
-            pieces[k] = PatchSplitter.split(patches.get(k), options);
-        }
+        // Patches split independently; large scenes use the common fork-join pool (build time only)
+        IntStream range = IntStream.range(0, pieces.length);
+        (pieces.length >= PARALLEL_PATCHES ? range.parallel() : range)
+                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options));
         return new SubPatchTable(patches, pieces, options);
     }
 
