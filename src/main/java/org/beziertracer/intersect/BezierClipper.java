@@ -205,7 +205,7 @@ final class BezierClipper {
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
             return false;
         }
-        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1);
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
         return true;
     }
 

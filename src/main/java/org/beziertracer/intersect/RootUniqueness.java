@@ -29,23 +29,23 @@ final class RootUniqueness {
         double f2uLo = Double.POSITIVE_INFINITY, f2uHi = Double.NEGATIVE_INFINITY;
         double f1vLo = Double.POSITIVE_INFINITY, f1vHi = Double.NEGATIVE_INFINITY;
         double f2vLo = Double.POSITIVE_INFINITY, f2vHi = Double.NEGATIVE_INFINITY;
+        // Differences along u (hodograph in u) ...
         for (int j = 0; j <= m; j++) {
-            for (int i = 0, p = base + j * row; i <= n; i++, p += 3) {
-                if (i < n) {
-                    double d1 = net[p + 3] - net[p], d2 = net[p + 4] - net[p + 1];
-                    if (d1 < f1uLo) f1uLo = d1;
-                    if (d1 > f1uHi) f1uHi = d1;
-                    if (d2 < f2uLo) f2uLo = d2;
-                    if (d2 > f2uHi) f2uHi = d2;
-                }
-                if (j < m) {
-                    double d1 = net[p + row] - net[p], d2 = net[p + row + 1] - net[p + 1];
-                    if (d1 < f1vLo) f1vLo = d1;
-                    if (d1 > f1vHi) f1vHi = d1;
-                    if (d2 < f2vLo) f2vLo = d2;
-                    if (d2 > f2vHi) f2vHi = d2;
-                }
+            for (int i = 0, p = base + j * row; i < n; i++, p += 3) {
+                double d1 = net[p + 3] - net[p], d2 = net[p + 4] - net[p + 1];
+                if (d1 < f1uLo) f1uLo = d1;
+                if (d1 > f1uHi) f1uHi = d1;
+                if (d2 < f2uLo) f2uLo = d2;
+                if (d2 > f2uHi) f2uHi = d2;
             }
+        }
+        // ... and along v
+        for (int p = base, end = base + m * row; p < end; p += 3) {
+            double d1 = net[p + row] - net[p], d2 = net[p + row + 1] - net[p + 1];
+            if (d1 < f1vLo) f1vLo = d1;
+            if (d1 > f1vHi) f1vHi = d1;
+            if (d2 < f2vLo) f2vLo = d2;
+            if (d2 > f2vHi) f2vHi = d2;
         }
         // [f1u]·[f2v] − [f1v]·[f2u] must exclude zero
         double aLo = productLo(f1uLo, f1uHi, f2vLo, f2vHi), aHi = productHi(f1uLo, f1uHi, f2vLo, f2vHi);
