@@ -48,6 +48,8 @@ public final class SubPatchTable {
     /** Degrees of patch {@code k}. */
     public final int[] patchDegreeU;
     public final int[] patchDegreeV;
+    /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
+    public final double[] patchSquaredExtent;
 
     private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, SplitOptions options) {
         this.patches = List.copyOf(patches);
@@ -64,8 +66,11 @@ public final class SubPatchTable {
             patchDoubles += pieces[k].netLength();
         }
         patchNets = new double[patchDoubles];
+        patchSquaredExtent = new double[pieces.length];
         for (int k = 0; k < pieces.length; k++) {
             this.patches.get(k).copyNetInto(patchNets, patchNetOffset[k]);
+            patchSquaredExtent[k] = PatchNormals.squaredExtent(patchNets, patchNetOffset[k],
+                    patchDegreeU[k], patchDegreeV[k]);
         }
         int total = 0;
         int doubles = 0;
