@@ -17,6 +17,12 @@ import org.beziertracer.geometry.SubPatchTable;
  * ray origin is visited first. When the remaining piece is tiny, a few Newton steps on the parent
  * patch give the root to full double precision.
  *
+ * <p>Shortcut: when a clipped piece provably holds at most one root ({@link RootUniqueness}),
+ * Newton on the parent patch, confined to the piece's parameter box, finds that root directly
+ * and the piece is settled (its only root is known, so nothing nearer can hide in it); a failed
+ * attempt falls back to clipping. On a leaf's first visit both clips run on the unrestricted net,
+ * so a leaf with a unique root needs no de Casteljau restriction at all.
+ *
  * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
  * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a
  * small margin, the work per leaf is capped, every candidate in {@code (tMin, tMax)} is kept and
