@@ -81,6 +81,10 @@ public final class DeCasteljau {
      */
     public static void evaluateWithDerivatives(double[] net, int off, int n, int m, int dim, double u, double v,
                                                double[] out, int outOff, double[] scratch, int scratchOff) {
+        if (dim == 3) {
+            DeCasteljau3.evaluateWithDerivatives(net, off, n, m, u, v, out, outOff, scratch, scratchOff);
+            return;
+        }
         int rowStride = (n + 1) * dim;
         int colA = scratchOff + MAX_ORDER * dim; // b_{0,j} of level n-1 in u, j = 0..m
         int colB = colA + MAX_ORDER * dim;       // b_{1,j}
@@ -281,6 +285,10 @@ public final class DeCasteljau {
             for (int k = 1; k <= deg; k++) {
                 copyPoint(p, off, p, off + k * stride, dim);
             }
+            return;
+        }
+        if (dim == 3) {
+            DeCasteljau3.restrictCurve(p, off, stride, deg, a, b);
             return;
         }
         if (b < 1) {

@@ -67,7 +67,17 @@ public final class PatchNormals {
      */
     public static void unitNormal(double[] net, int off, int n, int m, double u, double v, double[] deriv,
                                   double[] out, int outOff, double[] scratch) {
-        double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent(net, off, n, m);
+        unitNormal(net, off, n, m, u, v, deriv, squaredExtent(net, off, n, m), out, outOff, scratch);
+    }
+
+    /**
+     * As {@link #unitNormal(double[], int, int, int, double, double, double[], double[], int,
+     * double[])} with the net's {@link #squaredExtent} computed once by the caller (it is a
+     * property of the patch, not of the point).
+     */
+    public static void unitNormal(double[] net, int off, int n, int m, double u, double v, double[] deriv,
+                                  double squaredExtent, double[] out, int outOff, double[] scratch) {
+        double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent;
         double ux = deriv[3], uy = deriv[4], uz = deriv[5];
         double vx = deriv[6], vy = deriv[7], vz = deriv[8];
         if (!store(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx, threshold, out, outOff)) {
@@ -130,7 +140,7 @@ public final class PatchNormals {
     }
 
     /** Square of the largest extent of the control-point box. */
-    private static double squaredExtent(double[] net, int off, int n, int m) {
+    public static double squaredExtent(double[] net, int off, int n, int m) {
         double ext = 0;
         int count = (n + 1) * (m + 1);
         for (int c = 0; c < 3; c++) {

@@ -12,7 +12,7 @@ import org.beziertracer.model.BezierPatch;
  * subdivision surfaces with Bézier clipping", JCGT 4(1), 2015 (pre-subdivision of patches).
  *
  * <p>Each step halves the parametric direction whose control polygon is longer. Run at build
- * time only (allocates).
+ * time only (allocates a few arrays per patch, none per halving).
  */
 public final class PatchSplitter {
     private PatchSplitter() {}
@@ -25,33 +25,59 @@ public final class PatchSplitter {
             return new PatchPieces(n, m, 1, net, new double[] {0, 1, 0, 1});
         }
         Builder out = new Builder(len);
-        recurse(net, n, m, 0, 1, 0, 1, 0, options, out);
+        new Recursion(n, m, options, out).run(net);
         return new PatchPieces(n, m, out.count, Arrays.copyOf(out.nets, out.count * len),
                 Arrays.copyOf(out.boxes, out.count * 4));
     }
 
-    private static void recurse(double[] net, int n, int m, double u0, double u1, double v0, double v1,
-                                int depth, SplitOptions options, Builder out) {
-        double[] box = new double[6];
-        Bounds.ofPoints(net, 0, (n + 1) * (m + 1), box);
-        double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
-        double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (depth >= options.maxDepth()
-                || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
-            out.add(net, u0, u1, v0, v1);
-            return;
+    /**
+     * The depth-first halving with all working memory allocated once per patch: level
+     * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
+     * the lower half's subtree uses deeper levels.
+     */
+    private static final class Recursion {
+        final int n, m, len;
+        final SplitOptions options;
+        final Builder out;
+        final double[][] lo, hi;
+        final double[] box = new double[6];
+
+        Recursion(int n, int m, SplitOptions options, Builder out) {
+            this.n = n;
+            this.m = m;
+            this.len = (n + 1) * (m + 1) * 3;
+            this.options = options;
+            this.out = out;
+            int levels = options.maxDepth() + 1;
+            lo = new double[levels][len];
+            hi = new double[levels][len];
         }
-        double[] lo = new double[net.length], hi = new double[net.length];
-        if (polygonLength(net, n, m, true) >= polygonLength(net, n, m, false)) {
-            double um = 0.5 * (u0 + u1);
-            DeCasteljau.splitU(net, 0, n, m, 3, 0.5, lo, 0, hi, 0);
-            recurse(lo, n, m, u0, um, v0, v1, depth + 1, options, out);
-            recurse(hi, n, m, um, u1, v0, v1, depth + 1, options, out);
-        } else {
-            double vm = 0.5 * (v0 + v1);
-            DeCasteljau.splitV(net, 0, n, m, 3, 0.5, lo, 0, hi, 0);
-            recurse(lo, n, m, u0, u1, v0, vm, depth + 1, options, out);
-            recurse(hi, n, m, u0, u1, vm, v1, depth + 1, options, out);
+
+        void run(double[] net) {
+            visit(net, 0, 1, 0, 1, 0);
+        }
+
+        private void visit(double[] net, double u0, double u1, double v0, double v1, int depth) {
+            Bounds.ofPoints(net, 0, (n + 1) * (m + 1), box);
+            double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
+            double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (depth >= options.maxDepth()
+                    || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
+                out.add(net, u0, u1, v0, v1);
+                return;
+            }
+            double[] a = lo[depth + 1], b = hi[depth + 1];
+            if (polygonLength(net, n, m, true) >= polygonLength(net, n, m, false)) {
+                double um = 0.5 * (u0 + u1);
+                DeCasteljau.splitU(net, 0, n, m, 3, 0.5, a, 0, b, 0);
+                visit(a, u0, um, v0, v1, depth + 1);
+                visit(b, um, u1, v0, v1, depth + 1);
+            } else {
+                double vm = 0.5 * (v0 + v1);
+                DeCasteljau.splitV(net, 0, n, m, 3, 0.5, a, 0, b, 0);
+                visit(a, u0, u1, v0, vm, depth + 1);
+                visit(b, u0, u1, vm, v1, depth + 1);
+            }
         }
     }
 

@@ -1,6 +1,7 @@
 package org.beziertracer.geometry;
 
 import java.util.List;
+import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
 import org.beziertracer.model.BezierPatch;
@@ -24,6 +25,9 @@ import org.beziertracer.model.BezierPatch;
  */
 public final class SubPatchTable {
 
+    /** Scenes with at least this many patches are split in parallel. */
+    static final int PARALLEL_PATCHES = 64;
+
     private final List<BezierPatch> patches;
     private final PatchPieces[] pieces;
     private final SplitOptions options;
@@ -44,6 +48,8 @@ public final class SubPatchTable {
     /** Degrees of patch {@code k}. */
     public final int[] patchDegreeU;
     public final int[] patchDegreeV;
+    /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
+    public final double[] patchSquaredExtent;
 
     private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, SplitOptions options) {
         this.patches = List.copyOf(patches);
@@ -60,8 +66,11 @@ public final class SubPatchTable {
             patchDoubles += pieces[k].netLength();
         }
         patchNets = new double[patchDoubles];
+        patchSquaredExtent = new double[pieces.length];
         for (int k = 0; k < pieces.length; k++) {
             this.patches.get(k).copyNetInto(patchNets, patchNetOffset[k]);
+            patchSquaredExtent[k] = PatchNormals.squaredExtent(patchNets, patchNetOffset[k],
+                    patchDegreeU[k], patchDegreeV[k]);
         }
         int total = 0;
         int doubles = 0;
@@ -101,9 +110,10 @@ public final class SubPatchTable {
     /** Splits every patch. */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
         PatchPieces[] pieces = new PatchPieces[patches.size()];
-        for (int k = 0; k < pieces.length; k++) {
-            pieces[k] = PatchSplitter.split(patches.get(k), options);
-        }
+        // Patches split independently; large scenes use the common fork-join pool (build time only)
+        IntStream range = IntStream.range(0, pieces.length);
+        (pieces.length >= PARALLEL_PATCHES ? range.parallel() : range)
+                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options));
         return new SubPatchTable(patches, pieces, options);
     }
 

@@ -17,6 +17,12 @@ import org.beziertracer.geometry.SubPatchTable;
  * ray origin is visited first. When the remaining piece is tiny, a few Newton steps on the parent
  * patch give the root to full double precision.
  *
+ * <p>Shortcut: when a clipped piece provably holds at most one root ({@link RootUniqueness}),
+ * Newton on the parent patch, confined to the piece's parameter box, finds that root directly
+ * and the piece is settled (its only root is known, so nothing nearer can hide in it); a failed
+ * attempt falls back to clipping. On a leaf's first visit both clips run on the unrestricted net,
+ * so a leaf with a unique root needs no de Casteljau restriction at all.
+ *
  * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
  * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a
  * small margin, the work per leaf is capped, every candidate in {@code (tMin, tMax)} is kept and
@@ -35,6 +41,10 @@ final class BezierClipper {
     static final double WIDEN = 1e-10;
     /** Cap on clip steps per leaf. */
     static final int MAX_STEPS = 400;
+    /** Newton attempts per leaf on pieces proven to hold at most one root ({@link RootUniqueness}). */
+    static final int MAX_NEWTON_TRIES = 2;
+    /** Iteration cap of such an attempt; a failed attempt falls back to clipping. */
+    static final int NEWTON_STEPS = 8;
     /** A piece whose ray-space extent is below this fraction of the leaf size is a root candidate. */
     static final double CONVERGED_EXTENT = 1e-7;
     /** ... or whose parameter box (local to the leaf) is this narrow in both directions. */
@@ -62,7 +72,7 @@ final class BezierClipper {
         double best = tMax;
         boolean found = false;
         double bestU = 0, bestV = 0;
-        int steps = 0;
+        int steps = 0, newtonTries = 0;
         double invLength = ctx.invLength;
 
         while (sp > 0) {
@@ -97,6 +107,37 @@ final class BezierClipper {
                 continue;
             }
             ctx.clipIterations++;
+            if (steps == 1) {
+                // The whole leaf: clip both directions on the unrestricted net (both
+                // intervals hold every root of the leaf)
+                if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
+                    sp--;
+                    continue;
+                }
+                double a = ctx.clip[0], b = ctx.clip[1];
+                if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
+                    sp--;
+                    continue;
+                }
+                double c = ctx.clip[0], d = ctx.clip[1];
+                if (RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                    // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
+                    // no restriction needed
+                    newtonTries++;
+                    if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * a, leafU0 + leafDu * b,
+                            leafV0 + leafDv * c, leafV0 + leafDv * d, tolerance)) {
+                        return ctx.rootT > tMin && ctx.rootT < tMax;
+                    }
+                }
+                if (b - a < 1) {
+                    DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+                }
+                if (d - c < 1) {
+                    DeCasteljau.restrictV(arena, base, n, m, 3, c, d);
+                }
+                boxes[b4] = a; boxes[b4 + 1] = b; boxes[b4 + 2] = c; boxes[b4 + 3] = d;
+                continue;
+            }
             // Clip in u
             if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
                 sp--;
@@ -125,7 +166,23 @@ final class BezierClipper {
                 v0 = v0 + dv * a;
             }
             boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
-            if (keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD) {
+            boolean stalled = keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD;
+            if (!stalled && newtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                // At most one root in this piece: Newton on the parent, confined to the piece, finds it
+                newtonTries++;
+                if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * u0, leafU0 + leafDu * u1,
+                        leafV0 + leafDv * v0, leafV0 + leafDv * v1, tolerance)) {
+                    if (ctx.rootT > tMin && ctx.rootT < best) {
+                        best = ctx.rootT;
+                        bestU = ctx.rootU;
+                        bestV = ctx.rootV;
+                        found = true;
+                    }
+                    sp--; // the piece's only root is known, whatever its t
+                    continue;
+                }
+            }
+            if (stalled) {
                 if (sp == TraceContext.MAX_ENTRIES) {
                     sp--; // stack full: drop this piece (bounded work)
                     continue;
@@ -140,6 +197,22 @@ final class BezierClipper {
             ctx.rootV = bestV;
         }
         return found;
+    }
+
+    /**
+     * Newton on parent patch {@code k} from the centre of the piece's parameter box
+     * {@code [u0,u1]×[v0,v1]}, every iterate confined to that box; true when it converged (the
+     * root is then in {@code ctx.root*} and lies in the piece), refined by one more step so it is
+     * as exact as the polish of a fully clipped piece.
+     */
+    static boolean newtonInPiece(TraceContext ctx, SubPatchTable tab, int k, double u0, double u1,
+                                 double v0, double v1, double tolerance) {
+        if (RayPatchNewton.solve(ctx, tab, k, 0.5 * (u0 + u1), 0.5 * (v0 + v1), NEWTON_STEPS,
+                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
+            return false;
+        }
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
+        return true;
     }
 
     /** Diagonal of the leaf's control box. */
@@ -212,41 +285,31 @@ final class BezierClipper {
             lo[c] = Double.POSITIVE_INFINITY;
             hi[c] = Double.NEGATIVE_INFINITY;
         }
-        for (int j = 0, p = base; j <= m; j++) {
-            for (int i = 0; i <= n; i++, p += 3) {
-                double dist = lx * net[p + 1] - ly * net[p];
-                int c = alongU ? i : j;
-                if (dist < lo[c]) lo[c] = dist;
-                if (dist > hi[c]) hi[c] = dist;
+        if (alongU) {
+            for (int j = 0, p = base; j <= m; j++) {
+                for (int i = 0; i <= n; i++, p += 3) {
+                    double dist = lx * net[p + 1] - ly * net[p];
+                    if (dist < lo[i]) lo[i] = dist;
+                    if (dist > hi[i]) hi[i] = dist;
+                }
+            }
+        } else {
+            for (int j = 0, p = base; j <= m; j++) {
+                double rowLo = Double.POSITIVE_INFINITY, rowHi = Double.NEGATIVE_INFINITY;
+                for (int i = 0; i <= n; i++, p += 3) {
+                    double dist = lx * net[p + 1] - ly * net[p];
+                    if (dist < rowLo) rowLo = dist;
+                    if (dist > rowHi) rowHi = dist;
+                }
+                lo[j] = rowLo;
+                hi[j] = rowHi;
             }
         }
         // Where the convex hull of the points (c/deg, distance) meets zero
-        double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
-        double invDeg = 1.0 / deg;
-        for (int c = 0; c <= deg; c++) {
-            double xc = c * invDeg;
-            if (lo[c] <= eps && hi[c] >= -eps) {
-                if (xc < a) a = xc;
-                if (xc > b) b = xc;
-            }
-            for (int e = c + 1; e <= deg; e++) {
-                double xe = e * invDeg;
-                for (int sc = 0; sc < 2; sc++) {
-                    double yc = sc == 0 ? lo[c] : hi[c];
-                    for (int se = 0; se < 2; se++) {
-                        double ye = se == 0 ? lo[e] : hi[e];
-                        if ((yc < 0 && ye > 0) || (yc > 0 && ye < 0)) {
-                            double x = xc + (xe - xc) * (yc / (yc - ye));
-                            if (x < a) a = x;
-                            if (x > b) b = x;
-                        }
-                    }
-                }
-            }
-        }
-        if (!(a <= b)) {
+        if (!HullClip.zeroInterval(lo, hi, deg, eps, ctx.clip)) {
             return false;
         }
+        double a = ctx.clip[0], b = ctx.clip[1];
         ctx.clip[0] = Math.max(0, a - WIDEN);
         ctx.clip[1] = Math.min(1, b + WIDEN);
         return true;

@@ -75,4 +75,48 @@ final class RayPatchNewton {
         }
         return result;
     }
+
+    /**
+     * One more Newton step from a converged {@link #solve} (whose last evaluation, at
+     * {@code ctx.rootU/rootV}, is still in {@code ctx.eval}): near a simple root Newton converges
+     * quadratically, so a root accepted at the residual tolerance becomes exact to rounding. The
+     * step is kept only when it stays in {@code [uLo,uHi]×[vLo,vHi]} and does not increase the
+     * residual. One evaluation, skipped when the residual is already below
+     * {@code 1e-3 × tolerance} (one more step could not move the point by more than rounding).
+     */
+    static void refine(TraceContext ctx, SubPatchTable table, int k, double uLo, double uHi, double vLo, double vHi,
+                       double tolerance) {
+        double[] e = ctx.eval;
+        double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
+        double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+        double f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        if (Math.max(Math.abs(f1), Math.abs(f2)) <= 1e-3 * tolerance) {
+            return;
+        }
+        double a = ctx.n1x * e[3] + ctx.n1y * e[4] + ctx.n1z * e[5];
+        double b = ctx.n1x * e[6] + ctx.n1y * e[7] + ctx.n1z * e[8];
+        double c = ctx.n2x * e[3] + ctx.n2y * e[4] + ctx.n2z * e[5];
+        double d = ctx.n2x * e[6] + ctx.n2y * e[7] + ctx.n2z * e[8];
+        double det = a * d - b * c;
+        if (!(Math.abs(det) > 1e-300) || Math.abs(det) <= 1e-14 * (Math.abs(a * d) + Math.abs(b * c))) {
+            return;
+        }
+        double u = ctx.rootU + (b * f2 - d * f1) / det;
+        double v = ctx.rootV + (c * f1 - a * f2) / det;
+        if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
+            return;
+        }
+        double[] net = table.patchNets;
+        double[] g = ctx.refineEval;
+        DeCasteljau.evaluateWithDerivatives(net, table.patchNetOffset[k], table.patchDegreeU[k],
+                table.patchDegreeV[k], u, v, g, ctx.scratch);
+        qx = g[0] - ctx.ox; qy = g[1] - ctx.oy; qz = g[2] - ctx.oz;
+        double g1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+        double g2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        if (Math.max(Math.abs(g1), Math.abs(g2)) <= Math.max(Math.abs(f1), Math.abs(f2))) {
+            ctx.rootU = u;
+            ctx.rootV = v;
+            ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+        }
+    }
 }

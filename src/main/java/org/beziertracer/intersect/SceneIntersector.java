@@ -225,7 +225,8 @@ public final class SceneIntersector {
             sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
             sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
             double[] nrm = ctx.normal;
-            PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, nrm, 0, ctx.scratch);
+            PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, table.patchSquaredExtent[k], nrm, 0,
+                    ctx.scratch);
             sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
         } else if (hit.kind == Hit.PLANE) {
             shapes.planePoint(hit.index, hit, ctx, sp);

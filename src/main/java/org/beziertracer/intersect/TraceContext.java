@@ -45,6 +45,7 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] tmpNet = new double[NET_LENGTH];
     final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
     final double[] eval = new double[9];
+    final double[] refineEval = new double[9];
     final double[] normal = new double[3];
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
