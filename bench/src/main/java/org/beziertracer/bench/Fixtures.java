@@ -1,5 +1,9 @@
 package org.beziertracer.bench;
 
+import org.openjdk.jmh.infra.Blackhole;
+import org.beziertracer.intersect.Hit;
+import org.beziertracer.intersect.TraceContext;
+import org.beziertracer.intersect.SceneIntersector;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
@@ -98,5 +102,15 @@ public final class Fixtures {
         rays[6 * k + 3] = dx;
         rays[6 * k + 4] = dy;
         rays[6 * k + 5] = dz;
+    }
+
+    /** Traces every ray of {@code rays} (6 doubles each) with closestHit, consuming t or -1. */
+    static void closestHits(SceneIntersector si, TraceContext ctx, Hit hit, double[] rays, Blackhole bh) {
+        for (int k = 0, count = rays.length / 6; k < count; k++) {
+            int o = 6 * k;
+            boolean found = si.closestHit(ctx, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5],
+                    0, Double.POSITIVE_INFINITY, hit);
+            bh.consume(found ? hit.t : -1);
+        }
     }
 }

@@ -61,12 +61,6 @@ public class SplitTuningBench {
     @Benchmark
     @OperationsPerInvocation(Fixtures.RAYS)
     public void closestHit(Blackhole bh) {
-        double[] r = rays;
-        for (int k = 0; k < Fixtures.RAYS; k++) {
-            int o = 6 * k;
-            boolean found = si.closestHit(ctx, r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5],
-                    0, Double.POSITIVE_INFINITY, hit);
-            bh.consume(found ? hit.t : -1);
-        }
+        Fixtures.closestHits(si, ctx, hit, rays, bh);
     }
 }
