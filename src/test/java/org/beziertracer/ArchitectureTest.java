@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -16,22 +17,34 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * Reads the {@code package} and {@code import} lines of every main source file and checks the
- * layer rule: {@code math → model (+model.io) → geometry → accel → intersect → render → ui / cli},
- * each layer importing only layers before it; {@code ui} and {@code cli} never import each
- * other; only {@code ui} imports Swing or FlatLaf.
+ * Reads every main source file (comments stripped) and checks the layer rule of the
+ * architecture guide: each layer uses only the layers its table row allows — by import or by a
+ * fully qualified name — {@code ui} and {@code cli} never use each other, only {@code ui} uses
+ * Swing or FlatLaf, and only {@code ui} and {@code cli} use AWT or ImageIO.
  */
 class ArchitectureTest {
 
     private static final Path SRC = Path.of("src/main/java");
     private static final String BASE = "org.beziertracer";
     private static final Pattern PACKAGE = Pattern.compile("^package\\s+([\\w.]+)\\s*;", Pattern.MULTILINE);
-    private static final Pattern IMPORT = Pattern.compile("^import\\s+(?:static\\s+)?([\\w.]+)(?:\\.\\*)?\\s*;", Pattern.MULTILINE);
 
-    /** Rank of each layer; a layer may import layers of strictly lower rank (and itself). */
-    private static final Map<String, Integer> RANK = Map.of(
-            "math", 0, "model", 1, "model.io", 2, "geometry", 3, "accel", 4,
-            "intersect", 5, "render", 6, "ui", 7, "cli", 7, "", 8);
+    /** What each layer may use, from the architecture guide's table ("" is the root package). */
+    private static final Map<String, Set<String>> ALLOWED = Map.of(
+            "math", Set.of(),
+            "model", Set.of("math"),
+            "model.io", Set.of("model", "math"),
+            "geometry", Set.of("math", "model"),
+            "accel", Set.of("math"),
+            "intersect", Set.of("math", "model", "geometry", "accel"),
+            "render", Set.of("math", "model", "model.io", "geometry", "accel", "intersect"),
+            "ui", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render"),
+            "cli", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render"),
+            "", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render", "ui", "cli"));
+
+    /** A fully qualified use of one of our classes anywhere in the code, imported or not. */
+    private static final Pattern QUALIFIED = Pattern.compile("\\b(org\\.beziertracer(?:\\.[a-z]\\w*)*)\\.[A-Z]");
+    private static final Pattern AWT = Pattern.compile("\\b(java\\.awt|javax\\.imageio)\\b");
+    private static final Pattern SWING = Pattern.compile("\\b(javax\\.swing|com\\.formdev\\.flatlaf)\\b");
 
     static String layerOf(String pkg) {
         if (!pkg.startsWith(BASE)) {
@@ -48,40 +61,29 @@ class ArchitectureTest {
     static List<String> violations(String pkg, String source) {
         List<String> out = new ArrayList<>();
         String from = layerOf(pkg);
-        Matcher m = IMPORT.matcher(source);
+        String code = source.replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("//[^\\n]*", "")
+                .replaceFirst("(?m)^package\\s+[\\w.]+\\s*;", "");
+        if (SWING.matcher(code).find() && !"ui".equals(from)) {
+            out.add(pkg + " uses Swing/FlatLaf (only ui may)");
+        }
+        if (AWT.matcher(code).find() && !"ui".equals(from) && !"cli".equals(from)) {
+            out.add(pkg + " uses AWT/ImageIO (only ui and cli may)");
+        }
+        Set<String> allowed = ALLOWED.get(from);
+        if (allowed == null) {
+            out.add(pkg + " is in no known layer");
+            return out;
+        }
+        Matcher m = QUALIFIED.matcher(code);
         while (m.find()) {
-            String imported = m.group(1);
-            boolean swing = imported.startsWith("javax.swing") || imported.startsWith("com.formdev.flatlaf");
-            if (swing && !"ui".equals(from)) {
-                out.add(pkg + " imports " + imported + " (Swing/FlatLaf only in ui)");
-            }
-            String to = layerOf(imported.startsWith(BASE + ".") ? packageOfClass(imported) : imported);
-            if (to == null || from == null || to.equals(from)) {
-                continue;
-            }
-            Integer rf = RANK.get(from), rt = RANK.get(to);
-            if (rf == null || rt == null) {
-                out.add(pkg + " is in an unknown layer or imports one: " + imported);
-            } else if (rt >= rf) {
-                out.add(pkg + " (layer " + from + ") imports " + imported + " (layer " + to + ")");
+            String to = layerOf(m.group(1));
+            if (to != null && !to.equals(from) && !allowed.contains(to)) {
+                out.add(pkg + " (layer " + from + ") uses " + m.group(0) + "… (layer " + to + ")");
             }
         }
         return out;
     }
 
-    /** {@code org.beziertracer.model.io.BptReader} → {@code org.beziertracer.model.io}. */
-    private static String packageOfClass(String name) {
-        String[] parts = name.split("\\.");
-        StringBuilder sb = new StringBuilder();
-        for (String part : parts) {
-            if (!part.isEmpty() && Character.isUpperCase(part.charAt(0))) {
-                break;
-            }
-            if (sb.length() > 0) sb.append('.');
-            sb.append(part);
-        }
-        return sb.toString();
-    }
 
     @Test
     void everyLayerImportsOnlyLayersBelowIt() throws IOException {
@@ -111,6 +113,16 @@ class ArchitectureTest {
         assertEquals(1, violations("org.beziertracer.model.io",
                 "package org.beziertracer.model.io;\nimport static org.beziertracer.geometry.DeCasteljau.evaluate;\n").size());
         assertEquals(List.of(), violations("org.beziertracer.intersect",
-                "package org.beziertracer.intersect;\nimport org.beziertracer.accel.Bvh;\nimport org.beziertracer.model.io.BptReader;\n"));
+                "package org.beziertracer.intersect;\nimport org.beziertracer.accel.Bvh;\nimport org.beziertracer.geometry.DeCasteljau;\n"));
+        // the guide's table, not just an order: accel uses math only, intersect no file formats
+        assertEquals(1, violations("org.beziertracer.accel",
+                "package org.beziertracer.accel;\nimport org.beziertracer.geometry.SubPatchTable;\n").size());
+        assertEquals(1, violations("org.beziertracer.intersect",
+                "package org.beziertracer.intersect;\nimport org.beziertracer.model.io.BptReader;\n").size());
+        // fully qualified names count, not only imports
+        assertEquals(1, violations("org.beziertracer.geometry",
+                "package org.beziertracer.geometry;\nclass X { org.beziertracer.render.Camera c; }\n").size());
+        assertEquals(1, violations("org.beziertracer.render",
+                "package org.beziertracer.render;\nclass X { java.awt.image.BufferedImage i; }\n").size());
     }
 }

@@ -39,10 +39,11 @@ final class SubdivisionSolver {
         boolean found = false;
         double invLength = ctx.invLength;
         while (sp > 0 && ++steps <= MAX_STEPS) {
-            int w = sp - 1, base = w * len, b4 = 4 * w;// Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
-double[] rb = ctx.rayBounds;
-Bounds.ofPoints(arena, base, points, rb);
-double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
+            int w = sp - 1, base = w * len, b4 = 4 * w;
+            // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
+            double[] rb = ctx.rayBounds;
+            Bounds.ofPoints(arena, base, points, rb);
+            double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > 0 || max1 < 0 || min2 > 0 || max2 < 0 || min3 * invLength >= best || max3 * invLength <= tMin) {
                 sp--;
                 continue;
@@ -83,8 +84,9 @@ double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max
         }
         if (found) {
             ctx.rootT = best;
-            ctx.rootU = leafU0 + leafDu * bestU;
-            ctx.rootV = leafV0 + leafDv * bestV;
+            // the triangle test's slack may reach slightly past the patch border
+            ctx.rootU = Math.min(1, Math.max(0, leafU0 + leafDu * bestU));
+            ctx.rootV = Math.min(1, Math.max(0, leafV0 + leafDv * bestV));
         }
         return found;
     }

@@ -120,6 +120,12 @@ public final class RenderSession implements AutoCloseable {
     /** The newest generation number handed out (or bumped by {@link #cancel()}). */
     public int generation() { return generation.get(); }
 
+    /**
+     * Completes when the render last started finishes: normally with its result, exceptionally
+     * with a {@link CancellationException} when superseded or with the worker's failure.
+     */
+    public java.util.concurrent.CompletionStage<RenderResult> completion() { return current; }
+
     /** Worker tasks running right now. */
     public int activeWorkers() { return activeWorkers.get(); }
 

@@ -65,6 +65,7 @@ public final class AppController {
         this.documentName = "patch";
         this.view = homeView(doc.scene());
         engine.onStatus(this::reportStatus);
+        engine.onError(msg -> SwingUtilities.invokeLater(() -> dialogs.error("Rendering failed", msg)));
     }
 
     // ------------------------------------------------------------------ wiring and state
@@ -340,6 +341,9 @@ public final class AppController {
             doc = loader.get();
         } catch (RuntimeException e) {
             dialogs.error("Cannot open " + name, e.getMessage());
+            return false;
+        } catch (OutOfMemoryError e) {
+            dialogs.error("Cannot open " + name, name + ": not enough memory to load this model");
             return false;
         }
         history.reset(doc.scene());

@@ -2,10 +2,7 @@ package org.beziertracer.ui;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Locale;
 
 import javax.imageio.ImageIO;
@@ -13,6 +10,7 @@ import javax.imageio.ImageIO;
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.Models;
 import org.beziertracer.model.io.MeshObjWriter;
 
@@ -37,20 +35,11 @@ public final class DocumentFiles {
 
     /** Writes the picture as PNG. */
     public static void exportPng(Path file, BufferedImage image) throws IOException {
-        Path target = file.toAbsolutePath();
-        Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName() + ".", ".tmp");
-        try {
-            if (!ImageIO.write(image, "png", temp.toFile())) {
+        AtomicFiles.writeBytes(file, out -> {
+            if (!ImageIO.write(image, "png", out)) {
                 throw new IOException("no PNG writer available");
             }
-            try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } finally {
-            Files.deleteIfExists(temp);
-        }
+        });
     }
 
     /** Tessellates every patch ({@value #MESH_SEGMENTS}² cells each) and writes a triangle OBJ. */

@@ -16,6 +16,12 @@ public interface PictureEngine extends AutoCloseable {
     /** Where status reports go (called from render threads). */
     void onStatus(Consumer<RenderStatus> listener);
 
+    /**
+     * Where a failed scene preparation or render is reported, as one line (called off the event
+     * thread). The engine stays usable; the picture keeps its last frame.
+     */
+    default void onError(Consumer<String> listener) {}
+
     /** True while a render or a pending request is in progress (tests wait on this). */
     boolean busy();
 

@@ -51,6 +51,7 @@ public final class RayTraceEngine implements PictureEngine {
     private final AtomicReference<RenderRequest> pending = new AtomicReference<>();
     private final AtomicBoolean preparing = new AtomicBoolean();
     private volatile Consumer<RenderStatus> listener = s -> {};
+    private volatile Consumer<String> errors = m -> {};
     private volatile FrameBuffer target;
     private volatile RenderRequest current;
     private volatile double prepMillis;
@@ -67,6 +68,15 @@ public final class RayTraceEngine implements PictureEngine {
 
     @Override
     public void onStatus(Consumer<RenderStatus> l) { listener = l; }
+
+    @Override
+    public void onError(Consumer<String> l) { errors = l; }
+
+    private void fail(Throwable e) {
+        frameDone = true;
+        String msg = e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
+        errors.accept(msg.replace('\n', ' '));
+    }
 
     @Override
     public void submit(RenderRequest request) {
@@ -88,9 +98,8 @@ public final class RayTraceEngine implements PictureEngine {
             for (RenderRequest r = pending.getAndSet(null); r != null; r = pending.getAndSet(null)) {
                 start(r);
             }
-        } catch (RuntimeException | Error e) {
-            frameDone = true;
-            throw e;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            fail(e);
         } finally {
             preparing.set(false);
         }
@@ -115,6 +124,12 @@ public final class RayTraceEngine implements PictureEngine {
         current = r;
         if (pending.get() == null) {
             session.start(job);
+            session.completion().whenComplete((result, e) -> {
+                Throwable cause = e instanceof java.util.concurrent.CompletionException && e.getCause() != null ? e.getCause() : e;
+                if (cause != null && !(cause instanceof java.util.concurrent.CancellationException)) {
+                    fail(cause);
+                }
+            });
         }
     }
 

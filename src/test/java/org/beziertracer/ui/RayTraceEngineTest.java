@@ -70,4 +70,23 @@ class RayTraceEngineTest {
             Thread.sleep(5);
         }
     }
+
+    @Test
+    void aFailedPreparationIsReportedAsOneLineAndTheEngineGoesIdle() throws InterruptedException {
+        ToolSettings t = new ToolSettings();
+        FrameBuffer fb = new FrameBuffer(32, 24, () -> {});
+        java.util.concurrent.BlockingQueue<String> errors = new java.util.concurrent.LinkedBlockingQueue<>();
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.onError(errors::add);
+            // a request without a camera cannot be prepared
+            engine.submit(new RenderRequest(Models.patch(), null, t.renderSettings(32, 24), 1, fb));
+            String msg = errors.poll(20, java.util.concurrent.TimeUnit.SECONDS);
+            assertTrue(msg != null && !msg.contains("\n"), "one error line, got " + msg);
+            long deadline = System.nanoTime() + 20_000_000_000L;
+            while (engine.busy() && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
+            assertTrue(!engine.busy(), "the engine is idle after a failure");
+        }
+    }
 }

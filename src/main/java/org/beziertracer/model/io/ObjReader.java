@@ -338,8 +338,11 @@ public final class ObjReader {
             }
         }
 
-        private void checkRange(String direction, double lo, double hi, double[] parm) {
-            if (parm != null && (lo != parm[0] || hi != parm[parm.length - 1])) {
+        private static final double[] DEFAULT_PARM = {0, 1};
+
+        private void checkRange(String direction, double lo, double hi, double[] parmOrNull) {
+            double[] parm = parmOrNull != null ? parmOrNull : DEFAULT_PARM; // no parm: the domain is [0,1]
+            if ((lo != parm[0] || hi != parm[parm.length - 1])) {
                 throw error("unsupported: surf range " + direction + "[" + NumberText.format(lo) + ","
                         + NumberText.format(hi) + "] differs from parm " + direction + " ["
                         + NumberText.format(parm[0]) + "," + NumberText.format(parm[parm.length - 1])

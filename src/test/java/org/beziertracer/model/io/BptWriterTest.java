@@ -82,4 +82,20 @@ class BptWriterTest {
         BptWriter.write(file, List.of(Models.flatGrid(4, 4)));
         assertTrue(Files.readString(file).startsWith("1\n3 3\n"));
     }
+
+    @Test
+    void savingKeepsTheFilesPermissionsAndGivesNewFilesOrdinaryOnes() throws IOException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(
+                Files.getFileStore(dir).supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class),
+                "POSIX permissions not supported here");
+        Path fresh = dir.resolve("fresh.bpt");
+        BptWriter.write(fresh, List.of(Models.flatGrid(2, 2)));
+        assertEquals("rw-r--r--", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(fresh)));
+        Path shared = dir.resolve("shared.bpt");
+        Files.writeString(shared, "old");
+        Files.setPosixFilePermissions(shared, java.nio.file.attribute.PosixFilePermissions.fromString("rw-rw-r--"));
+        BptWriter.write(shared, List.of(Models.flatGrid(2, 2)));
+        assertEquals("rw-rw-r--", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(shared)));
+        assertTrue(Files.readString(shared).startsWith("1\n"));
+    }
 }

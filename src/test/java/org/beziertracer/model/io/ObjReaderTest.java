@@ -177,6 +177,9 @@ class ObjReaderTest {
     void aSurfaceRestrictedToPartOfItsParmRangeIsUnsupported() {
         String text = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 0.5 0 1 1 2 3 4\nparm u 0 1\nparm v 0 1\nend\n";
         assertMessage(fails(text, "part.obj"), "part.obj:7: ", "unsupported: surf range u[0,0.5]");
+        // without parm lines the domain is [0,1], so a narrower range is a restriction too
+        String noParm = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 1 0 0.25 1 2 3 4\nend\n";
+        assertMessage(fails(noParm, "part.obj"), "part.obj:7: ", "unsupported: surf range v[0,0.25]");
     }
 
     @Test
