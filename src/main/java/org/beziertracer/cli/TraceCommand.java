@@ -209,6 +209,11 @@ final class TraceCommand implements Callable<Integer> {
                 if (ray[3] == 0 && ray[4] == 0 && ray[5] == 0) {
                     throw new IllegalArgumentException(name + ":" + lineNumber + ": the ray direction is zero");
                 }
+                double big = Math.max(Math.abs(ray[3]), Math.max(Math.abs(ray[4]), Math.abs(ray[5])));
+                if (big < 1e-300 || big > 1e300) {
+                    throw new IllegalArgumentException(name + ":" + lineNumber + ": the ray direction's length must be "
+                            + "between 1e-300 and 1e300, found a largest component of " + big);
+                }
                 return true;
             }
             return false;

@@ -200,7 +200,7 @@ public final class SceneIntersector {
             case NEWTON:
                 return NewtonSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
             default:
-                return SubdivisionSolver.intersect(ctx, table, s, tMin, tMax);
+                return SubdivisionSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
         }
     }
 

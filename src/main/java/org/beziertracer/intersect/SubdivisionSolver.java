@@ -25,7 +25,7 @@ final class SubdivisionSolver {
      */
     static final double EDGE_SLACK = 0.02;
 
-    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax) {
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax, double tolerance) {
         int n = tab.degreeU[s], m = tab.degreeV[s];
         int points = (n + 1) * (m + 1), len = 3 * points;
         double[] arena = ctx.arena, boxes = ctx.entryBoxes;
@@ -44,7 +44,8 @@ final class SubdivisionSolver {
             double[] rb = ctx.rayBounds;
             Bounds.ofPoints(arena, base, points, rb);
             double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
-            if (min1 > 0 || max1 < 0 || min2 > 0 || max2 < 0 || min3 * invLength >= best || max3 * invLength <= tMin) {
+            if (min1 > tolerance || max1 < -tolerance || min2 > tolerance || max2 < -tolerance
+                    || min3 * invLength >= best || max3 * invLength <= tMin) {
                 sp--;
                 continue;
             }

@@ -69,14 +69,20 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
 
     TraceContext() {}
 
-    /** Sets the ray and computes its ray-space frame. {@code d} must be finite and non-zero. */
+    /**
+     * Sets the ray and computes its ray-space frame. {@code d} must be finite and non-zero; its
+     * length may be anything from about 1e-300 to 1e300.
+     */
     void setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
         invDx = 1.0 / dx; invDy = 1.0 / dy; invDz = 1.0 / dz;
-        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        invLength = 1.0 / len;
-        n3x = dx * invLength; n3y = dy * invLength; n3z = dz * invLength;
+        // scale by the largest component first, so tiny or huge directions neither underflow nor overflow
+        double big = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        double sx = dx / big, sy = dy / big, sz = dz / big;
+        double scaledLength = Math.sqrt(sx * sx + sy * sy + sz * sz);
+        invLength = 1.0 / (scaledLength * big);
+        n3x = sx / scaledLength; n3y = sy / scaledLength; n3z = sz / scaledLength;
         // n1: perpendicular to d, built from its two largest components
         double ax, ay, az;
         if (Math.abs(n3x) > Math.abs(n3z)) {

@@ -109,6 +109,8 @@ class TraceCommandTest {
         assertTrue(r.err().contains("rays.txt:1: expected 6 numbers"), r.err());
         r = run("trace", "teapot", "-i", rays("1 2 3 0 0 0\n").toString());
         assertTrue(r.err().contains("direction is zero"), r.err());
+        r = run("trace", "teapot", "-i", rays("1 2 3 0 1e-320 0\n").toString());
+        assertTrue(r.err().contains("rays.txt:1: the ray direction's length"), r.err());
         r = run("trace", "teapot", "-i", rays("1 2 NaN 0 0 1\n").toString());
         assertTrue(r.err().contains("must be finite"), r.err());
         r = run("trace", "teapot", "--method", "magic", "-i", in.toString());

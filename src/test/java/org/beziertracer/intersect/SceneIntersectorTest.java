@@ -224,4 +224,21 @@ class SceneIntersectorTest {
             }
         }
     }
+
+    @Test
+    void tinyAndHugeDirectionsGiveTheSameHitScaled() {
+        Scene scene = org.beziertracer.model.io.Models.teapot();
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        assertTrue(si.closestHit(ctx, 0, 0, 220, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
+        double t = hit.t;
+        for (double scale : new double[] {1e-200, 1e-100, 1e100, 1e200}) {
+            assertTrue(si.closestHit(ctx, 0, 0, 220, 0, 0, -scale, 0, Double.POSITIVE_INFINITY, hit), "scale " + scale);
+            assertEquals(t, hit.t * scale, 1e-9 * t, "t scales with 1/|d|, scale " + scale);
+            assertTrue(si.closestHit(ctx, 0, 0, 220, scale * 1e-3, scale * 2e-3, -scale, 0, Double.POSITIVE_INFINITY, hit),
+                    "oblique, scale " + scale);
+            assertTrue(Double.isFinite(hit.u) && Double.isFinite(hit.v), "finite (u,v) at scale " + scale);
+        }
+    }
 }
