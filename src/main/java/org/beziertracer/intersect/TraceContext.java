@@ -46,6 +46,17 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
     final double[] eval = new double[9];
     final double[] refineEval = new double[9];
+    /** {@link #eval} holds S, Su, Sv of patch {@code evalPatch} at {@code (evalU, evalV)} (-1: unknown). */
+    int evalPatch = -1;
+    double evalU, evalV;
+    /**
+     * S, Su, Sv of the best patch hit so far, at {@code (hitEvalU, hitEvalV)} of patch
+     * {@code hitEvalPatch} (-1: none), copied from the solver's last evaluation so that
+     * {@link SceneIntersector#surfacePoint} need not evaluate the same point again.
+     */
+    final double[] hitEval = new double[9];
+    int hitEvalPatch = -1;
+    double hitEvalU, hitEvalV;
     final double[] normal = new double[3];
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
@@ -124,8 +135,15 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
             best.u = rootU;
             best.v = rootV;
             best.kind = Hit.PATCH;
-            best.index = scene.table.parent[prim];
+            int k = scene.table.parent[prim];
+            best.index = k;
             best.subPatch = prim;
+            if (evalPatch == k && evalU == rootU && evalV == rootV) {
+                System.arraycopy(eval, 0, hitEval, 0, 9);
+                hitEvalPatch = k;
+                hitEvalU = rootU;
+                hitEvalV = rootV;
+            }
             return rootT;
         }
         return tMax;
