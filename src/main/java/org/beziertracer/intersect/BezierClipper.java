@@ -120,7 +120,9 @@ final class BezierClipper {
                     continue;
                 }
                 double c = ctx.clip[0], d = ctx.clip[1];
-                if (RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                // (the precomputed one-dot-product test first, the box test on the net if it fails)
+                if (RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z)
+                        || RootUniqueness.atMostOneRoot(arena, base, n, m)) {
                     // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
                     // no restriction needed
                     newtonTries++;

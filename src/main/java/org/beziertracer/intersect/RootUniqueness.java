@@ -1,5 +1,7 @@
 package org.beziertracer.intersect;
 
+import org.beziertracer.geometry.SubPatchTable;
+
 /**
  * A sufficient test that a ray meets a ray-space piece at most once, from the bounds of the
  * piece's first derivatives (hodographs).
@@ -18,6 +20,27 @@ package org.beziertracer.intersect;
  */
 final class RootUniqueness {
     private RootUniqueness() {}
+
+    /**
+     * True when whole sub-patch {@code s} of {@code tab} provably meets any ray of unit direction
+     * {@code (dx, dy, dz)} at most once, from its precomputed {@link SubPatchTable#uniqueness}
+     * data: one dot product, no pass over the net.
+     *
+     * <p>With {@code Su/n} in the ball {@code (a, ra)} and {@code Sv/m} in {@code (b, rb)}, write
+     * the four partial derivatives of the test above as {@code n1·a1, n1·b1, n2·a2, n2·b2} with
+     * {@code a1, a2} in the first ball and {@code b1, b2} in the second. At the centres the
+     * expression is {@code (n1·a)(n2·b) − (n1·b)(n2·a) = (n1 × n2)·(a × b) = d̂·(a × b)}
+     * (Binet–Cauchy; {@code n1 × n2 = d̂} for the frame of {@link TraceContext}), and each of the six
+     * cross terms of the expansion is at most a product of lengths ({@code |n·x| ≤ |x|} for a
+     * unit {@code n}), in all {@code E = 2·(|a|·rb + |b|·ra + ra·rb)}. So {@code |d̂·(a × b)| > E}
+     * keeps the expression away from zero. Weaker than the box test on the projected net, so a
+     * failure proves nothing; the caller then runs {@link #atMostOneRoot(double[], int, int, int)}.
+     */
+    static boolean atMostOneRoot(SubPatchTable tab, int s, double dx, double dy, double dz) {
+        double[] q = tab.uniqueness;
+        int o = 4 * s;
+        return Math.abs(dx * q[o] + dy * q[o + 1] + dz * q[o + 2]) > q[o + 3];
+    }
 
     /**
      * True when the piece at {@code net[base..]} (ray-space points, 3 doubles each, degree
