@@ -106,6 +106,14 @@ final class BezierClipper {
                 sp--;
                 continue;
             }
+            if (steps == 1 && RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z)) {
+                // The whole leaf holds at most one root: Newton from the root of its corners'
+                // parallelogram, confined to the leaf, without any clipping
+                newtonTries++;
+                if (newtonFromCorners(ctx, tab, s, k, arena, base, n, m, tolerance)) {
+                    return ctx.rootT > tMin && ctx.rootT < tMax;
+                }
+            }
             ctx.clipIterations++;
             if (steps == 1) {
                 // The whole leaf: clip both directions on the unrestricted net (both
@@ -210,6 +218,39 @@ final class BezierClipper {
     static boolean newtonInPiece(TraceContext ctx, SubPatchTable tab, int k, double u0, double u1,
                                  double v0, double v1, double tolerance) {
         if (RayPatchNewton.solve(ctx, tab, k, 0.5 * (u0 + u1), 0.5 * (v0 + v1), NEWTON_STEPS,
+                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
+            return false;
+        }
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
+        return true;
+    }
+
+    /**
+     * Newton on the parent patch {@code k}, confined to the parameter box of leaf {@code s} (whose
+     * projected, unrestricted net is at {@code net[base..]}), from the point
+     * where the parallelogram spanned by the net's corners at their centroid meets the ray (one
+     * Newton step on the corners' bilinear patch from the leaf centre). True when it converged,
+     * the root then refined as in {@link #newtonInPiece}.
+     */
+    static boolean newtonFromCorners(TraceContext ctx, SubPatchTable tab, int s, int k, double[] net, int base,
+                                     int n, int m, double tolerance) {
+        int row = 3 * (n + 1);
+        int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
+        double ex = 0.5 * ((net[pn0] - net[p00]) + (net[pnm] - net[p0m]));
+        double ey = 0.5 * ((net[pn0 + 1] - net[p00 + 1]) + (net[pnm + 1] - net[p0m + 1]));
+        double fx = 0.5 * ((net[p0m] - net[p00]) + (net[pnm] - net[pn0]));
+        double fy = 0.5 * ((net[p0m + 1] - net[p00 + 1]) + (net[pnm + 1] - net[pn0 + 1]));
+        double cx = 0.25 * (net[p00] + net[pn0] + net[p0m] + net[pnm]);
+        double cy = 0.25 * (net[p00 + 1] + net[pn0 + 1] + net[p0m + 1] + net[pnm + 1]);
+        double det = ex * fy - ey * fx;
+        double u = 0.5, v = 0.5;
+        if (Math.abs(det) > 0) {
+            u = Math.min(1, Math.max(0, u + (fx * cy - fy * cx) / det));
+            v = Math.min(1, Math.max(0, v + (ey * cx - ex * cy) / det));
+        }
+        double[] bx = tab.boxes;
+        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
+        if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * u, v0 + (v1 - v0) * v, NEWTON_STEPS,
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
             return false;
         }
