@@ -66,6 +66,11 @@ final class BezierClipper {
         double leafSize = leafSize(tab, s);
         double extentEps = CONVERGED_EXTENT * leafSize;
 
+        boolean unique = RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z);
+        if (unique && newtonFromCorners(ctx, tab, s, k, tolerance)) {
+            // The whole leaf holds at most one root and Newton found it: no clipping at all
+            return ctx.rootT > tMin && ctx.rootT < tMax;
+        }
         ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         int sp = 1;
@@ -106,14 +111,6 @@ final class BezierClipper {
                 sp--;
                 continue;
             }
-            if (steps == 1 && RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z)) {
-                // The whole leaf holds at most one root: Newton from the root of its corners'
-                // parallelogram, confined to the leaf, without any clipping
-                newtonTries++;
-                if (newtonFromCorners(ctx, tab, s, k, arena, base, n, m, tolerance)) {
-                    return ctx.rootT > tMin && ctx.rootT < tMax;
-                }
-            }
             ctx.clipIterations++;
             if (steps == 1) {
                 // The whole leaf: clip both directions on the unrestricted net (both
@@ -128,9 +125,8 @@ final class BezierClipper {
                     continue;
                 }
                 double c = ctx.clip[0], d = ctx.clip[1];
-                // (the precomputed one-dot-product test first, the box test on the net if it fails)
-                if (RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z)
-                        || RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                // (the precomputed test of the leaf, else the box test on its projected net)
+                if (unique || RootUniqueness.atMostOneRoot(arena, base, n, m)) {
                     // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
                     // no restriction needed
                     newtonTries++;
@@ -226,22 +222,19 @@ final class BezierClipper {
     }
 
     /**
-     * Newton on the parent patch {@code k}, confined to the parameter box of leaf {@code s} (whose
-     * projected, unrestricted net is at {@code net[base..]}), from the point
-     * where the parallelogram spanned by the net's corners at their centroid meets the ray (one
-     * Newton step on the corners' bilinear patch from the leaf centre). True when it converged,
-     * the root then refined as in {@link #newtonInPiece}.
+     * Newton on the parent patch {@code k}, confined to the parameter box of leaf {@code s}, from
+     * the point where the ray meets the parallelogram spanned by the leaf's corner points at
+     * their centroid, in ray space (one Newton step on the corners' bilinear patch from the leaf
+     * centre; only the four corners are projected). True when it converged, the root then
+     * refined as in {@link #newtonInPiece}.
      */
-    static boolean newtonFromCorners(TraceContext ctx, SubPatchTable tab, int s, int k, double[] net, int base,
-                                     int n, int m, double tolerance) {
-        int row = 3 * (n + 1);
-        int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
-        double ex = 0.5 * ((net[pn0] - net[p00]) + (net[pnm] - net[p0m]));
-        double ey = 0.5 * ((net[pn0 + 1] - net[p00 + 1]) + (net[pnm + 1] - net[p0m + 1]));
-        double fx = 0.5 * ((net[p0m] - net[p00]) + (net[pnm] - net[pn0]));
-        double fy = 0.5 * ((net[p0m + 1] - net[p00 + 1]) + (net[pnm + 1] - net[pn0 + 1]));
-        double cx = 0.25 * (net[p00] + net[pn0] + net[p0m] + net[pnm]);
-        double cy = 0.25 * (net[p00 + 1] + net[pn0 + 1] + net[p0m + 1] + net[pnm + 1]);
+    static boolean newtonFromCorners(TraceContext ctx, SubPatchTable tab, int s, int k, double tolerance) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        double[] c = ctx.corners;
+        ctx.projectCorners(tab.nets, tab.netOffset[s], n, m, c);
+        double ex = 0.5 * ((c[2] - c[0]) + (c[6] - c[4])), ey = 0.5 * ((c[3] - c[1]) + (c[7] - c[5]));
+        double fx = 0.5 * ((c[4] - c[0]) + (c[6] - c[2])), fy = 0.5 * ((c[5] - c[1]) + (c[7] - c[3]));
+        double cx = 0.25 * (c[0] + c[2] + c[4] + c[6]), cy = 0.25 * (c[1] + c[3] + c[5] + c[7]);
         double det = ex * fy - ey * fx;
         double u = 0.5, v = 0.5;
         if (Math.abs(det) > 0) {

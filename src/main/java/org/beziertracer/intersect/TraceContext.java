@@ -62,6 +62,8 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
     final double[] clip = new double[2];
     final double[] rayBounds = new double[6];
+    /** First two ray-space coordinates of a net's corners (u,v) = (0,0), (1,0), (0,1), (1,1). */
+    final double[] corners = new double[8];
 
     // The query in flight (set by SceneIntersector)
     SceneIntersector scene;
@@ -111,6 +113,25 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
             dest[d + 1] = n2x * qx + n2y * qy + n2z * qz;
             dest[d + 2] = n3x * qx + n3y * qy + n3z * qz;
         }
+    }
+
+    /**
+     * Writes the first two ray-space coordinates of the four corner points of the degree
+     * {@code n}×{@code m} net at {@code net[off..]} to {@code out[0..8)}, in the order
+     * {@code P00, Pn0, P0m, Pnm}.
+     */
+    void projectCorners(double[] net, int off, int n, int m, double[] out) {
+        int row = 3 * (n + 1);
+        projectXY(net, off, out, 0);
+        projectXY(net, off + 3 * n, out, 2);
+        projectXY(net, off + row * m, out, 4);
+        projectXY(net, off + row * m + 3 * n, out, 6);
+    }
+
+    private void projectXY(double[] src, int s, double[] out, int o) {
+        double qx = src[s] - ox, qy = src[s + 1] - oy, qz = src[s + 2] - oz;
+        out[o] = n1x * qx + n1y * qy + n1z * qz;
+        out[o + 1] = n2x * qx + n2y * qy + n2z * qz;
     }
 
     @Override
