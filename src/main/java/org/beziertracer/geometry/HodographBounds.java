@@ -2,7 +2,7 @@ package org.beziertracer.geometry;
 
 /**
  * Ray-independent data for a cheap single-root test of a sub-patch (see
- * {@code intersect.RootUniqueness#atMostOneRoot(SubPatchTable, int, double, double, double)}):
+ * {@code intersect.RootUniqueness#atMostOneRoot(TraceContext, SubPatchTable, int)}):
  * the first-derivative directions of the net, bounded by balls.
  *
  * <p>The control points of the u-hodograph of a degree n×m net are {@code n·(P[i+1][j] − P[i][j])}
@@ -10,31 +10,30 @@ package org.beziertracer.geometry;
  * CAGD", 5th ed., §16.6); by the convex-hull property {@code Su/n} lies, everywhere on the patch,
  * in the ball of centre {@code a} (centre of the differences' bounding box) and radius
  * {@code ra} (largest distance of a difference from {@code a}), and {@code Sv/m} in the ball
- * {@code (b, rb)}. Stored per sub-patch, 4 doubles: {@code c = a × b} and the bound
- * {@code E = 2·(|a|·rb + |b|·ra + ra·rb)} (inflated for rounding): for a ray with unit direction
- * {@code d̂}, {@code |d̂·c| > E} proves at most one root.
+ * {@code (b, rb)}. Stored per sub-patch, {@link #STRIDE} doubles: {@code a, b, ra, rb} and a
+ * margin for rounding.
  */
 final class HodographBounds {
     private HodographBounds() {}
 
     /** Doubles per sub-patch in {@link SubPatchTable#uniqueness}. */
-    static final int STRIDE = 4;
+    static final int STRIDE = 9;
 
     /**
-     * Writes {@code (c, E)} of the degree {@code n}×{@code m} net at {@code net[off..]} to
-     * {@code out[o..o+4)}; {@code ab} is scratch of 6 doubles.
+     * Writes {@code (a, b, ra, rb, margin)} of the degree {@code n}×{@code m} net at
+     * {@code net[off..]} to {@code out[o..o+9)}; {@code ab} is scratch of 6 doubles.
      */
     static void compute(double[] net, int off, int n, int m, double[] out, int o, double[] ab) {
         int row = 3 * (n + 1);
         double ra = ballOf(net, off, n, m, 3, row, ab, 0);
         double rb = ballOf(net, off, n + 1, m - 1, row, row, ab, 3);
-        double ax = ab[0], ay = ab[1], az = ab[2], bx = ab[3], by = ab[4], bz = ab[5];
-        double la = Math.sqrt(ax * ax + ay * ay + az * az), lb = Math.sqrt(bx * bx + by * by + bz * bz);
-        out[o] = ay * bz - az * by;
-        out[o + 1] = az * bx - ax * bz;
-        out[o + 2] = ax * by - ay * bx;
-        // Margin for the rounding of the differences, the cross product and the ray's dot product
-        out[o + 3] = 2 * (la * rb + lb * ra + ra * rb) + 1e-10 * (la + ra) * (lb + rb);
+        System.arraycopy(ab, 0, out, o, 6);
+        double la = Math.sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+        double lb = Math.sqrt(ab[3] * ab[3] + ab[4] * ab[4] + ab[5] * ab[5]);
+        out[o + 6] = ra;
+        out[o + 7] = rb;
+        // Rounding of the differences, of the centres' projections and of the products (generous)
+        out[o + 8] = 1e-10 * (la + ra) * (lb + rb);
     }
 
     /**

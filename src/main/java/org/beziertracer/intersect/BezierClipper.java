@@ -66,7 +66,7 @@ final class BezierClipper {
         double leafSize = leafSize(tab, s);
         double extentEps = CONVERGED_EXTENT * leafSize;
 
-        boolean unique = RootUniqueness.atMostOneRoot(tab, s, ctx.n3x, ctx.n3y, ctx.n3z);
+        boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && newtonFromCorners(ctx, tab, s, k, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
