@@ -60,6 +60,12 @@ final class RayPatchNewton {
             }
             double du = (b * f2 - d * f1) / det;
             double dv = (c * f1 - a * f2) / det;
+            if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15
+                    && Math.max(Math.abs(f1), Math.abs(f2)) <= 1e-3 * tolerance) {
+                // Already a root to rounding (as in refine): the step could not move the point
+                // by more than rounding, so the evaluation here stands and none is repeated
+                return CONVERGED;
+            }
             u += du;
             v += dv;
             if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
