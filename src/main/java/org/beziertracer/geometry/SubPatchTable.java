@@ -48,6 +48,11 @@ public final class SubPatchTable {
     /** Degrees of patch {@code k}. */
     public final int[] patchDegreeU;
     public final int[] patchDegreeV;
+    /**
+     * Per sub-patch, {@link HodographBounds#STRIDE} doubles: the ray-independent single-root data
+     * of {@link HodographBounds} (cross product of the mean derivative directions and its bound).
+     */
+    public final double[] uniqueness;
     /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
     public final double[] patchSquaredExtent;
 
@@ -86,6 +91,7 @@ public final class SubPatchTable {
         nets = new double[doubles];
         boxes = new double[4 * total];
         bounds = new double[6 * total];
+        uniqueness = new double[HodographBounds.STRIDE * total];
         firstOf = new int[pieces.length + 1];
         double[] box = new double[6];
         int s = 0, off = 0;
@@ -102,6 +108,8 @@ public final class SubPatchTable {
                 netOffset[s] = off;
                 Bounds.ofPoints(nets, off, len / 3, box);
                 System.arraycopy(box, 0, bounds, 6 * s, 6);
+                HodographBounds.compute(nets, off, p.degreeU(), p.degreeV(), uniqueness,
+                        HodographBounds.STRIDE * s, box);
             }
         }
         firstOf[pieces.length] = s;

@@ -20,8 +20,12 @@ import org.beziertracer.geometry.SubPatchTable;
  * <p>Shortcut: when a clipped piece provably holds at most one root ({@link RootUniqueness}),
  * Newton on the parent patch, confined to the piece's parameter box, finds that root directly
  * and the piece is settled (its only root is known, so nothing nearer can hide in it); a failed
- * attempt falls back to clipping. On a leaf's first visit both clips run on the unrestricted net,
- * so a leaf with a unique root needs no de Casteljau restriction at all.
+ * attempt falls back to clipping. Before anything else, a precomputed test per leaf
+ * ({@link RootUniqueness#atMostOneRoot(TraceContext, SubPatchTable, int)}: four dot products)
+ * often proves the whole leaf single-root for this ray; Newton then starts where the ray meets
+ * the parallelogram of the leaf's corners and, when it converges inside the leaf, no net is
+ * projected or clipped at all. Otherwise, on a leaf's first visit both clips run on the
+ * unrestricted net, so a leaf with a unique root needs no de Casteljau restriction.
  *
  * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
  * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a
@@ -66,6 +70,11 @@ final class BezierClipper {
         double leafSize = leafSize(tab, s);
         double extentEps = CONVERGED_EXTENT * leafSize;
 
+        boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
+        if (unique && newtonFromCorners(ctx, tab, s, k, tolerance)) {
+            // The whole leaf holds at most one root and Newton found it: no clipping at all
+            return ctx.rootT > tMin && ctx.rootT < tMax;
+        }
         ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         int sp = 1;
@@ -120,7 +129,8 @@ final class BezierClipper {
                     continue;
                 }
                 double c = ctx.clip[0], d = ctx.clip[1];
-                if (RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+                // (the precomputed test of the leaf, else the box test on its projected net)
+                if (unique || RootUniqueness.atMostOneRoot(arena, base, n, m)) {
                     // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
                     // no restriction needed
                     newtonTries++;
@@ -208,6 +218,36 @@ final class BezierClipper {
     static boolean newtonInPiece(TraceContext ctx, SubPatchTable tab, int k, double u0, double u1,
                                  double v0, double v1, double tolerance) {
         if (RayPatchNewton.solve(ctx, tab, k, 0.5 * (u0 + u1), 0.5 * (v0 + v1), NEWTON_STEPS,
+                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
+            return false;
+        }
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
+        return true;
+    }
+
+    /**
+     * Newton on the parent patch {@code k}, confined to the parameter box of leaf {@code s}, from
+     * the point where the ray meets the parallelogram spanned by the leaf's corner points at
+     * their centroid, in ray space (one Newton step on the corners' bilinear patch from the leaf
+     * centre; only the four corners are projected). True when it converged, the root then
+     * refined as in {@link #newtonInPiece}.
+     */
+    static boolean newtonFromCorners(TraceContext ctx, SubPatchTable tab, int s, int k, double tolerance) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        double[] c = ctx.corners;
+        ctx.projectCorners(tab.nets, tab.netOffset[s], n, m, c);
+        double ex = 0.5 * ((c[2] - c[0]) + (c[6] - c[4])), ey = 0.5 * ((c[3] - c[1]) + (c[7] - c[5]));
+        double fx = 0.5 * ((c[4] - c[0]) + (c[6] - c[2])), fy = 0.5 * ((c[5] - c[1]) + (c[7] - c[3]));
+        double cx = 0.25 * (c[0] + c[2] + c[4] + c[6]), cy = 0.25 * (c[1] + c[3] + c[5] + c[7]);
+        double det = ex * fy - ey * fx;
+        double u = 0.5, v = 0.5;
+        if (Math.abs(det) > 0) {
+            u = Math.min(1, Math.max(0, u + (fx * cy - fy * cx) / det));
+            v = Math.min(1, Math.max(0, v + (ey * cx - ex * cy) / det));
+        }
+        double[] bx = tab.boxes;
+        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
+        if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * u, v0 + (v1 - v0) * v, NEWTON_STEPS,
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
             return false;
         }

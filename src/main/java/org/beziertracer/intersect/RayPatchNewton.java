@@ -18,7 +18,9 @@ final class RayPatchNewton {
 
     /**
      * Iterates from {@code (u,v)} on patch {@code k}; on return {@code ctx.rootU/rootV/rootT}
-     * hold the last iterate and its ray parameter.
+     * hold the last iterate and its ray parameter, and {@code ctx.eval} the surface point and
+     * first derivatives there ({@code ctx.evalPatch = k}; {@link TraceContext#intersect} keeps
+     * them for {@link SceneIntersector#surfacePoint}).
      *
      * @param maxSteps      iteration cap
      * @param lo/hi bounds  the iterate must stay in {@code [uLo,uHi]×[vLo,vHi]} or the solve fails
@@ -29,6 +31,7 @@ final class RayPatchNewton {
         double[] net = table.patchNets;
         int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
         double[] e = ctx.eval;
+        ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
         int result = DIVERGED;
         for (int step = 0; step <= maxSteps; step++) {
             DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
@@ -37,6 +40,8 @@ final class RayPatchNewton {
             double f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
             ctx.rootU = u;
             ctx.rootV = v;
+            ctx.evalU = u;
+            ctx.evalV = v;
             ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
             if (Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance && step > 0) {
                 return CONVERGED;
@@ -55,6 +60,12 @@ final class RayPatchNewton {
             }
             double du = (b * f2 - d * f1) / det;
             double dv = (c * f1 - a * f2) / det;
+            if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15
+                    && Math.max(Math.abs(f1), Math.abs(f2)) <= 1e-3 * tolerance) {
+                // Already a root to rounding (as in refine): the step could not move the point
+                // by more than rounding, so the evaluation here stands and none is repeated
+                return CONVERGED;
+            }
             u += du;
             v += dv;
             if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
@@ -69,6 +80,8 @@ final class RayPatchNewton {
                 f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
                 ctx.rootU = u;
                 ctx.rootV = v;
+                ctx.evalU = u;
+                ctx.evalV = v;
                 ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
                 return Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance ? result : DIVERGED;
             }
@@ -116,7 +129,10 @@ final class RayPatchNewton {
         if (Math.max(Math.abs(g1), Math.abs(g2)) <= Math.max(Math.abs(f1), Math.abs(f2))) {
             ctx.rootU = u;
             ctx.rootV = v;
+            ctx.evalU = u;
+            ctx.evalV = v;
             ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+            System.arraycopy(g, 0, e, 0, 9); // keep ctx.eval at the root
         }
     }
 }

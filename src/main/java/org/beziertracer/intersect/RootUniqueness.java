@@ -1,5 +1,7 @@
 package org.beziertracer.intersect;
 
+import org.beziertracer.geometry.SubPatchTable;
+
 /**
  * A sufficient test that a ray meets a ray-space piece at most once, from the bounds of the
  * piece's first derivatives (hodographs).
@@ -18,6 +20,33 @@ package org.beziertracer.intersect;
  */
 final class RootUniqueness {
     private RootUniqueness() {}
+
+    /**
+     * True when whole sub-patch {@code s} of {@code tab} provably meets the current ray of
+     * {@code ctx} at most once, from its precomputed {@link SubPatchTable#uniqueness} balls: four
+     * dot products, no pass over the net.
+     *
+     * <p>With {@code Su/n} in the ball {@code (a, ra)} and {@code Sv/m} in {@code (b, rb)}, the
+     * four partial derivatives of the test below are {@code n1·a1, n1·b1, n2·a2, n2·b2} with
+     * {@code a1 = a + α1}, {@code a2 = a + α2} ({@code |α| ≤ ra}) and {@code b1, b2} likewise. The
+     * expression is {@code D0 = (n1·a)(n2·b) − (n1·b)(n2·a)} plus six cross terms, which pair up as
+     * {@code |(n1·a)(n2·β2) − (n2·a)(n1·β1)| ≤ rb·(|n1·a| + |n2·a|)}, the same with {@code b} and
+     * {@code ra}, and two products of deviations, each at most {@code ra·rb} ({@code |n·x| ≤ |x|}
+     * for a unit {@code n}). So {@code |D0| > rb·(|n1·a| + |n2·a|) + ra·(|n1·b| + |n2·b|) + 2·ra·rb}
+     * keeps the expression away from zero. A failure proves nothing; the caller then runs the box
+     * test on the projected net, {@link #atMostOneRoot(double[], int, int, int)}.
+     */
+    static boolean atMostOneRoot(TraceContext ctx, SubPatchTable tab, int s) {
+        double[] q = tab.uniqueness;
+        int o = 9 * s;
+        double ax = q[o], ay = q[o + 1], az = q[o + 2], bx = q[o + 3], by = q[o + 4], bz = q[o + 5];
+        double ra = q[o + 6], rb = q[o + 7];
+        double a1 = ctx.n1x * ax + ctx.n1y * ay + ctx.n1z * az, a2 = ctx.n2x * ax + ctx.n2y * ay + ctx.n2z * az;
+        double b1 = ctx.n1x * bx + ctx.n1y * by + ctx.n1z * bz, b2 = ctx.n2x * bx + ctx.n2y * by + ctx.n2z * bz;
+        double bound = rb * (Math.abs(a1) + Math.abs(a2)) + ra * (Math.abs(b1) + Math.abs(b2)) + 2 * ra * rb
+                + q[o + 8];
+        return Math.abs(a1 * b2 - b1 * a2) > bound;
+    }
 
     /**
      * True when the piece at {@code net[base..]} (ray-space points, 3 doubles each, degree

@@ -109,6 +109,7 @@ public final class SceneIntersector {
         ctx.setRay(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
         ctx.found = false;
+        ctx.hitEvalPatch = -1;
         double best = tMax;
         if (mesh != null) {
             TriangleMesh.setRay(ctx);
@@ -206,7 +207,8 @@ public final class SceneIntersector {
 
     /**
      * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal), on the parent patch
-     * for patch hits. Call right after {@link #closestHit} with the same context (it uses the
+     * for patch hits; when the solver's last evaluation was at exactly the hit's (u,v) of that
+     * patch (Newton ends there), it is reused instead of evaluated again (bit-identical). Call right after {@link #closestHit} with the same context (it uses the
      * context's ray).
      */
     public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
@@ -218,9 +220,14 @@ public final class SceneIntersector {
             mesh.surfacePoint(hit.subPatch, hit.b1, hit.b2, sp);
         } else if (hit.kind == Hit.PATCH) {
             int k = hit.index;
-            double[] e = ctx.eval;
             int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
-            DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
+            double[] e = ctx.hitEval;
+            if (ctx.hitEvalPatch != k || ctx.hitEvalU != hit.u || ctx.hitEvalV != hit.v) {
+                // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
+                e = ctx.eval;
+                ctx.evalPatch = -1;
+                DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
+            }
             sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
             sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
             sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];

@@ -46,11 +46,24 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
     final double[] eval = new double[9];
     final double[] refineEval = new double[9];
+    /** {@link #eval} holds S, Su, Sv of patch {@code evalPatch} at {@code (evalU, evalV)} (-1: unknown). */
+    int evalPatch = -1;
+    double evalU, evalV;
+    /**
+     * S, Su, Sv of the best patch hit so far, at {@code (hitEvalU, hitEvalV)} of patch
+     * {@code hitEvalPatch} (-1: none), copied from the solver's last evaluation so that
+     * {@link SceneIntersector#surfacePoint} need not evaluate the same point again.
+     */
+    final double[] hitEval = new double[9];
+    int hitEvalPatch = -1;
+    double hitEvalU, hitEvalV;
     final double[] normal = new double[3];
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
     final double[] clip = new double[2];
     final double[] rayBounds = new double[6];
+    /** First two ray-space coordinates of a net's corners (u,v) = (0,0), (1,0), (0,1), (1,1). */
+    final double[] corners = new double[8];
 
     // The query in flight (set by SceneIntersector)
     SceneIntersector scene;
@@ -108,6 +121,25 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
         }
     }
 
+    /**
+     * Writes the first two ray-space coordinates of the four corner points of the degree
+     * {@code n}×{@code m} net at {@code net[off..]} to {@code out[0..8)}, in the order
+     * {@code P00, Pn0, P0m, Pnm}.
+     */
+    void projectCorners(double[] net, int off, int n, int m, double[] out) {
+        int row = 3 * (n + 1);
+        projectXY(net, off, out, 0);
+        projectXY(net, off + 3 * n, out, 2);
+        projectXY(net, off + row * m, out, 4);
+        projectXY(net, off + row * m + 3 * n, out, 6);
+    }
+
+    private void projectXY(double[] src, int s, double[] out, int o) {
+        double qx = src[s] - ox, qy = src[s + 1] - oy, qz = src[s + 2] - oz;
+        out[o] = n1x * qx + n1y * qy + n1z * qz;
+        out[o + 1] = n2x * qx + n2y * qy + n2z * qz;
+    }
+
     @Override
     public double intersect(int prim, double tMax) {
         TriangleMesh mesh = scene.mesh;
@@ -130,8 +162,15 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
             best.u = rootU;
             best.v = rootV;
             best.kind = Hit.PATCH;
-            best.index = scene.table.parent[prim];
+            int k = scene.table.parent[prim];
+            best.index = k;
             best.subPatch = prim;
+            if (evalPatch == k && evalU == rootU && evalV == rootV) {
+                System.arraycopy(eval, 0, hitEval, 0, 9);
+                hitEvalPatch = k;
+                hitEvalU = rootU;
+                hitEvalV = rootV;
+            }
             return rootT;
         }
         return tMax;
