@@ -208,8 +208,8 @@ public final class SceneIntersector {
     /**
      * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal), on the parent patch
      * for patch hits; when the solver's last evaluation was at exactly the hit's (u,v) of that
-     * patch (Newton ends there), it is reused instead of evaluated again (bit-identical). Call right after {@link #closestHit} with the same context (it uses the
-     * context's ray).
+     * patch (Newton ends there), it is reused instead of evaluated again (bit-identical). Call
+     * right after {@link #closestHit} with the same context (it uses the context's ray).
      */
     public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
         sp.u = hit.u;
