@@ -113,4 +113,13 @@ public final class Fixtures {
             bh.consume(found ? hit.t : -1);
         }
     }
+
+    /** Traces every ray of {@code rays} (6 doubles each) with occluded, consuming the answer. */
+    static void occludedAll(SceneIntersector si, TraceContext ctx, double[] rays, Blackhole bh) {
+        for (int k = 0, count = rays.length / 6; k < count; k++) {
+            int o = 6 * k;
+            bh.consume(si.occluded(ctx, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5],
+                    0, Double.POSITIVE_INFINITY));
+        }
+    }
 }

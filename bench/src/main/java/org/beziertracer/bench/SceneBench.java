@@ -60,11 +60,6 @@ public class SceneBench {
     @Benchmark
     @OperationsPerInvocation(Fixtures.RAYS)
     public void occluded(Blackhole bh) {
-        double[] r = rays;
-        for (int k = 0; k < Fixtures.RAYS; k++) {
-            int o = 6 * k;
-            bh.consume(si.occluded(ctx, r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5],
-                    0, Double.POSITIVE_INFINITY));
-        }
+        Fixtures.occludedAll(si, ctx, rays, bh);
     }
 }
