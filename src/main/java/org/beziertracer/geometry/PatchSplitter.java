@@ -62,7 +62,8 @@ public final class PatchSplitter {
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
             double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (depth >= options.maxDepth()
-                    || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
+                    || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size
+                    && options.criterion().accepts(net, n, m, size, depth)) {
                 out.add(net, u0, u1, v0, v1);
                 return;
             }
