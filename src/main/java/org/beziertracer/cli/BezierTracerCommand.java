@@ -56,6 +56,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     /** The configured command tree: sub-commands plus the one-line error handler. */
     static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
+        cl.setResourceBundle(new CliText());
         cl.setExecutionExceptionHandler(CliErrors::handle);
         return cl;
     }

@@ -2,6 +2,7 @@ package org.beziertracer.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -50,8 +51,7 @@ final class RenderCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE",
-            description = "a .bpt/.obj model, a built-in model (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically)")
@@ -119,20 +119,15 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
     String pixel;
 
-    /**
-     * Reads a model or scene. Until {@code SceneFiles} is merged this wraps a bare model with
-     * default settings; at the merge, replace the body with {@code SceneFiles.load(nameOrPath)}.
-     */
-    static SceneDocument load(String nameOrPath) {
-        return SceneFiles.load(nameOrPath);
-    }
-
     @Override
     public Integer call() throws IOException, InterruptedException {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
-        if (output != null && !output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png")) {
+        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
+            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
+        }
+        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new IllegalArgumentException(output + ": the output must be a .png file");
         }
         if (repeat < 1 || repeat > MAX_REPEAT) {
@@ -145,7 +140,7 @@ final class RenderCommand implements Callable<Integer> {
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
-        SceneDocument doc = load(model);
+        SceneDocument doc = SceneFiles.load(model);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
         Scene scene = doc.scene();

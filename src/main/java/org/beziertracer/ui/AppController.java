@@ -348,7 +348,7 @@ public final class AppController {
         }
         history.reset(doc.scene());
         documentName = name;
-        file = source != null && !source.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? source : null;
+        file = source != null && ModelLoader.savesInPlace(source) ? source : null;
         hover = null;
         tools.apply(doc.settings());
         tools.light = LightPlacement.SCENE;
@@ -379,7 +379,7 @@ public final class AppController {
     }
 
     public boolean saveAs() {
-        Path p = dialogs.chooseSave("Save surface", "bpt", "obj");
+        Path p = dialogs.chooseSave("Save surface", ModelLoader.saveExtensions());
         return p != null && saveTo(p);
     }
 

@@ -103,7 +103,7 @@ class ObjReaderTest {
     @Test
     void negativeIndicesAndSlashFormsAndContinuationsAreRead() throws URISyntaxException, java.io.IOException {
         Path file = Path.of(getClass().getResource("mixed.obj").toURI());
-        assertEquals(List.of(BILINEAR), ObjReader.read(file));
+        assertEquals(List.of(BILINEAR), FileFormats.OBJ.read(file).scene().patches());
     }
 
     @Test
