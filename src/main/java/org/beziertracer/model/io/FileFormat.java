@@ -127,7 +127,7 @@ public final class FileFormat {
     public SceneDocument read(Path file) {
         String fileName = file.toString();
         if (!Files.isRegularFile(file)) {
-            throw new ModelFormatException(fileName, Files.isDirectory(file) ? "is a folder, not a " + name + " file"
+            throw new ModelFormatException(fileName, Files.isDirectory(file) ? "is a folder, not a file"
                     : "no such file");
         }
         try (InputStream in = Files.newInputStream(file)) {
