@@ -36,7 +36,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp(desktopApp);
         }
-        return commandLine().execute(args);
+        CommandLine cl = commandLine();
+        return execute(cl, args);
     }
 
     /**
@@ -47,10 +48,23 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         CommandLine cl = commandLine();
         cl.setOut(out);
         cl.setErr(err);
-        int code = cl.execute(args);
+        int code = execute(cl, args);
         out.flush();
         err.flush();
         return code;
+    }
+
+    /**
+     * Runs the command; an {@link Error} (out of memory, stack overflow), which picocli lets
+     * through, becomes one line too ({@link CliErrors}).
+     */
+    private static int execute(CommandLine cl, String[] args) {
+        try {
+            return cl.execute(args);
+        } catch (Error e) {
+            String command = args.length > 0 && cl.getSubcommands().containsKey(args[0]) ? args[0] : cl.getCommandName();
+            return CliErrors.report(e, command, cl.getErr());
+        }
     }
 
     /** The configured command tree: sub-commands plus the one-line error handler. */

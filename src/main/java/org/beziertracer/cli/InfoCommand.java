@@ -9,6 +9,7 @@ import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.SceneFiles;
 
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.SceneIntersector;
 
@@ -54,6 +55,7 @@ final class InfoCommand implements Callable<Integer> {
             out.println("objects: " + count(scene.planes().size(), "plane") + ", "
                     + count(scene.spheres().size(), "sphere") + ", " + count(scene.lights().size(), "light"));
         }
+        HeapBudget.require(model, scene, IntersectOptions.defaults());
         SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
         out.println("sub-patches: " + si.subPatchCount());
         out.println("bvh: " + si.nodeCount() + " nodes, depth " + si.depth());

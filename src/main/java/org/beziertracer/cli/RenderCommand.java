@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -151,7 +152,7 @@ final class RenderCommand implements Callable<Integer> {
             }
             scene = scene.toBuilder().lights(list).build();
         }
-        checkMeshMemory(tessellate, scene.patchCount());
+        HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
         RenderJob job = RenderJob.prepare(scene, settings, options);
         job = job.withCamera(camera(job.camera()));
         PrintWriter out = spec.commandLine().getOut();
@@ -235,33 +236,8 @@ final class RenderCommand implements Callable<Integer> {
 
     /** Refuses an image whose buffers would not fit in the heap (instead of an OutOfMemoryError). */
     static void checkMemory(RenderSettings s) {
-        long need = Film.bytesFor(s.width(), s.height()) + 12L * s.width() * s.height();
-        Runtime rt = Runtime.getRuntime();
-        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        if (need > free * 0.8) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "image of %dx%d pixels needs about %d MB but only %d MB of heap is free; use a smaller --size or a larger -Xmx",
-                    s.width(), s.height(), need >> 20, free >> 20));
-        }
-    }
-
-    /** About the bytes per triangle of a tessellated scene: corners, normals, (u,v), boxes and BVH nodes. */
-    static final long BYTES_PER_TRIANGLE = 320;
-
-    /** Refuses a tessellation whose triangles would not fit in the heap. */
-    static void checkMeshMemory(int k, int patches) {
-        if (k == 0) {
-            return;
-        }
-        long triangles = 2L * k * k * patches;
-        long need = triangles * BYTES_PER_TRIANGLE;
-        Runtime rt = Runtime.getRuntime();
-        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        if (need > free * 0.8) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "--tessellate %d makes %d triangles, about %d MB, but only %d MB of heap is free; use a smaller K or a larger -Xmx",
-                    k, triangles, need >> 20, free >> 20));
-        }
+        HeapBudget.require(null, s.width() + "x" + s.height() + " pixels",
+                Film.bytesFor(s.width(), s.height()) + 12L * s.width() * s.height());
     }
 
     static Vec3 vec(String option, String text) {

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Random;
 import java.util.concurrent.Callable;
 
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
@@ -89,8 +90,9 @@ final class TraceCommand implements Callable<Integer> {
         }
         Scene scene = SceneFiles.load(model).scene();
         boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty();
-        SceneIntersector si = SceneIntersector.build(scene,
-                IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate));
+        IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
+        HeapBudget.require(model, scene, io);
+        SceneIntersector si = SceneIntersector.build(scene, io);
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();

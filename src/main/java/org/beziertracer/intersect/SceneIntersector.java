@@ -54,8 +54,13 @@ public final class SceneIntersector {
         this.buildMillis = buildMillis;
     }
 
-    /** Splits the patches and builds the acceleration structure. */
+    /**
+     * Splits the patches and builds the acceleration structure.
+     *
+     * @throws IllegalArgumentException (one line, {@link HeapBudget}) when it would not fit in the heap
+     */
     public static SceneIntersector build(Scene scene, IntersectOptions options) {
+        HeapBudget.require(null, scene, options);
         long t0 = System.nanoTime();
         if (options.tessellated()) {
             SubPatchTable whole = SubPatchTable.build(scene.patches(), SplitOptions.wholePatches());

@@ -339,11 +339,8 @@ public final class AppController {
         SceneDocument doc;
         try {
             doc = loader.get();
-        } catch (RuntimeException e) {
-            dialogs.error("Cannot open " + name, e.getMessage());
-            return false;
-        } catch (OutOfMemoryError e) {
-            dialogs.error("Cannot open " + name, name + ": not enough memory to load this model");
+        } catch (RuntimeException | OutOfMemoryError e) {
+            dialogs.error("Cannot open " + name, oneLine(e));
             return false;
         }
         history.reset(doc.scene());
@@ -436,9 +433,8 @@ public final class AppController {
         }
     }
 
-    private static String oneLine(Exception e) {
-        String m = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-        return m.replace('\n', ' ');
+    private static String oneLine(Throwable e) {
+        return org.beziertracer.render.Failures.describe(e);
     }
 
     /** Window closing: true when it may close (edits saved or discarded); stops the engine. */

@@ -3,6 +3,8 @@ package org.beziertracer.ui;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.beziertracer.intersect.HeapBudget;
+import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.model.io.BuiltIns;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.FileFormats;
@@ -42,11 +44,16 @@ public final class ModelLoader {
 
     /** Loads a built-in by name. */
     public static SceneDocument builtIn(String name) {
-        return SceneFiles.load(name);
+        return fitting(name, SceneFiles.load(name));
     }
 
-    /** Loads a file. */
+    /** Loads a file; one that would not fit in the heap is refused ({@link HeapBudget}). */
     public static SceneDocument load(Path file) {
-        return SceneFiles.load(file.toString());
+        return fitting(file.toString(), SceneFiles.load(file.toString()));
+    }
+
+    private static SceneDocument fitting(String name, SceneDocument doc) {
+        HeapBudget.require(name, doc.scene(), IntersectOptions.defaults());
+        return doc;
     }
 }

@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import org.beziertracer.UserMessages;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -63,6 +64,6 @@ class ScenesEverywhereTest {
         Run r = Run.of("info", "kettle");
         assertEquals(1, r.code());
         assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teapot-room) and not a"
-                + " .bpt, .obj or .json file", r.err().strip());
+                + " .bpt, .obj or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
 }

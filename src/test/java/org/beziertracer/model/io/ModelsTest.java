@@ -1,7 +1,6 @@
 package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -9,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.math.Aabb;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.RenderSettings;
@@ -54,8 +54,8 @@ class ModelsTest {
 
     @Test
     void flatGridsOutsideTwoToSixteenPointsAreRejected() {
-        assertThrows(IllegalArgumentException.class, () -> Models.flatGrid(1, 4));
-        assertThrows(IllegalArgumentException.class, () -> Models.flatGrid(4, 17));
+        UserMessages.of(IllegalArgumentException.class, () -> Models.flatGrid(1, 4));
+        UserMessages.of(IllegalArgumentException.class, () -> Models.flatGrid(4, 17));
     }
 
     @Test
@@ -81,20 +81,20 @@ class ModelsTest {
 
     @Test
     void anUnknownExtensionOrMissingFileIsAOneLineErrorNamingTheFile() {
-        ModelFormatException e = assertThrows(ModelFormatException.class, () -> Models.load("model.stl"));
+        String e = UserMessages.of(ModelFormatException.class, () -> Models.load("model.stl"));
         assertEquals("model.stl: not a built-in name (patch, teapot, teapot-room) and not a .bpt, .obj or .json file",
-                e.getMessage());
+                e);
         String missing = dir.resolve("missing.bpt").toString();
-        e = assertThrows(ModelFormatException.class, () -> Models.load(missing));
-        assertEquals(missing + ": no such file", e.getMessage());
+        e = UserMessages.of(ModelFormatException.class, () -> Models.load(missing));
+        assertEquals(missing + ": no such file", e);
     }
 
     @Test
     void parseErrorsInALoadedFileNameThePathAsGiven() throws IOException {
         Path bad = dir.resolve("bad.bpt");
         Files.writeString(bad, "1\n3 3\n0 0 oops\n");
-        ModelFormatException e = assertThrows(ModelFormatException.class, () -> Models.load(bad.toString()));
-        assertTrue(e.getMessage().startsWith(bad + ":3: expected a number for the z coordinate of point 1"),
-                e.getMessage());
+        String e = UserMessages.of(ModelFormatException.class, () -> Models.load(bad.toString()));
+        assertTrue(e.startsWith(bad + ":3: expected a number for the z coordinate of point 1"),
+                e);
     }
 }
