@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 
 import org.beziertracer.intersect.HeapBudget;
+import org.beziertracer.model.io.Echo;
 
 /**
  * One line that tells a user why work failed, for the command line and the app: the message of an
@@ -29,7 +30,7 @@ public final class Failures {
         String message = t.getMessage();
         if ((t instanceof IllegalArgumentException || t instanceof IOException) && message != null
                 && !message.isBlank()) {
-            return message.replace('\r', ' ').replace('\n', ' ');
+            return Echo.cutQuoted(message.replace('\r', ' ').replace('\n', ' '));
         }
         return "an internal error stopped this work (set " + DEBUG_VARIABLE + "=1 to see where)";
     }

@@ -74,4 +74,12 @@ class LimitsTest {
         String line = UserMessages.checkOneLineOutput(r.err());
         assertEquals("beziertracer render: " + folder + ": is a folder; -o needs a .png file name", line);
     }
+
+    @Test
+    void optionValuesEchoedInAMessageAreCutToSixtyCharacters() {
+        String eye = "1,".repeat(500) + "2";
+        Run r = Run.of("render", "patch", "--size", "8x8", "-o", "x.png", "--eye", eye);
+        String line = UserMessages.checkOneLineOutput(r.err());
+        assertEquals("beziertracer render: --eye must be x,y,z, got '" + eye.substring(0, 59) + "…'", line);
+    }
 }

@@ -1,6 +1,8 @@
 package org.beziertracer.model.io;
 
 import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Input echoed back in a message: cut to {@value #MAX_CHARS} characters and kept on one line, so
@@ -33,6 +35,17 @@ public final class Echo {
             i = next;
         }
         return sb.toString();
+    }
+
+    private static final Pattern QUOTED = Pattern.compile("(['\"])([^'\"]{" + (MAX_CHARS + 1) + ",})\\1");
+
+    /**
+     * {@code message} with every quoted run ({@code '…'} or {@code "…"}) longer than
+     * {@value #MAX_CHARS} characters {@link #cut}: a safety net for messages built by code that
+     * echoes input without {@link #quote} (validation in the model records, option parsers).
+     */
+    public static String cutQuoted(String message) {
+        return QUOTED.matcher(message).replaceAll(m -> Matcher.quoteReplacement(m.group(1) + cut(m.group(2)) + m.group(1)));
     }
 
     /** {@link #cut} in double quotes: {@code "abc"}. */

@@ -208,7 +208,7 @@ public final class ObjReader {
                 return;
             }
             if (t.length > 1 && t[1].equals("rat")) {
-                throw error("unsupported: cstype " + type + " (rational surfaces); expected cstype bezier");
+                throw error("unsupported: cstype " + Echo.cut(type) + " (rational surfaces); expected cstype bezier");
             }
             if (Set.of("bspline", "bmatrix", "cardinal", "taylor").contains(type)) {
                 throw error("unsupported: cstype " + type + "; expected cstype bezier");

@@ -129,7 +129,7 @@ final class SceneReader {
         } catch (ModelFormatException e) {
             throw e;
         } catch (IllegalArgumentException e) {
-            throw where.error(e.getMessage());
+            throw where.error(Echo.cutQuoted(e.getMessage()));
         }
     }
 
@@ -286,8 +286,8 @@ final class SceneReader {
         if (ref.isString()) {
             Integer index = named.get(ref.asString());
             if (index == null) {
-                throw ref.error("unknown material \"" + ref.asString() + "\" (defined: "
-                        + (named.isEmpty() ? "none" : JsonNode.list(named.keySet())) + ")");
+                throw ref.error("unknown material " + Echo.quote(ref.asString()) + " (defined: "
+                        + (named.isEmpty() ? "none" : Echo.cut(JsonNode.list(named.keySet()))) + ")");
             }
             return index;
         }
@@ -386,7 +386,7 @@ final class SceneReader {
         try {
             return new RenderSettings(w, h, spp, sampler, method, bvh, shading, checker, shadows, depth);
         } catch (IllegalArgumentException e) {
-            throw v.error(e.getMessage());
+            throw v.error(Echo.cutQuoted(e.getMessage()));
         }
     }
 }

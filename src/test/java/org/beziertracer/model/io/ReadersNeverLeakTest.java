@@ -150,6 +150,11 @@ class ReadersNeverLeakTest {
         String shown = message.substring(0, Math.min(message.length(), 300));
         assertTrue(message.contains("\"" + "k".repeat(Echo.MAX_CHARS - 1) + "…\""), shown);
         assertTrue(message.length() < 300, shown);
+        String sampler = "fancy".repeat(100);
+        message = UserMessages.of(ModelFormatException.class, () -> SceneFiles.parse("{\"version\": 1, " + SPHERE
+                + ", \"render\": {\"sampler\": \"" + sampler + "\"}}", "scene.json", null));
+        assertTrue(message.startsWith("scene.json: render.sampler: unknown sampler '" + sampler.substring(0, 59) + "…'"),
+                message);
         String token = "9".repeat(100) + "x";
         message = UserMessages.of(ModelFormatException.class, () -> BptReader.read("1\n1 1\n" + token, "t.bpt"));
         assertTrue(message.endsWith("found \"" + "9".repeat(Echo.MAX_CHARS - 1) + "…\""), message);

@@ -31,6 +31,9 @@ final class FuzzHarness implements AutoCloseable {
 
     static final int TIMEOUT_SECONDS = 5;
 
+    /** Longest message after the file name: the longest fixed text plus a few 60-character echoes. */
+    static final int MAX_DETAIL_CHARS = 400;
+
     /** Classpath root of the seed folders ({@code bpt/}, {@code obj/}, {@code json/}). */
     static final String SEEDS = "/fuzz/seeds";
     /** Classpath root of the kept failures, one folder per format like the seeds. */
@@ -111,7 +114,12 @@ final class FuzzHarness implements AutoCloseable {
             if (problem != null) {
                 return "message " + problem + ": " + message;
             }
-            return message.startsWith(path + ":") ? null : "message does not start with the file: " + message;
+            if (!message.startsWith(path + ":")) {
+                return "message does not start with the file: " + message;
+            }
+            // Echoed input is cut to 60 characters, so a message stays short whatever the file holds
+            return message.length() <= path.length() + MAX_DETAIL_CHARS ? null
+                    : "message of " + message.length() + " characters: " + message.substring(0, 300) + "…";
         } catch (Throwable t) {
             return "escaped as " + t + (t.getStackTrace().length > 0 ? " at " + t.getStackTrace()[0] : "");
         }
