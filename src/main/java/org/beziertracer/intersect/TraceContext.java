@@ -76,6 +76,13 @@ public final class TraceContext {
     /** Tessellated mode: barycentric weights of the hit triangle's second and third corner. */
     double rootB1, rootB2;
 
+    // A solver's search over the pieces of one leaf (BezierClipper, SubdivisionSolver): the
+    // nearest root so far, in the solver's own parameters
+    double pieceBestT, pieceBestU, pieceBestV;
+    boolean pieceFound;
+    /** Bézier clipping: Newton attempts on single-root pieces of the leaf so far. */
+    int clipNewtonTries;
+
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
 
