@@ -1,5 +1,6 @@
 package org.beziertracer.intersect;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -53,7 +54,7 @@ class LeavesTest {
             Hit hit = new Hit();
             assertTrue(si.closestHit(ctx, 0, 0, 5, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit), "tessellate " + k);
             assertEquals(Hit.SPHERE, hit.kind);
-            assertEquals(4, hit.t, 1e-12);
+            assertEquals(4, hit.t, ROUNDING);
             assertFalse(si.closestHit(ctx, 3, 0, 5, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit), "tessellate " + k);
         }
     }
