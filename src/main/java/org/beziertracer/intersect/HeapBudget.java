@@ -35,8 +35,7 @@ public final class HeapBudget {
         var patches = scene.patches();
         if (options.tessellated()) {
             long triangles = 2L * options.tessellate() * options.tessellate() * patches.size();
-            return SubPatchTable.estimateBytes(patches, patches.size())
-                    + TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + Bvh.estimateBytes(triangles);
+            return TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + Bvh.estimateBytes(triangles);
         }
         SplitOptions split = options.effectiveSplit();
         long subPatches = SubPatchTable.estimateCount(patches, split);
