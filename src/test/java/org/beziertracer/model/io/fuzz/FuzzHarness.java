@@ -1,5 +1,6 @@
 package org.beziertracer.model.io.fuzz;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.URISyntaxException;
@@ -16,16 +17,20 @@ import java.util.concurrent.TimeoutException;
 import java.util.stream.Stream;
 
 import org.beziertracer.UserMessages;
+import org.beziertracer.model.io.FileFormat;
+import org.beziertracer.model.io.FileFormats;
 import org.beziertracer.model.io.ModelFormatException;
 import org.beziertracer.model.io.SceneFiles;
 
 /**
- * Loads one file the way a user's command does ({@link SceneFiles#load} of its path) on a worker
- * thread with a {@value #TIMEOUT_SECONDS} s limit, and judges the outcome: it loads, or it fails
- * with one {@link ModelFormatException} line that names the file and passes {@link UserMessages}.
- * Anything else — another exception, an {@link Error}, a timeout — is a failure, described in one
- * line for the report. The work folder holds a copy of the seed tree, so relative model
- * references in scene seeds resolve.
+ * Loads one file on a worker thread with a {@value #TIMEOUT_SECONDS} s limit and judges the
+ * outcome: it loads, or it fails with one {@link ModelFormatException} line that names the file
+ * and passes {@link UserMessages}. Anything else — another exception, an {@link Error}, a
+ * timeout — is a failure, described in one line for the report. Mutants are read from memory by
+ * the format the registry finds for their name ({@link FileFormat#read(java.io.InputStream,
+ * String, Path)}: writing thousands of files costs more than reading them); kept regressions are
+ * read from disk the way a user's command does ({@link SceneFiles#load}). The work folder holds a
+ * copy of the seed tree, so relative model references in scene seeds resolve.
  */
 final class FuzzHarness implements AutoCloseable {
 
@@ -84,15 +89,30 @@ final class FuzzHarness implements AutoCloseable {
     }
 
     /**
-     * Writes {@code bytes} as {@code work/format/name} and loads it.
+     * Reads {@code bytes} as if they were the file {@code work/format/name}.
      *
      * @return null when it loaded or failed properly; otherwise one line saying what went wrong
      */
-    String judge(String format, String name, byte[] bytes) throws IOException, InterruptedException {
+    String judge(String format, String name, byte[] bytes) throws InterruptedException {
+        Path file = work.resolve(format).resolve(name);
+        FileFormat reader = FileFormats.find(name).orElseThrow();
+        return within(file.toString(), () -> reader.read(new ByteArrayInputStream(bytes), file.toString(),
+                file.getParent()));
+    }
+
+    /**
+     * Writes {@code bytes} as {@code work/format/name} and opens it as a user's command does.
+     *
+     * @return null when it loaded or failed properly; otherwise one line saying what went wrong
+     */
+    String judgeFile(String format, String name, byte[] bytes) throws IOException, InterruptedException {
         Path file = work.resolve(format).resolve(name);
         Files.write(file, bytes);
-        String path = file.toString();
-        Future<String> outcome = worker.submit(() -> load(path));
+        return within(file.toString(), () -> SceneFiles.load(file.toString()));
+    }
+
+    private String within(String path, Runnable load) throws InterruptedException {
+        Future<String> outcome = worker.submit(() -> judged(path, load));
         try {
             return outcome.get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
         } catch (TimeoutException e) {
@@ -104,9 +124,9 @@ final class FuzzHarness implements AutoCloseable {
         }
     }
 
-    private static String load(String path) {
+    private static String judged(String path, Runnable load) {
         try {
-            SceneFiles.load(path);
+            load.run();
             return null;
         } catch (ModelFormatException e) {
             String message = e.getMessage();

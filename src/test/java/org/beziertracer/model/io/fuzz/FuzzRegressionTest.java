@@ -26,7 +26,7 @@ class FuzzRegressionTest {
         try (FuzzHarness harness = new FuzzHarness(work)) {
             for (String format : List.of("bpt", "obj", "json")) {
                 for (Path p : FuzzHarness.files(FuzzHarness.REGRESSIONS, format)) {
-                    String problem = harness.judge(format, "replay." + format, Files.readAllBytes(p));
+                    String problem = harness.judgeFile(format, "replay." + format, Files.readAllBytes(p));
                     replayed++;
                     if (problem != null) {
                         failures.add(format + "/" + p.getFileName() + ": " + problem);

@@ -16,7 +16,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Seeded mutation fuzzing of every reader through the path a user's command takes: each format's
+ * Seeded mutation fuzzing of every reader, through the format registry: each format's
  * seed files (src/test/resources/fuzz/seeds/FORMAT/ — drop a file there to add a seed) give
  * {@value #DEFAULT_MUTANTS} mutants (or {@code -Dfuzz.mutants=N}) from seed {@code -Dfuzz.seed}
  * (default {@value #DEFAULT_SEED}). Each mutant must load, or fail with one line naming the file,
@@ -44,7 +44,7 @@ class MutationFuzzTest {
         try (FuzzHarness harness = new FuzzHarness(work)) {
             for (Path s : seeds) {
                 seedBytes.add(Files.readAllBytes(s));
-                assertNull(harness.judge(format, "seed." + format, seedBytes.get(seedBytes.size() - 1)),
+                assertNull(harness.judgeFile(format, "seed." + format, seedBytes.get(seedBytes.size() - 1)),
                         "the seed " + s.getFileName() + " itself must load cleanly");
             }
             Random rnd = new Random(seed ^ format.hashCode());
