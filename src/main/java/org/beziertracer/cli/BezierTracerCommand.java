@@ -62,8 +62,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         try {
             return cl.execute(args);
         } catch (Error e) {
-            String command = args.length > 0 && cl.getSubcommands().containsKey(args[0]) ? args[0] : cl.getCommandName();
-            return CliErrors.report(e, command, cl.getErr());
+            boolean sub = args.length > 0 && cl.getSubcommands().containsKey(args[0]);
+            return CliErrors.report(e, sub ? args[0] : cl.getCommandName(), cl.getErr());
         }
     }
 

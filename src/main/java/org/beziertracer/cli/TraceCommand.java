@@ -23,6 +23,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
 import org.beziertracer.model.io.Echo;
+import org.beziertracer.model.io.IoReasons;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.TextSource;
 
@@ -164,9 +165,13 @@ final class TraceCommand implements Callable<Integer> {
             };
         }
         if (output.getParent() != null && !Files.isDirectory(output.getParent())) {
-            throw new IOException(output + ": the folder does not exist");
+            throw new IOException(output + ": cannot write: the folder " + output.getParent() + " does not exist");
         }
-        return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
+        try {
+            return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new IOException(output + ": cannot write: " + IoReasons.of(e));
+        }
     }
 
     private InputStream openInput() throws IOException {

@@ -25,7 +25,7 @@ public final class DocumentFiles {
     /** Cells per patch side of an exported mesh. */
     public static final int MESH_SEGMENTS = 16;
 
-    /** Saves the surfaces of {@code scene} in the model format the file's extension names ({@link ModelLoader#SAVE_FORMATS}). */
+    /** Saves the surfaces of {@code scene} in the model format its extension names ({@link ModelLoader#SAVE_FORMATS}). */
     public static void saveModel(Path file, Scene scene) throws IOException {
         FileFormat format = ModelLoader.SAVE_FORMATS.stream().filter(f -> f.matches(file.toString())).findFirst()
                 .orElseThrow(() -> new IllegalArgumentException(file + ": save as "

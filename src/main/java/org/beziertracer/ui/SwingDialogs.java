@@ -27,10 +27,12 @@ final class SwingDialogs implements UserDialogs {
         JFileChooser fc = new JFileChooser(folder);
         fc.setDialogTitle("Open model or scene");
         for (FileFormat f : ModelLoader.OPEN_FORMATS) {
-            fc.addChoosableFileFilter(new FileNameExtensionFilter(f.filterLabel(), f.extensions().toArray(String[]::new)));
+            fc.addChoosableFileFilter(new FileNameExtensionFilter(f.filterLabel(),
+                    f.extensions().toArray(String[]::new)));
         }
-        fc.setFileFilter(new FileNameExtensionFilter("Models and scenes (" + FileFormats.patterns(ModelLoader.OPEN_FORMATS)
-                + ")", FileFormats.extensions(ModelLoader.OPEN_FORMATS).toArray(String[]::new)));
+        fc.setFileFilter(new FileNameExtensionFilter("Models and scenes ("
+                + FileFormats.patterns(ModelLoader.OPEN_FORMATS) + ")",
+                FileFormats.extensions(ModelLoader.OPEN_FORMATS).toArray(String[]::new)));
         if (fc.showOpenDialog(parent) != JFileChooser.APPROVE_OPTION) {
             return null;
         }

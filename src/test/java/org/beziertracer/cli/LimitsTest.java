@@ -82,4 +82,14 @@ class LimitsTest {
         String line = UserMessages.checkOneLineOutput(r.err());
         assertEquals("beziertracer render: --eye must be x,y,z, got '" + eye.substring(0, 59) + "…'", line);
     }
+
+    @Test
+    void aCsvThatCannotBeWrittenNamesTheTargetAndTheReason() {
+        Run r = Run.of("trace", "teapot", "--random", "1", "-o", dir.toString());
+        assertEquals("beziertracer trace: " + dir + ": cannot write: is a folder", UserMessages.checkOneLineOutput(r.err()));
+        Path missing = dir.resolve("gone").resolve("hits.csv");
+        r = Run.of("trace", "teapot", "--random", "1", "-o", missing.toString());
+        assertEquals("beziertracer trace: " + missing + ": cannot write: the folder " + missing.getParent()
+                + " does not exist", UserMessages.checkOneLineOutput(r.err()));
+    }
 }

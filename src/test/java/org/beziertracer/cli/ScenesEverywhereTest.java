@@ -66,4 +66,12 @@ class ScenesEverywhereTest {
         assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teapot-room) and not a"
                 + " .bpt, .obj or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
+
+    @Test
+    void everyCommandsHelpListsTheRegisteredFormatsAndBuiltIns() {
+        for (String command : new String[] {"info", "trace", "render"}) {
+            String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
+            assertTrue(help.contains("a .bpt, .obj or .json file, or a built-in: patch, teapot, teapot-room"), help);
+        }
+    }
 }

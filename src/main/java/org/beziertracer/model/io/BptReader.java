@@ -114,7 +114,8 @@ public final class BptReader {
         long degree = NumberText.parseWhole(token);
         if (degree < 1 || degree > BezierPatch.MAX_DEGREE) {
             throw new ModelFormatException(fileName, tokens.line(), "expected the " + what + ", found "
-                    + NumberText.describe(token) + ": degree " + Echo.cut(token) + " out of range 1.." + BezierPatch.MAX_DEGREE);
+                    + NumberText.describe(token) + ": degree " + Echo.cut(token) + " out of range 1.."
+                    + BezierPatch.MAX_DEGREE);
         }
         return (int) degree;
     }

@@ -45,7 +45,8 @@ public final class Echo {
      * echoes input without {@link #quote} (validation in the model records, option parsers).
      */
     public static String cutQuoted(String message) {
-        return QUOTED.matcher(message).replaceAll(m -> Matcher.quoteReplacement(m.group(1) + cut(m.group(2)) + m.group(1)));
+        return QUOTED.matcher(message)
+                .replaceAll(m -> Matcher.quoteReplacement(m.group(1) + cut(m.group(2)) + m.group(1)));
     }
 
     /** {@link #cut} in double quotes: {@code "abc"}. */

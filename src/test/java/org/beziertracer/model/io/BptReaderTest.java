@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
-import org.beziertracer.model.BezierPatch;
 import org.beziertracer.UserMessages;
+import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 
 class BptReaderTest {

@@ -8,8 +8,8 @@ import java.net.URISyntaxException;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.beziertracer.model.BezierPatch;
 import org.beziertracer.UserMessages;
+import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 
 class ObjReaderTest {
