@@ -39,7 +39,8 @@ public final class HeapBudget {
         }
         SplitOptions split = options.effectiveSplit();
         long subPatches = SubPatchTable.estimateCount(patches, split);
-        return SubPatchTable.estimateBytes(patches, subPatches) + Bvh.estimateBytes(subPatches);
+        long solverBytes = options.method() == Method.NEWTON ? 4L * NewtonLeafRecords.STRIDE * subPatches : 0;
+        return SubPatchTable.estimateBytes(patches, subPatches) + Bvh.estimateBytes(subPatches) + solverBytes;
     }
 
     /**

@@ -64,6 +64,8 @@ public final class TraceContext {
     final double[] rayBounds = new double[6];
     /** First two ray-space coordinates of a net's corners (u,v) = (0,0), (1,0), (0,1), (1,1). */
     final double[] corners = new double[8];
+    /** {@link NewtonSolver}'s attempt limits: the leaf's overlapped domain, the t range, a root to avoid. */
+    final double[] newton = new double[NewtonSolver.SCRATCH];
 
     // The query in flight (set by SceneIntersector)
     double tMin;

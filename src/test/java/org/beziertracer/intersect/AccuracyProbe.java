@@ -17,20 +17,7 @@ public final class AccuracyProbe {
         int rays = Integer.parseInt(args.length > 0 ? args[0] : "5000");
         String what = args.length > 1 ? args[1] : "teapot";
         Method[] methods = {Method.CLIPPING, Method.NEWTON};
-        SplitOptions split = new SplitOptions(true, Double.parseDouble(System.getProperty("flat", "0.05")),
-                Integer.getInteger("depth", 6), Boolean.getBoolean("probe") ? new NewtonRefinement() : org.beziertracer.geometry.LeafCriterion.NONE);
-        NewtonRefinement.FLAT_DEPTH = Integer.getInteger("flatdepth", 6);
-        NewtonRefinement.NU = Double.parseDouble(System.getProperty("nu", "0"));
-        NewtonRefinement.TILT_DEG = Double.parseDouble(System.getProperty("tilt", "60"));
-        NewtonSolver.OVERLAP = Double.parseDouble(System.getProperty("overlap", "" + NewtonSolver.OVERLAP));
-        NewtonSolver.WANDER = Double.parseDouble(System.getProperty("wander", "" + NewtonSolver.WANDER));
-        NewtonSolver.STARTS = Integer.getInteger("starts", NewtonSolver.STARTS);
-        NewtonSolver.MODE = Integer.getInteger("mode", 1);
-        NewtonSolver.LOOSE = Double.parseDouble(System.getProperty("loose", "1e5"));
-        NewtonSolver.OVERLAP = Double.parseDouble(System.getProperty("overlap", "1"));
-        NewtonSolver.WANDER = Double.parseDouble(System.getProperty("wander", "1"));
-        NewtonSolver.MAX_STEPS = Integer.getInteger("steps", NewtonSolver.MAX_STEPS);
-        NewtonSolver.TOL_SCALE = Double.parseDouble(System.getProperty("tolscale", "1"));
+        SplitOptions split = null;
         if (System.getProperty("methods") != null) {
             String[] names = System.getProperty("methods").split(",");
             methods = new Method[names.length];
@@ -97,11 +84,9 @@ public final class AccuracyProbe {
 
     /** Returns {refHits, hitMiss, farther, fartherRobust}. */
     static int[] run(Scene scene, Method method, SplitOptions split, double[] rays, String label) {
-        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults().withMethod(method).withSplit(split));
+        SceneIntersector si = SceneIntersector.build(scene, split == null ? IntersectOptions.defaults().withMethod(method) : IntersectOptions.defaults().withMethod(method).withSplit(split));
         QuadtreeReference ref = new QuadtreeReference();
         TraceContext ctx = si.newContext();
-        NewtonSolver.EVALS = 0; NewtonSolver.RUNS = 0; NewtonSolver.CONV_RUNS = 0; NewtonSolver.FAILED_RUNS = 0; NewtonSolver.FAILED_EVALS = 0; NewtonSolver.NON_UNIQUE = 0;
-        java.util.Arrays.fill(NewtonSolver.STEPS_HIST, 0); java.util.Arrays.fill(NewtonSolver.IMPROVE, 0);
         Hit hit = new Hit();
         double size = si.sceneSize();
         int count = rays.length / 6, refHits = 0, hitMiss = 0, farther = 0, robust = 0, missRobust = 0;
@@ -135,14 +120,9 @@ public final class AccuracyProbe {
             }
         }
         if (label != null) {
-            System.out.printf(Locale.ROOT, "%s %-9s evals/ray %.2f rays %d refHits %d hitMiss %d (%.3f%%, robust misses %d) farther %d (robust %d) max|dt| %.2e subPatches %d%n",
-                    label, method.label(), NewtonSolver.EVALS / (double) count, count, refHits, hitMiss, 100.0 * hitMiss / count, missRobust, farther, robust, maxDt,
+            System.out.printf(Locale.ROOT, "%s %-9s rays %d refHits %d hitMiss %d (%.3f%%, robust misses %d) farther %d (robust %d) max|dt| %.2e subPatches %d%n",
+                    label, method.label(), count, refHits, hitMiss, 100.0 * hitMiss / count, missRobust, farther, robust, maxDt,
                     si.subPatchCount());
-        }
-        if (method == Method.NEWTON && label != null) {
-            System.out.printf(Locale.ROOT, "   runs/ray %.2f conv %.2f failed %.2f failedEvals/ray %.2f nonunique/ray %.2f hist %s%n", NewtonSolver.RUNS / (double) count,
-                NewtonSolver.CONV_RUNS / (double) count, NewtonSolver.FAILED_RUNS / (double) count, NewtonSolver.FAILED_EVALS / (double) count,
-                NewtonSolver.NON_UNIQUE / (double) count, java.util.Arrays.toString(NewtonSolver.STEPS_HIST) + " improve " + java.util.Arrays.toString(NewtonSolver.IMPROVE) + " uniq2nd " + NewtonSolver.UNIQ_SECOND_RUNS + "/" + NewtonSolver.UNIQ_SECOND_FOUND);
         }
         return new int[] {refHits, hitMiss, farther, robust, si.subPatchCount()};
     }
