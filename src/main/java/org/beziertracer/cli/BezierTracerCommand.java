@@ -67,16 +67,25 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     static int launchApp(Runnable desktopApp) {
         if (GraphicsEnvironment.isHeadless()) {
             System.err.println("beziertracer: no display available, so the desktop app cannot open; "
-                    + "use the command line instead: java -jar target/beziertracer.jar --help");
+                    + "use the command line instead: " + howToRun() + " --help");
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {
             System.err.println("beziertracer: no desktop app in this build; "
-                    + "use the command line: java -jar target/beziertracer.jar --help");
+                    + "use the command line: " + howToRun() + " --help");
             return EXIT_NO_DISPLAY;
         }
         desktopApp.run();
         return APP_RUNNING;
+    }
+
+    /**
+     * How the user started this program: the launcher of the desktop package ({@code -Pdist}; its
+     * path is in {@code jpackage.app-path}) or the jar.
+     */
+    static String howToRun() {
+        String launcher = System.getProperty("jpackage.app-path");
+        return launcher != null && !launcher.isBlank() ? launcher : "java -jar target/beziertracer.jar";
     }
 
     @Override
