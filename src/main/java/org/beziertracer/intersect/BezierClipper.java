@@ -179,10 +179,7 @@ final class BezierClipper {
         if (unique || RootUniqueness.atMostOneRoot(arena, 0, n, m)) {
             // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there
             ctx.clipNewtonTries++;
-            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
-            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
-            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * a, leafU0 + leafDu * b,
-                    leafV0 + leafDv * c, leafV0 + leafDv * d, slack)) {
+            if (newtonInLeafPiece(ctx, tab, s, a, b, c, d, slack)) {
                 return SOLVED;
             }
         }
@@ -237,10 +234,7 @@ final class BezierClipper {
         if (!stalled && ctx.clipNewtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
             // At most one root in this piece: Newton on the parent, confined to the piece, finds it
             ctx.clipNewtonTries++;
-            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
-            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
-            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * u0, leafU0 + leafDu * u1,
-                    leafV0 + leafDv * v0, leafV0 + leafDv * v1, slack)) {
+            if (newtonInLeafPiece(ctx, tab, s, u0, u1, v0, v1, slack)) {
                 offerRoot(ctx, tMin);
                 return sp - 1; // the piece's only root is known, whatever its t
             }
@@ -253,6 +247,18 @@ final class BezierClipper {
         }
         split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
         return sp + 1;
+    }
+
+    /**
+     * {@link #newtonInPiece} on the piece {@code [a,b]×[c,d]} of leaf {@code s}, in the leaf's own
+     * parameters (mapped to the parent patch's).
+     */
+    private static boolean newtonInLeafPiece(TraceContext ctx, SubPatchTable tab, int s, double a, double b, double c,
+                                             double d, double tolerance) {
+        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+        return newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * a, leafU0 + leafDu * b,
+                leafV0 + leafDv * c, leafV0 + leafDv * d, tolerance);
     }
 
     /**
