@@ -9,6 +9,9 @@ import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import org.beziertracer.app.ModelLoader;
+import org.beziertracer.app.UserDialogs;
+
 /** {@link UserDialogs} with {@link JFileChooser} and {@link JOptionPane}, remembering the last folder. */
 final class SwingDialogs implements UserDialogs {
 

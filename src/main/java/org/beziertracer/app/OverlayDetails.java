@@ -1,0 +1,121 @@
+package org.beziertracer.app;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+
+/**
+ * The control polygon and the memoir's cheap wireframe for the patches chosen by
+ * {@link ExtentBudget}: iso-curves evaluated with de Casteljau on the <b>projected</b> 2-D control
+ * points (not projectively exact, but fast, and exact for a parallel projection by affine
+ * invariance). Not thread-safe (one per build).
+ */
+final class OverlayDetails {
+
+    private final PatchProjection projection;
+    private final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+    private float[] segments = new float[64];
+    private int segmentCount;
+    private final List<float[]> curves = new ArrayList<>();
+
+    OverlayDetails(PatchProjection projection) {
+        this.projection = projection;
+    }
+
+    /** Segments of the control polygon of a patch: rows and columns of its net. */
+    static long polygonCost(BezierPatch p) {
+        return (long) p.degreeU() * (p.degreeV() + 1) + (long) p.degreeV() * (p.degreeU() + 1);
+    }
+
+    /** Polyline points of a patch's iso-curves at {@code k} subdivisions. */
+    static long curveCost(int k) {
+        return 2L * (k + 1) * (k + 1);
+    }
+
+    /**
+     * Adds the polygon and/or the iso-curves of every patch whose extent reaches its threshold.
+     *
+     * @param extent       per patch, negative when not drawn
+     * @param polygonFrom  smallest extent that gets its polygon (infinity: none)
+     * @param curvesFrom   smallest extent that gets iso-curves (infinity: none)
+     * @param k            iso-curve subdivisions per direction
+     */
+    void add(Scene scene, float[] extent, double polygonFrom, double curvesFrom, int k) {
+        for (int p = 0; p < extent.length; p++) {
+            boolean polygon = extent[p] >= 0 && extent[p] >= polygonFrom;
+            boolean iso = extent[p] >= 0 && extent[p] >= curvesFrom;
+            if (!polygon && !iso) {
+                continue;
+            }
+            BezierPatch patch = scene.patches().get(p);
+            projection.project(patch);
+            if (polygon) {
+                addPolygon(patch.degreeU(), patch.degreeV());
+            }
+            if (iso) {
+                addIsoCurves(patch.degreeU(), patch.degreeV(), Math.max(1, k));
+            }
+        }
+    }
+
+    private void addPolygon(int n, int m) {
+        double[] xy = projection.xy;
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0; i < n; i++) {
+                segment(xy, j * (n + 1) + i, j * (n + 1) + i + 1);
+            }
+        }
+        for (int i = 0; i <= n; i++) {
+            for (int j = 0; j < m; j++) {
+                segment(xy, j * (n + 1) + i, (j + 1) * (n + 1) + i);
+            }
+        }
+    }
+
+    private void segment(double[] xy, int a, int b) {
+        if (4 * segmentCount + 4 > segments.length) {
+            segments = java.util.Arrays.copyOf(segments, 2 * segments.length);
+        }
+        int s = 4 * segmentCount++;
+        segments[s] = (float) xy[2 * a];
+        segments[s + 1] = (float) xy[2 * a + 1];
+        segments[s + 2] = (float) xy[2 * b];
+        segments[s + 3] = (float) xy[2 * b + 1];
+    }
+
+    /** The k + 1 iso-curves of constant v, then the k + 1 of constant u. */
+    private void addIsoCurves(int n, int m, int k) {
+        double[] grid = new double[2 * (k + 1) * (k + 1)];
+        for (int b = 0; b <= k; b++) {
+            for (int a = 0; a <= k; a++) {
+                DeCasteljau.evaluate(projection.xy, 0, n, m, 2, (double) a / k, (double) b / k,
+                        grid, 2 * (b * (k + 1) + a), scratch);
+            }
+        }
+        for (int b = 0; b <= k; b++) {
+            float[] line = new float[2 * (k + 1)];
+            for (int a = 0; a <= k; a++) {
+                line[2 * a] = (float) grid[2 * (b * (k + 1) + a)];
+                line[2 * a + 1] = (float) grid[2 * (b * (k + 1) + a) + 1];
+            }
+            curves.add(line);
+        }
+        for (int a = 0; a <= k; a++) {
+            float[] line = new float[2 * (k + 1)];
+            for (int b = 0; b <= k; b++) {
+                line[2 * b] = (float) grid[2 * (b * (k + 1) + a)];
+                line[2 * b + 1] = (float) grid[2 * (b * (k + 1) + a) + 1];
+            }
+            curves.add(line);
+        }
+    }
+
+    float[] segments() { return segments; }
+
+    int segmentCount() { return segmentCount; }
+
+    List<float[]> curves() { return curves; }
+}
