@@ -17,12 +17,12 @@ public final class OverlayBuilder {
 
     /** Handle radius in user-space pixels (device pixels at scale 1). */
     public static final double HANDLE_RADIUS = 3.5;
-    /** Most handles drawn. */
-    public static final int HANDLE_BUDGET = 6_000;
-    /** Most control-polygon segments drawn. */
-    public static final long SEGMENT_BUDGET = 30_000;
+    /** Most handles drawn (a handle is one small image: about 5 µs each). */
+    public static final int HANDLE_BUDGET = 4_000;
+    /** Most control-polygon segments drawn (anti-aliased and dashed: the dearest shapes). */
+    public static final long SEGMENT_BUDGET = 8_000;
     /** Most iso-curve polyline points drawn. */
-    public static final long CURVE_POINT_BUDGET = 120_000;
+    public static final long CURVE_POINT_BUDGET = 100_000;
 
     public static OverlayGeometry build(OverlayRequest r) {
         Scene scene = r.scene();
@@ -50,9 +50,9 @@ public final class OverlayBuilder {
         double polygonFrom = r.polygon()
                 ? ExtentBudget.threshold(extent, p -> OverlayDetails.polygonCost(scene.patches().get(p)), SEGMENT_BUDGET)
                 : Double.POSITIVE_INFINITY;
-        long curveCost = OverlayDetails.curveCost(r.isoCurves());
         double curvesFrom = r.isoCurves() > 0
-                ? ExtentBudget.threshold(extent, p -> curveCost, CURVE_POINT_BUDGET)
+                ? ExtentBudget.threshold(extent, p -> OverlayDetails.curveCost(OverlayDetails.subdivisions(r.isoCurves(),
+                        extent[p])), CURVE_POINT_BUDGET)
                 : Double.POSITIVE_INFINITY;
         details.add(scene, extent, polygonFrom, curvesFrom, r.isoCurves());
         return new OverlayGeometry(scene, projector, kept.xy(), kept.depth(), kept.patch(), kept.point(), kept.count(),

@@ -11,7 +11,8 @@ import org.beziertracer.model.Scene;
  * The control polygon and the memoir's cheap wireframe for the patches chosen by
  * {@link ExtentBudget}: iso-curves evaluated with de Casteljau on the <b>projected</b> 2-D control
  * points (not projectively exact, but fast, and exact for a parallel projection by affine
- * invariance). Not thread-safe (one per build).
+ * invariance), with fewer subdivisions on patches too small on screen to show them. Not
+ * thread-safe (one per build).
  */
 final class OverlayDetails {
 
@@ -28,6 +29,17 @@ final class OverlayDetails {
     /** Segments of the control polygon of a patch: rows and columns of its net. */
     static long polygonCost(BezierPatch p) {
         return (long) p.degreeU() * (p.degreeV() + 1) + (long) p.degreeV() * (p.degreeU() + 1);
+    }
+
+    /** Pixels per iso-curve step below which finer subdivisions add nothing visible. */
+    static final double MIN_STEP_PIXELS = 3;
+
+    /**
+     * The subdivisions a patch of this on-screen extent gets: the chosen {@code k}, fewer when its
+     * steps would be shorter than {@value #MIN_STEP_PIXELS} pixels (at least 1).
+     */
+    static int subdivisions(int k, double extent) {
+        return (int) Math.max(1, Math.min(k, Math.ceil(extent / MIN_STEP_PIXELS)));
     }
 
     /** Polyline points of a patch's iso-curves at {@code k} subdivisions. */
@@ -56,7 +68,7 @@ final class OverlayDetails {
                 addPolygon(patch.degreeU(), patch.degreeV());
             }
             if (iso) {
-                addIsoCurves(patch.degreeU(), patch.degreeV(), Math.max(1, k));
+                addIsoCurves(patch.degreeU(), patch.degreeV(), subdivisions(k, extent[p]));
             }
         }
     }

@@ -6,6 +6,7 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
+import java.awt.image.BufferedImage;
 
 import org.beziertracer.app.Handle;
 import org.beziertracer.app.OverlayBuilder;
@@ -17,7 +18,8 @@ import org.beziertracer.app.OverlaySnapshot;
  * picture: the projected iso-curves, the control polygon, the control-point handles, the hovered
  * and the selected points. It draws only what the snapshot holds — a bounded number of shapes,
  * prepared off the event thread — and calls nothing back. Works in device pixels; {@code unit} is
- * the device scale, so lines keep their look under HiDPI. Stateless.
+ * the device scale, so lines keep their look under HiDPI. Event thread only (it keeps the
+ * handle's image).
  */
 final class OverlayPainter {
     private OverlayPainter() {}
@@ -27,6 +29,10 @@ final class OverlayPainter {
     static final Color POINT = new Color(0xFFFFFF);
     static final Color HOVER = new Color(0xFFD23F);
     static final Color SELECTED = new Color(0xFF4F4F);
+
+    // Event thread only
+    private static BufferedImage sprite;
+    private static double spriteUnit;
 
     static void paint(Graphics2D g, OverlaySnapshot s, double unit) {
         OverlayGeometry geo = s.geometry();
@@ -57,8 +63,10 @@ final class OverlayPainter {
         }
         double r = OverlayBuilder.HANDLE_RADIUS * unit;
         g.setStroke(new BasicStroke((float) unit));
+        BufferedImage sprite = sprite(unit);
+        double c = sprite.getWidth() / 2.0;
         for (int k = 0; k < geo.handleCount(); k++) {
-            dot(g, geo.handleX(k), geo.handleY(k), r, POINT);
+            g.drawImage(sprite, (int) Math.floor(geo.handleX(k) - c + 0.5), (int) Math.floor(geo.handleY(k) - c + 0.5), null);
         }
         Handle h = s.hover();
         if (h != null) {
@@ -67,6 +75,24 @@ final class OverlayPainter {
         for (Handle sel : s.selected()) {
             dot(g, sel.x(), sel.y(), 2 * r, SELECTED);
         }
+    }
+
+    /** The handle drawn once, at this scale, to be stamped: far cheaper than filling and stroking each. */
+    private static BufferedImage sprite(double unit) {
+        if (sprite == null || spriteUnit != unit) {
+            double r = OverlayBuilder.HANDLE_RADIUS * unit;
+            int size = (int) Math.ceil(2 * r + 2 * unit) + 2;
+            BufferedImage img = new BufferedImage(size, size, BufferedImage.TYPE_INT_ARGB);
+            Graphics2D g = img.createGraphics();
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+            g.setStroke(new BasicStroke((float) unit));
+            dot(g, size / 2.0, size / 2.0, r, POINT);
+            g.dispose();
+            sprite = img;
+            spriteUnit = unit;
+        }
+        return sprite;
     }
 
     private static void dot(Graphics2D g, double x, double y, double r, Color fill) {
