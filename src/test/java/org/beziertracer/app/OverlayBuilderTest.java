@@ -91,17 +91,18 @@ class OverlayBuilderTest {
 
     @Test
     void aDenseModelGetsABoundedOverlayThatThinsByScreenDensity() {
-        Scene s = grid(100); // 10 000 patches, 160 000 points
-        ScreenProjector far = fit(s, 40, 800, 600);
+        Scene s = grid(100); // 10 000 patches, 160 000 points, on a big picture: more cells than the budget
+        ScreenProjector far = fit(s, 40, 1600, 1200);
         OverlayGeometry g = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 12, 1));
         assertTrue(g.handleCount() <= OverlayBuilder.HANDLE_BUDGET, "handles " + g.handleCount());
-        assertTrue(g.handleCount() > 1000, "the screen still fills with handles: " + g.handleCount());
+        assertTrue(g.handleCount() > OverlayBuilder.HANDLE_BUDGET / 4, "the screen still fills with handles: "
+                + g.handleCount());
         assertTrue(g.thinned());
         assertTrue(g.segmentCount() <= OverlayBuilder.SEGMENT_BUDGET, "segments " + g.segmentCount());
         long curvePoints = g.isoCurves().stream().mapToLong(c -> c.length / 2).sum();
         assertTrue(curvePoints <= OverlayBuilder.CURVE_POINT_BUDGET, "curve points " + curvePoints);
         assertEquals(160_000, g.pointCount());
-        // No two handles closer than a cell: thinning never drops a point that stands alone
+        // No two handles in one cell (merged cells are whole multiples of the first)
         double cell = Math.ceil(2 * OverlayBuilder.HANDLE_RADIUS);
         Set<Long> cells = new HashSet<>();
         for (int k = 0; k < g.handleCount(); k++) {
