@@ -48,10 +48,21 @@ public final class AppActions {
     public AppActions(AppModel app, Supplier<BufferedImage> picture, Runnable toggleTheme, BooleanSupplier dark,
                       Runnable quit) {
         this.app = app;
-        FileCommands f = app.files();
-        EditCommands e = app.edits();
-        SettingsModel s = app.settings();
-        // File
+        addFileActions(app.files(), picture, quit);
+        addEditActions(app.edits());
+        addViewActions(app.settings());
+        addRenderActions(app.settings());
+        Action theme = add("dark", "Dark Theme", "Switch between the light and the dark theme", key(KeyEvent.VK_T, CTRL | SHIFT),
+                toggleTheme);
+        syncs.add(() -> theme.putValue(Action.SELECTED_KEY, dark.getAsBoolean()));
+        for (String name : ModelLoader.BUILT_INS) {
+            add("model:" + name, name, "Open the built-in " + name, null, () -> app.files().openBuiltIn(name));
+        }
+        app.addListener(this::refresh);
+        refresh();
+    }
+
+    private void addFileActions(FileCommands f, Supplier<BufferedImage> picture, Runnable quit) {
         add("open", "Open…", "Open a BPT or OBJ model or a scene file", key(KeyEvent.VK_O, CTRL), f::open);
         add("save", "Save", "Save the edited surface (BPT or OBJ)", key(KeyEvent.VK_S, CTRL), f::save);
         add("saveAs", "Save As…", "Save the edited surface to a new BPT or OBJ file", key(KeyEvent.VK_S, CTRL | SHIFT), f::saveAs);
@@ -60,14 +71,18 @@ public final class AppActions {
         add("exportMesh", "Export Mesh (OBJ)…", "Tessellate the surface into triangles and save an OBJ mesh",
                 key(KeyEvent.VK_E, CTRL | SHIFT), f::exportMesh);
         add("quit", "Quit", "Close the app (asks about unsaved edits)", key(KeyEvent.VK_Q, CTRL), quit);
-        // Edit
+    }
+
+    private void addEditActions(EditCommands e) {
         add("undo", "Undo", "Undo the last edit", key(KeyEvent.VK_Z, CTRL), e::undo);
         add("redo", "Redo", "Redo the edit just undone", key(KeyEvent.VK_Z, CTRL | SHIFT), e::redo);
-        // Toolbox: edits and view
         add("resetPoints", "Reset Control Points", "Replace the surface by a flat square grid of the chosen size",
                 key(KeyEvent.VK_R, CTRL), e::resetControlPoints);
         add("randomize", "Randomize Control Points", "Random Z offsets within a fixed range (seed in the status bar)",
                 key(KeyEvent.VK_R, CTRL | SHIFT), e::randomize);
+    }
+
+    private void addViewActions(SettingsModel s) {
         add("resetView", "Reset View", "Back to the original rotation and zoom", key(KeyEvent.VK_HOME, 0), app::resetView);
         add("zoomIn", "Zoom In", "Move towards the surface (also the mouse wheel)", key(KeyEvent.VK_EQUALS, CTRL),
                 () -> app.view().zoom(-1));
@@ -78,6 +93,21 @@ public final class AppActions {
         toggle("polygon", Toggle.CONTROL_POLYGON, "Control Polygon", "Show the control polygon", key(KeyEvent.VK_F3, 0));
         toggle("points", Toggle.CONTROL_POINTS, "Control Points", "Show (and allow dragging) the control points",
                 key(KeyEvent.VK_F4, 0));
+        add("finer", "Finer Wireframe", "More wireframe subdivisions", key(KeyEvent.VK_CLOSE_BRACKET, CTRL),
+                () -> s.step(Level.WIREFRAME_SUBDIVISION, 1));
+        add("coarser", "Coarser Wireframe", "Fewer wireframe subdivisions", key(KeyEvent.VK_OPEN_BRACKET, CTRL),
+                () -> s.step(Level.WIREFRAME_SUBDIVISION, -1));
+        add("morePerspective", "More Perspective", "Stronger perspective divergence", key(KeyEvent.VK_CLOSE_BRACKET, CTRL | SHIFT),
+                () -> s.step(Level.PERSPECTIVE, 10));
+        add("lessPerspective", "Less Perspective", "Weaker perspective (0 = parallel rays)", key(KeyEvent.VK_OPEN_BRACKET, CTRL | SHIFT),
+                () -> s.step(Level.PERSPECTIVE, -10));
+        add("gridU", "More Points along u", "Grid of a new patch: one more control point along u (2..10, wraps)",
+                key(KeyEvent.VK_U, CTRL | SHIFT), () -> s.cycle(Level.GRID_U));
+        add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",
+                key(KeyEvent.VK_V, CTRL | SHIFT), () -> s.cycle(Level.GRID_V));
+    }
+
+    private void addRenderActions(SettingsModel s) {
         toggle("phong", Toggle.PHONG, "Phong Shading", "Phong lighting (off: flat, unlit colour)", key(KeyEvent.VK_F5, 0));
         toggle("texture", Toggle.TEXTURE, "Texture (Checker)", "Procedural checker texture in (u,v)", key(KeyEvent.VK_F6, 0));
         toggle("normals", Toggle.NORMALS, "Surface Normals (RGB)", "Colour = (n + 1) / 2 of the unit normal",
@@ -101,30 +131,10 @@ public final class AppActions {
         add("light", "Next Light Position", "Cycle the light position", key(KeyEvent.VK_L, CTRL), s::cycleLight);
         add("spp", "Next Samples per Pixel", "Cycle the super-sampling rate (4, 9, 16)", key(KeyEvent.VK_P, CTRL | SHIFT),
                 () -> s.cycle(Level.SAMPLES_PER_PIXEL));
-        add("finer", "Finer Wireframe", "More wireframe subdivisions", key(KeyEvent.VK_CLOSE_BRACKET, CTRL),
-                () -> s.step(Level.WIREFRAME_SUBDIVISION, 1));
-        add("coarser", "Coarser Wireframe", "Fewer wireframe subdivisions", key(KeyEvent.VK_OPEN_BRACKET, CTRL),
-                () -> s.step(Level.WIREFRAME_SUBDIVISION, -1));
         add("moreInteractive", "More Passes per Frame", "Show the picture after more progressive passes",
                 key(KeyEvent.VK_PERIOD, CTRL), () -> s.step(Level.INTERACTIVITY, 1));
         add("lessInteractive", "Fewer Passes per Frame", "Show the picture after fewer progressive passes",
                 key(KeyEvent.VK_COMMA, CTRL), () -> s.step(Level.INTERACTIVITY, -1));
-        add("morePerspective", "More Perspective", "Stronger perspective divergence", key(KeyEvent.VK_CLOSE_BRACKET, CTRL | SHIFT),
-                () -> s.step(Level.PERSPECTIVE, 10));
-        add("lessPerspective", "Less Perspective", "Weaker perspective (0 = parallel rays)", key(KeyEvent.VK_OPEN_BRACKET, CTRL | SHIFT),
-                () -> s.step(Level.PERSPECTIVE, -10));
-        add("gridU", "More Points along u", "Grid of a new patch: one more control point along u (2..10, wraps)",
-                key(KeyEvent.VK_U, CTRL | SHIFT), () -> s.cycle(Level.GRID_U));
-        add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",
-                key(KeyEvent.VK_V, CTRL | SHIFT), () -> s.cycle(Level.GRID_V));
-        Action theme = add("dark", "Dark Theme", "Switch between the light and the dark theme", key(KeyEvent.VK_T, CTRL | SHIFT),
-                toggleTheme);
-        syncs.add(() -> theme.putValue(Action.SELECTED_KEY, dark.getAsBoolean()));
-        for (String name : ModelLoader.BUILT_INS) {
-            add("model:" + name, name, "Open the built-in " + name, null, () -> f.openBuiltIn(name));
-        }
-        app.addListener(this::refresh);
-        refresh();
     }
 
     private static KeyStroke key(int code, int modifiers) {

@@ -62,14 +62,25 @@ public final class ToolboxPanel extends JPanel {
         setLayout(new BoxLayout(this, BoxLayout.Y_AXIS));
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         SettingsModel s = app.settings();
+        for (JPanel p : new JPanel[] {surfaceSection(s), viewSection(s), shadingSection(s), qualitySection(s)}) {
+            add(p);
+        }
+        add(Box.createVerticalGlue());
+        app.addListener(this::refresh);
+        refresh();
+    }
 
+    private JPanel surfaceSection(SettingsModel s) {
         JPanel surface = section("Surface");
         surface.add(button("resetPoints"));
         surface.add(button("randomize"));
         surface.add(row(new JLabel("New grid u × v"), gridU, gridV));
         gridU.addChangeListener(e -> onInt(v -> s.set(Level.GRID_U, v), (Integer) gridU.getValue()));
         gridV.addChangeListener(e -> onInt(v -> s.set(Level.GRID_V, v), (Integer) gridV.getValue()));
+        return surface;
+    }
 
+    private JPanel viewSection(SettingsModel s) {
         JPanel view = section("View");
         view.add(button("resetView"));
         JButton mode = new JButton(actions.get("rayTrace"));
@@ -82,7 +93,11 @@ public final class ToolboxPanel extends JPanel {
         view.add(labelled("Perspective", perspective));
         subdivision.addChangeListener(e -> onInt(v -> s.set(Level.WIREFRAME_SUBDIVISION, v), subdivision.getValue()));
         perspective.addChangeListener(e -> onInt(v -> s.set(Level.PERSPECTIVE, v), perspective.getValue()));
+        view.add(check("dark"));
+        return view;
+    }
 
+    private JPanel shadingSection(SettingsModel s) {
         JPanel shading = section("Shading");
         shading.add(check("phong"));
         shading.add(check("texture"));
@@ -91,7 +106,10 @@ public final class ToolboxPanel extends JPanel {
         shading.add(check("reflections"));
         shading.add(labelled("Light", combo(light, "light", "Light position")));
         light.addActionListener(e -> onInt(v -> s.set(LightPlacement.values()[v]), light.getSelectedIndex()));
+        return shading;
+    }
 
+    private JPanel qualitySection(SettingsModel s) {
         method.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override
             public Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
@@ -113,15 +131,7 @@ public final class ToolboxPanel extends JPanel {
         spp.addActionListener(e -> onInt(v -> s.set(Level.SAMPLES_PER_PIXEL, v), (Integer) spp.getSelectedItem()));
         method.addActionListener(e -> onInt(v -> s.set(Method.values()[v]), method.getSelectedIndex()));
         interactivity.addChangeListener(e -> onInt(v -> s.set(Level.INTERACTIVITY, v), interactivity.getValue()));
-
-        view.add(check("dark"));
-
-        for (JPanel p : new JPanel[] {surface, view, shading, quality}) {
-            add(p);
-        }
-        add(Box.createVerticalGlue());
-        app.addListener(this::refresh);
-        refresh();
+        return quality;
     }
 
     private static Integer[] boxed(int[] values) {
