@@ -108,21 +108,21 @@ final class OverlayDetails {
             }
         }
         for (int b = 0; b <= k; b++) {
-            float[] line = new float[2 * (k + 1)];
-            for (int a = 0; a <= k; a++) {
-                line[2 * a] = (float) grid[2 * (b * (k + 1) + a)];
-                line[2 * a + 1] = (float) grid[2 * (b * (k + 1) + a) + 1];
-            }
-            curves.add(line);
+            curves.add(line(grid, k, b * (k + 1), 1));
         }
         for (int a = 0; a <= k; a++) {
-            float[] line = new float[2 * (k + 1)];
-            for (int b = 0; b <= k; b++) {
-                line[2 * b] = (float) grid[2 * (b * (k + 1) + a)];
-                line[2 * b + 1] = (float) grid[2 * (b * (k + 1) + a) + 1];
-            }
-            curves.add(line);
+            curves.add(line(grid, k, a, k + 1));
         }
+    }
+
+    /** The k + 1 grid points {@code first, first + step, …} as a polyline. */
+    private static float[] line(double[] grid, int k, int first, int step) {
+        float[] line = new float[2 * (k + 1)];
+        for (int t = 0; t <= k; t++) {
+            line[2 * t] = (float) grid[2 * (first + t * step)];
+            line[2 * t + 1] = (float) grid[2 * (first + t * step) + 1];
+        }
+        return line;
     }
 
     float[] segments() { return segments; }

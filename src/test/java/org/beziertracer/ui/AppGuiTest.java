@@ -14,9 +14,6 @@ import java.awt.image.BufferedImage;
 import java.util.Arrays;
 
 import org.beziertracer.model.Scene;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.MethodOrderer;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
@@ -33,21 +30,6 @@ import org.junit.jupiter.api.TestMethodOrder;
 @Tag("gui")
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class AppGuiTest extends GuiSession {
-
-    @BeforeAll
-    static void launch() throws Exception {
-        start();
-    }
-
-    @AfterAll
-    static void close() {
-        stop();
-    }
-
-    @BeforeEach
-    void reset() {
-        defaultPatch();
-    }
 
     @Test
     @Order(1)
@@ -300,28 +282,18 @@ class AppGuiTest extends GuiSession {
         assertTrue(GuiDriver.differing(bent, d.capturePanel(), 24) > 500, "flat again");
 
         BufferedImage before = d.capturePanel();
-        javax.swing.JSlider perspective = d.find("tool.perspective");
-        d.click(perspective);
-        d.key(KeyEvent.VK_HOME);
-        d.settle();
+        slide("perspective", KeyEvent.VK_HOME);
         assertTrue(GuiDriver.differing(before, d.capturePanel(), 24) > 200, "orthographic looks different");
 
         d.tool("rayTrace");
         d.settle();
         BufferedImage fine = d.capturePanel();
-        javax.swing.JSlider subdivision = d.find("tool.subdivision");
-        d.click(subdivision);
-        d.key(KeyEvent.VK_HOME);
-        d.settle();
+        slide("subdivision", KeyEvent.VK_HOME);
         assertTrue(GuiDriver.differing(fine, d.capturePanel(), 30) > 50, "one wireframe subdivision draws fewer curves");
         d.tool("rayTrace");
         d.settle();
 
-        javax.swing.JSlider interactivity = d.find("tool.interactivity");
-        d.click(interactivity);
-        d.key(KeyEvent.VK_END);
-        d.settle();
-        assertEquals(8, (int) GuiDriver.onEdt(interactivity::getValue));
+        assertEquals(8, slide("interactivity", KeyEvent.VK_END));
         assertTrue(d.status("pass").matches("pass (\\d+) of \\1"), "the frame still completes: " + d.status("pass"));
 
         d.click(d.find("tool.method"));
@@ -349,6 +321,15 @@ class AppGuiTest extends GuiSession {
         d.key(KeyEvent.VK_ENTER);
         d.settle();
         assertEquals("9 spp", d.status("spp"));
+    }
+
+    /** Clicks the slider {@code tool.<id>}, presses {@code key}, waits; returns the slider's value. */
+    private static int slide(String id, int key) {
+        javax.swing.JSlider slider = d.find("tool." + id);
+        d.click(slider);
+        d.key(key);
+        d.settle();
+        return GuiDriver.onEdt(slider::getValue);
     }
 
     @Test

@@ -21,8 +21,6 @@ import org.beziertracer.app.OverlayGeometry;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.SceneDocument;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -42,19 +40,8 @@ class BigModelGuiTest extends GuiSession {
     static final int PATCHES = Integer.getInteger("gui.bigModel.patches", DEFAULT_PATCHES);
     static final long MILLIS = Long.getLong("gui.bigModel.millis", 1000);
 
-    @BeforeAll
-    static void launch() throws Exception {
-        start();
-    }
-
-    @AfterAll
-    static void close() {
-        stop();
-    }
-
     @Test
     void aBigModelOpensWithoutFreezingRepaintsPromptlyAndStillDrags() throws Exception {
-        defaultPatch();
         Scene big = Scene.builder().patches(BigModels.grid(PATCHES)).build();
         // The event thread's longest stall while the model opens, measured by a heartbeat
         AtomicLong worstStall = new AtomicLong();

@@ -136,18 +136,7 @@ final class GuiDriver {
     }
 
     static Component find(Component root, String name) {
-        if (name.equals(root.getName())) {
-            return root;
-        }
-        if (root instanceof Container ct) {
-            for (Component child : ct.getComponents()) {
-                Component hit = find(child, name);
-                if (hit != null) {
-                    return hit;
-                }
-            }
-        }
-        return null;
+        return descendant(root, Component.class, c -> name.equals(c.getName()));
     }
 
     /** Clicks the centre of a component (scrolling it into view first). */
@@ -221,12 +210,17 @@ final class GuiDriver {
     }
 
     static <T extends Component> T descendant(Component root, Class<T> type) {
-        if (type.isInstance(root)) {
+        return descendant(root, type, c -> true);
+    }
+
+    /** The first component below {@code root} (itself included, depth first) of {@code type} that {@code test} accepts. */
+    static <T extends Component> T descendant(Component root, Class<T> type, java.util.function.Predicate<T> test) {
+        if (type.isInstance(root) && test.test(type.cast(root))) {
             return type.cast(root);
         }
         if (root instanceof Container ct) {
             for (Component child : ct.getComponents()) {
-                T hit = descendant(child, type);
+                T hit = descendant(child, type, test);
                 if (hit != null) {
                     return hit;
                 }
@@ -255,18 +249,7 @@ final class GuiDriver {
 
     /** The button labelled {@code text} in {@code root}, or null. */
     static AbstractButton button(Container root, String text) {
-        for (Component comp : root.getComponents()) {
-            if (comp instanceof AbstractButton b && text.equals(b.getText())) {
-                return b;
-            }
-            if (comp instanceof Container ct) {
-                AbstractButton hit = button(ct, text);
-                if (hit != null) {
-                    return hit;
-                }
-            }
-        }
-        return null;
+        return descendant(root, AbstractButton.class, b -> text.equals(b.getText()));
     }
 
     /** Types plain ASCII text (letters, digits, / . - _ space) with the keyboard. */

@@ -4,6 +4,9 @@ import java.awt.Point;
 import java.awt.Rectangle;
 
 import org.beziertracer.app.Settings;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
 
 /**
  * Shared set-up of the GUI test classes: one app per class, reset to the default patch and the
@@ -13,15 +16,22 @@ abstract class GuiSession {
 
     static GuiDriver d;
 
+    @BeforeAll
     static void start() throws Exception {
         d = GuiDriver.launch();
     }
 
+    @AfterAll
     static void stop() {
         if (d != null) {
             d.close();
             d = null;
         }
+    }
+
+    @BeforeEach
+    void reset() {
+        defaultPatch();
     }
 
     /** Set-up plumbing (not under test): the default patch, default settings, home view. */

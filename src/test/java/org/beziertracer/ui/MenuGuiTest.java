@@ -22,9 +22,6 @@ import org.beziertracer.app.DocumentFiles;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.Models;
 import org.beziertracer.model.io.SceneDocument;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.MethodOrderer;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
@@ -43,21 +40,6 @@ class MenuGuiTest extends GuiSession {
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void launch() throws Exception {
-        start();
-    }
-
-    @AfterAll
-    static void close() {
-        stop();
-    }
-
-    @BeforeEach
-    void reset() {
-        defaultPatch();
-    }
 
     private static String title() {
         return GuiDriver.onEdt(() -> d.frame.getTitle());
