@@ -56,6 +56,6 @@ public final class OverlayBuilder {
                 : Double.POSITIVE_INFINITY;
         details.add(scene, extent, polygonFrom, curvesFrom, r.isoCurves());
         return new OverlayGeometry(scene, projector, kept.xy(), kept.depth(), kept.patch(), kept.point(), kept.count(),
-                kept.thinned(), details.segments(), details.segmentCount(), details.curves(), pointCount);
+                kept.thinned(), details.polygon(), details.curves(), pointCount);
     }
 }

@@ -18,8 +18,7 @@ final class OverlayDetails {
 
     private final PatchProjection projection;
     private final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
-    private float[] segments = new float[64];
-    private int segmentCount;
+    private final List<float[]> polygon = new ArrayList<>();
     private final List<float[]> curves = new ArrayList<>();
 
     OverlayDetails(PatchProjection projection) {
@@ -73,29 +72,14 @@ final class OverlayDetails {
         }
     }
 
+    /** The rows, then the columns, of the projected net as polylines. */
     private void addPolygon(int n, int m) {
-        double[] xy = projection.xy;
         for (int j = 0; j <= m; j++) {
-            for (int i = 0; i < n; i++) {
-                segment(xy, j * (n + 1) + i, j * (n + 1) + i + 1);
-            }
+            polygon.add(line(projection.xy, n, j * (n + 1), 1));
         }
         for (int i = 0; i <= n; i++) {
-            for (int j = 0; j < m; j++) {
-                segment(xy, j * (n + 1) + i, (j + 1) * (n + 1) + i);
-            }
+            polygon.add(line(projection.xy, m, i, n + 1));
         }
-    }
-
-    private void segment(double[] xy, int a, int b) {
-        if (4 * segmentCount + 4 > segments.length) {
-            segments = java.util.Arrays.copyOf(segments, 2 * segments.length);
-        }
-        int s = 4 * segmentCount++;
-        segments[s] = (float) xy[2 * a];
-        segments[s + 1] = (float) xy[2 * a + 1];
-        segments[s + 2] = (float) xy[2 * b];
-        segments[s + 3] = (float) xy[2 * b + 1];
     }
 
     /** The k + 1 iso-curves of constant v, then the k + 1 of constant u. */
@@ -115,7 +99,7 @@ final class OverlayDetails {
         }
     }
 
-    /** The k + 1 grid points {@code first, first + step, …} as a polyline. */
+    /** The k + 1 points {@code first, first + step, …} of a 2-D point array as a polyline. */
     private static float[] line(double[] grid, int k, int first, int step) {
         float[] line = new float[2 * (k + 1)];
         for (int t = 0; t <= k; t++) {
@@ -125,9 +109,7 @@ final class OverlayDetails {
         return line;
     }
 
-    float[] segments() { return segments; }
-
-    int segmentCount() { return segmentCount; }
+    List<float[]> polygon() { return polygon; }
 
     List<float[]> curves() { return curves; }
 }

@@ -6,21 +6,20 @@ import org.beziertracer.model.Scene;
 
 /**
  * The overlay of one scene in one view, ready to draw: a <b>bounded</b> number of control-point
- * handles, control-polygon segments and iso-curve polylines in picture pixels (device pixels), the
+ * handles, control-polygon and iso-curve polylines in picture pixels (device pixels), the
  * selected points' positions, and the model's point count. Made by {@link OverlayBuilder} off the UI
  * thread; immutable, so the painter draws it while the next one is built.
  *
  * <h2>Layout</h2>
  * Handle {@code k}: {@code handleXY[2k], handleXY[2k+1]}, depth {@code handleDepth[k]}, point
  * {@code P_ij} of patch {@code handlePatch[k]} with {@code handlePoint[k] = j·(n+1) + i}.
- * Polygon segment {@code s}: {@code segments[4s..4s+3] = x0, y0, x1, y1}. Each iso-curve is a
- * polyline {@code x0, y0, x1, y1, …}.
+ * Each control-polygon row or column and each iso-curve is a polyline {@code x0, y0, x1, y1, …}.
  */
 public final class OverlayGeometry {
 
     /** Nothing to draw (before the first build, and while a newly opened model is prepared). */
     public static final OverlayGeometry EMPTY = new OverlayGeometry(null, null, new float[0], new float[0], new int[0],
-            new int[0], 0, false, new float[0], 0, List.of(), 0);
+            new int[0], 0, false, List.of(), List.of(), 0);
 
     private final Scene scene;
     private final ScreenProjector projector;
@@ -30,13 +29,12 @@ public final class OverlayGeometry {
     private final int[] handlePoint;
     private final int handleCount;
     private final boolean thinned;
-    private final float[] segments;
-    private final int segmentCount;
+    private final List<float[]> polygon;
     private final List<float[]> isoCurves;
     private final long pointCount;
 
     OverlayGeometry(Scene scene, ScreenProjector projector, float[] handleXY, float[] handleDepth, int[] handlePatch,
-                    int[] handlePoint, int handleCount, boolean thinned, float[] segments, int segmentCount,
+                    int[] handlePoint, int handleCount, boolean thinned, List<float[]> polygon,
                     List<float[]> isoCurves, long pointCount) {
         this.scene = scene;
         this.projector = projector;
@@ -46,8 +44,7 @@ public final class OverlayGeometry {
         this.handlePoint = handlePoint;
         this.handleCount = handleCount;
         this.thinned = thinned;
-        this.segments = segments;
-        this.segmentCount = segmentCount;
+        this.polygon = List.copyOf(polygon);
         this.isoCurves = List.copyOf(isoCurves);
         this.pointCount = pointCount;
     }
@@ -75,10 +72,17 @@ public final class OverlayGeometry {
     /** True when some control points on screen are not drawn (too dense to tell apart at this zoom). */
     public boolean thinned() { return thinned; }
 
-    public int segmentCount() { return segmentCount; }
+    /** The control polygons' rows and columns as polylines (unmodifiable; do not change the arrays). */
+    public List<float[]> polygon() { return polygon; }
 
-    /** Coordinate {@code c} (0..3: x0, y0, x1, y1) of polygon segment {@code s}. */
-    public float segment(int s, int c) { return segments[4 * s + c]; }
+    /** Segments of the control polygons drawn. */
+    public int segmentCount() {
+        int n = 0;
+        for (float[] line : polygon) {
+            n += line.length / 2 - 1;
+        }
+        return n;
+    }
 
     /** The iso-curves as polylines (unmodifiable; do not change the arrays). */
     public List<float[]> isoCurves() { return isoCurves; }

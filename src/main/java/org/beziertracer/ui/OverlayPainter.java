@@ -41,25 +41,13 @@ final class OverlayPainter {
         if (!geo.isoCurves().isEmpty()) {
             g.setColor(WIRE);
             g.setStroke(new BasicStroke((float) unit));
-            Path2D.Float path = new Path2D.Float();
-            for (float[] line : geo.isoCurves()) {
-                path.moveTo(line[0], line[1]);
-                for (int k = 2; k < line.length; k += 2) {
-                    path.lineTo(line[k], line[k + 1]);
-                }
-            }
-            g.draw(path);
+            g.draw(polylines(geo.isoCurves()));
         }
-        if (geo.segmentCount() > 0) {
+        if (!geo.polygon().isEmpty()) {
             g.setColor(POLYGON);
             g.setStroke(new BasicStroke((float) unit, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 10,
                     new float[] {(float) (4 * unit), (float) (3 * unit)}, 0));
-            Path2D.Float path = new Path2D.Float();
-            for (int k = 0; k < geo.segmentCount(); k++) {
-                path.moveTo(geo.segment(k, 0), geo.segment(k, 1));
-                path.lineTo(geo.segment(k, 2), geo.segment(k, 3));
-            }
-            g.draw(path);
+            g.draw(polylines(geo.polygon()));
         }
         double r = OverlayBuilder.HANDLE_RADIUS * unit;
         g.setStroke(new BasicStroke((float) unit));
@@ -75,6 +63,17 @@ final class OverlayPainter {
         for (Handle sel : s.selected()) {
             dot(g, sel.x(), sel.y(), 2 * r, SELECTED);
         }
+    }
+
+    private static Path2D.Float polylines(java.util.List<float[]> lines) {
+        Path2D.Float path = new Path2D.Float();
+        for (float[] line : lines) {
+            path.moveTo(line[0], line[1]);
+            for (int k = 2; k < line.length; k += 2) {
+                path.lineTo(line[k], line[k + 1]);
+            }
+        }
+        return path;
     }
 
     /** The handle drawn once, at this scale, to be stamped: far cheaper than filling and stroking each. */
