@@ -177,10 +177,11 @@ public final class AppModel {
         sceneChanged();
     }
 
-    /** The selection is now {@code s}. */
+    /** The selection is now {@code s} (widgets that show it are told). */
     void select(Selection s) {
         selection = s;
         overlay.selected(s.handles(document.scene(), view.projector()));
+        notifyListeners();
     }
 
     /** A drag that started from {@code base} ended: one undoable edit (unless the model moved on). */
@@ -190,7 +191,6 @@ public final class AppModel {
             document.bump();
         }
         select(Selection.EMPTY);
-        notifyListeners();
     }
 
     private final class EditorTarget implements SceneEditor.Target {
