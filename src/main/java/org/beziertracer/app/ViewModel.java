@@ -20,7 +20,7 @@ public final class ViewModel {
 
     private final Runnable onMoved;
     private final Runnable onResized;
-    private Runnable repaint = () -> {};
+    private volatile Runnable repaint = () -> {};
     private OrbitView view;
     private Picture picture;
     private double scale = 1;
