@@ -1,10 +1,13 @@
 package org.beziertracer.app;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
 
 /**
  * The app without its windows: it owns the open {@link Document}, the {@link SettingsModel
@@ -120,10 +123,10 @@ public final class AppModel {
     }
 
     void failed(String title, Throwable e) {
-        if (ErrorText.isInternal(e.getMessage())) {
-            e.printStackTrace();
+        if (!(e instanceof IllegalArgumentException || e instanceof IOException || e instanceof UncheckedIOException)) {
+            e.printStackTrace(); // a bug: the details go to the console, the dialog says one line
         }
-        dialogs.error(title, ErrorText.oneLine(e));
+        dialogs.error(title, Failures.describe(e));
     }
 
     /** Starts a progressive render of the current state (coalesced; never renders here). */

@@ -1,7 +1,6 @@
 package org.beziertracer.app;
 
 import java.nio.file.Path;
-import java.util.Locale;
 
 import org.beziertracer.model.Scene;
 
@@ -52,7 +51,7 @@ public final class Document {
     void replace(Scene scene, String newName, Path source) {
         history.reset(scene);
         name = newName;
-        file = source != null && !source.toString().toLowerCase(Locale.ROOT).endsWith(".json") ? source : null;
+        file = source != null && ModelLoader.savesInPlace(source) ? source : null;
         bump();
     }
 

@@ -2,13 +2,14 @@ package org.beziertracer.app;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.Locale;
 
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.MeshObjWriter;
+import org.beziertracer.model.io.SceneDocument;
 
 /**
  * File → Save and Export Mesh (the picture's PNG is drawn and encoded by the desktop). Every write
@@ -21,13 +22,12 @@ public final class DocumentFiles {
     /** Cells per patch side of an exported mesh. */
     public static final int MESH_SEGMENTS = 16;
 
-    /** Saves the patches of {@code scene} as BPT or OBJ by the file's extension. */
+    /** Saves the surfaces of {@code scene} in the model format its extension names ({@link ModelLoader#SAVE_FORMATS}). */
     public static void saveModel(Path file, Scene scene) throws IOException {
-        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (!name.endsWith(".bpt") && !name.endsWith(".obj")) {
-            throw new IllegalArgumentException(file + ": save as .bpt or .obj");
-        }
-        Models.save(file, scene.patches());
+        FileFormat format = ModelLoader.SAVE_FORMATS.stream().filter(f -> f.matches(file.toString())).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException(file + ": save as "
+                        + org.beziertracer.model.io.FileFormats.extensionList(ModelLoader.SAVE_FORMATS)));
+        format.write(file, new SceneDocument(scene, RenderSettings.defaults()));
     }
 
     /** Tessellates every patch ({@value #MESH_SEGMENTS}² cells each) and writes a triangle OBJ. */

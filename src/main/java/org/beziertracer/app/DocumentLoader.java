@@ -6,6 +6,7 @@ import java.util.concurrent.CancellationException;
 
 import org.beziertracer.math.Aabb;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
 
 /**
  * Opens models off the UI thread: the file is read, and the model's bounds measured, on the io
@@ -58,7 +59,7 @@ final class DocumentLoader {
             if (e instanceof CancellationException) {
                 target.status().message("opening " + name + " cancelled");
             } else {
-                target.dialogs().error("Cannot open " + name, ErrorText.oneLine(e));
+                target.dialogs().error("Cannot open " + name, Failures.describe(e));
             }
         });
     }

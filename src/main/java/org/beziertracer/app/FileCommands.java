@@ -8,6 +8,7 @@ import java.util.function.Supplier;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
 
 /**
  * The File and Models menus: open (asking about unsaved edits first), save, save as, export, quit.
@@ -77,7 +78,7 @@ public final class FileCommands {
     }
 
     private void saveAs(Runnable then) {
-        Path p = app.dialogs().chooseSave("Save surface", "bpt", "obj");
+        Path p = app.dialogs().chooseSave("Save surface", ModelLoader.saveExtensions());
         if (p != null) {
             saveTo(p, then);
         }
@@ -128,7 +129,7 @@ public final class FileCommands {
 
     private void failed(String title, Throwable e) {
         if (!(e instanceof CancellationException)) {
-            app.dialogs().error(title, ErrorText.oneLine(e));
+            app.dialogs().error(title, Failures.describe(e));
         }
     }
 

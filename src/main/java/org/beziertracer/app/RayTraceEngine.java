@@ -14,6 +14,7 @@ import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.render.Camera;
+import org.beziertracer.render.Failures;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.FrameStats;
 import org.beziertracer.render.RenderJob;
@@ -69,7 +70,7 @@ public final class RayTraceEngine implements PictureEngine {
 
     private void fail(Throwable e) {
         frameDone = true;
-        errors.accept(ErrorText.oneLine(e));
+        errors.accept(Failures.describe(e));
     }
 
     @Override

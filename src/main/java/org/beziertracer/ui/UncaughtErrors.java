@@ -5,7 +5,7 @@ import java.awt.Component;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
 
-import org.beziertracer.app.ErrorText;
+import org.beziertracer.render.Failures;
 
 /**
  * The app's last line of defence: an exception no one caught, on any thread, is logged (with its
@@ -34,7 +34,7 @@ final class UncaughtErrors implements Thread.UncaughtExceptionHandler {
     public void uncaughtException(Thread t, Throwable e) {
         System.err.println("beziertracer: uncaught error on thread " + t.getName() + ":");
         e.printStackTrace();
-        String line = ErrorText.oneLine(e);
+        String line = Failures.describe(e);
         if (SwingUtilities.isEventDispatchThread()) {
             show(line);
         } else {

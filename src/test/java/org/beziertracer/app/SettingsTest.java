@@ -3,9 +3,9 @@ package org.beziertracer.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.render.ShadingMode;
@@ -37,8 +37,8 @@ class SettingsTest {
         assertEquals(7, b.level(Level.GRID_U));
         assertNotEquals(a, b);
         assertEquals(b, Settings.defaults().with(Method.NEWTON).with(Level.GRID_U, 7).with(Toggle.NORMALS, true));
-        var e = assertThrows(IllegalArgumentException.class, () -> a.with(Level.GRID_V, 11));
-        assertEquals("grid points along v must be 2..10, got 11", e.getMessage());
+        assertEquals("grid points along v must be 2..10, got 11",
+                UserMessages.of(IllegalArgumentException.class, () -> a.with(Level.GRID_V, 11)));
     }
 
     @Test

@@ -18,10 +18,12 @@ import javax.swing.JDialog;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.app.DocumentFiles;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.Models;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
 import org.junit.jupiter.api.MethodOrderer;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Tag;
@@ -130,9 +132,8 @@ class MenuGuiTest extends GuiSession {
         d.menu("File", "open");
         d.chooseFile(bad);
         JDialog dialog = d.dialogWith(JOptionPane.class);
-        String message = d.optionMessage(dialog);
+        String message = UserMessages.check(d.optionMessage(dialog));
         assertTrue(message.startsWith(bad + ":"), message);
-        assertFalse(message.contains("\n"), "one line: " + message);
         press(dialog, "OK");
         d.settle();
         assertEquals("patch — Bézier Tracer", title(), "the old model is kept");
@@ -158,17 +159,18 @@ class MenuGuiTest extends GuiSession {
     @Order(6)
     void anUncaughtErrorShowsOneLineAndTheAppKeepsRunning() {
         SwingUtilities.invokeLater(() -> {
-            throw new IllegalStateException("thrown on purpose by the test");
+            throw new IllegalArgumentException("thrown on purpose by the test");
         });
         JDialog dialog = d.dialogWith(JOptionPane.class);
         assertEquals(UncaughtErrors.TITLE, GuiDriver.onEdt(dialog::getTitle));
         assertEquals("thrown on purpose by the test", d.optionMessage(dialog));
         press(dialog, "OK");
+        NullPointerException bug = new NullPointerException("Cannot invoke \"java.nio.file.Path.toString()\" because it is null");
         SwingUtilities.invokeLater(() -> {
-            throw new NullPointerException("Cannot invoke \"java.nio.file.Path.toString()\" because it is null");
+            throw bug;
         });
         dialog = d.dialogWith(JOptionPane.class);
-        assertEquals("an internal error occurred (details on the console)", d.optionMessage(dialog),
+        assertEquals(Failures.describe(bug), UserMessages.check(d.optionMessage(dialog)),
                 "no class name and no \"null\" reach the user");
         press(dialog, "OK");
         BufferedImage before = d.capturePanel();
