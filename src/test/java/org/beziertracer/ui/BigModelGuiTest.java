@@ -82,6 +82,8 @@ class BigModelGuiTest extends GuiSession {
         long repaintMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - loadedAt[0]);
         d.settle();
         beat.shutdownNow();
+        System.out.println("BigModelGuiTest: " + PATCHES + " patches: repainted " + repaintMillis
+                + " ms after opening; worst event-thread stall " + worstStall.get() + " ms");
         assertTrue(repaintMillis <= MILLIS, "the window repainted " + repaintMillis + " ms after the model opened" + stalls);
         assertTrue(worstStall.get() <= MILLIS, "the event thread stalled for " + worstStall.get() + " ms" + stalls);
 
