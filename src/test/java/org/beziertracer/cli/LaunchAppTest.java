@@ -1,7 +1,6 @@
 package org.beziertracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.awt.GraphicsEnvironment;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -21,18 +20,6 @@ class LaunchAppTest {
         } else {
             assertEquals(BezierTracerCommand.APP_RUNNING, code);
             assertEquals(1, launched.get());
-        }
-    }
-
-    @Test
-    void theHintNamesTheLauncherOfTheDesktopPackageWhenStartedByIt() {
-        assertNull(System.getProperty("jpackage.app-path"), "not set by the test JVM");
-        assertEquals("java -jar target/beziertracer.jar", BezierTracerCommand.howToRun());
-        System.setProperty("jpackage.app-path", "/opt/BezierTracer/bin/BezierTracer");
-        try {
-            assertEquals("/opt/BezierTracer/bin/BezierTracer", BezierTracerCommand.howToRun());
-        } finally {
-            System.clearProperty("jpackage.app-path");
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -13,8 +14,6 @@ import org.junit.jupiter.api.Test;
 
 class PatchNormalsTest {
 
-    /** |N| − 1. */
-    private static final double UNIT_TOL = 1e-12;
     /** Minimum cosine between a normal and those of its regular neighbours. */
     private static final double NEIGHBOUR_COS = 0.9;
     /** Parameter distance of the "neighbouring regular points". */
@@ -50,7 +49,7 @@ class PatchNormalsTest {
     private static void assertFiniteUnit(double[] nrm, String where) {
         assertTrue(Double.isFinite(nrm[0]) && Double.isFinite(nrm[1]) && Double.isFinite(nrm[2]),
                 where + ": not finite " + Arrays.toString(nrm));
-        assertEquals(1, Math.sqrt(dot(nrm, nrm)), UNIT_TOL, where + ": not unit " + Arrays.toString(nrm));
+        assertEquals(1, Math.sqrt(dot(nrm, nrm)), ROUNDING, where + ": not unit " + Arrays.toString(nrm));
     }
 
     /**
@@ -95,13 +94,13 @@ class PatchNormalsTest {
     @Test
     void aFlatSquareHasNormalPlusZOrientedAsDpduCrossDpdv() {
         double[] net = flatSquare(3, 2);
-        assertEquals(1, normal(net, 3, 2, 0.3, 0.6)[2], UNIT_TOL);
+        assertEquals(1, normal(net, 3, 2, 0.3, 0.6)[2], ROUNDING);
         // Reversing u reverses dS/du and so the normal
         double[] mirrored = net.clone();
         for (int k = 0; k < mirrored.length; k += 3) {
             mirrored[k] = 1 - mirrored[k];
         }
-        assertEquals(-1, normal(mirrored, 3, 2, 0.3, 0.6)[2], UNIT_TOL);
+        assertEquals(-1, normal(mirrored, 3, 2, 0.3, 0.6)[2], ROUNDING);
     }
 
     @Test
@@ -268,7 +267,7 @@ class PatchNormalsTest {
             PatchNormals.unitNormal(net, 0, n, m, u, v, a, 0, scratch);
             PatchNormals.unitNormal(net, 0, n, m, u, v, e, b, 0, scratch);
             for (int c = 0; c < 3; c++) {
-                assertEquals(a[c], b[c], 1e-12, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
+                assertEquals(a[c], b[c], ROUNDING, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
             }
         }
     }
@@ -293,7 +292,7 @@ class PatchNormalsTest {
                 }
             }
             double ext = Math.max(hi[0] - lo[0], Math.max(hi[1] - lo[1], hi[2] - lo[2]));
-            assertEquals(ext * ext, PatchNormals.squaredExtent(net, off, n, m), 1e-12 * ext * ext,
+            assertEquals(ext * ext, PatchNormals.squaredExtent(net, off, n, m), ROUNDING * ext * ext,
                     "degree " + n + "x" + m + " offset " + off);
         }
     }
@@ -318,7 +317,7 @@ class PatchNormalsTest {
             double[] out = new double[5];
             PatchNormals.netNormal(net, off, n, m, out, 2);
             for (int c = 0; c < 3; c++) {
-                assertEquals(cross[c] / len, out[2 + c], 1e-12, "degree " + n + "x" + m + " offset " + off);
+                assertEquals(cross[c] / len, out[2 + c], ROUNDING, "degree " + n + "x" + m + " offset " + off);
             }
         }
         double[] line = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0};   // 1x1 net on the x axis: diagonals parallel
@@ -348,7 +347,7 @@ class PatchNormalsTest {
         double[] nrm = normal(net, 3, 3, 0.3, 0);
         assertTrue(nrm[2] > 0.99, "the limit normal of the squeezed edge is +z, got " + Arrays.toString(nrm));
         PatchNormals.unitNormal(net, 0, 3, 3, 0.3, 0, d, viaDerivatives, 0, scratch);
-        assertArrayEquals(nrm, viaDerivatives, 1e-12, "overload taking the derivatives");
+        assertArrayEquals(nrm, viaDerivatives, ROUNDING, "overload taking the derivatives");
     }
 
     @Test
