@@ -30,6 +30,9 @@ class HodographBoundsTest {
             int n = 1 + rnd.nextInt(6), m = 1 + rnd.nextInt(6);
             double[] net = TestNets.randomNet(rnd, n, m, 3, 10);
             double[] b = bounds(net, n, m);
+            double la = Math.sqrt(b[2] * b[2] + b[3] * b[3] + b[4] * b[4]);
+            double lb = Math.sqrt(b[5] * b[5] + b[6] * b[6] + b[7] * b[7]);
+            assertEquals(1e-10 * (la + b[8]) * (lb + b[9]), b[10], 1e-12 * b[10], "rounding margin, trial " + trial);
             for (int s = 0; s < 30; s++) {
                 double u = rnd.nextDouble(), v = rnd.nextDouble();
                 DeCasteljau.evaluateWithDerivatives(net, 0, n, m, u, v, d, scratch);

@@ -329,13 +329,16 @@ class PatchNormalsTest {
     @Test
     void aCrossProductBelowTheDegreeScaledThresholdCountsAsDegenerate() {
         // Flat unit square, bicubic, but its v=0 row is squeezed to the point (0.5,0,0) and then
-        // fanned out along z by eps: at v=0 the cross product is ~ 9·eps·|S_v|, between
+        // fanned out along z by eps, all scaled by 2: at v=0 the cross product lies between
         // DEGENERATE_RELATIVE·L² and DEGENERATE_RELATIVE·n·m·L², and points along x.
         double eps = 1.25e-10;
         double[] net = flatSquare(3, 3);
         for (int i = 0; i <= 3; i++) {
             net[3 * i] = 0.5;
             net[3 * i + 2] = eps * i;
+        }
+        for (int k = 0; k < net.length; k++) {
+            net[k] *= 2;   // extent 2, so that the threshold's L² is not 1
         }
         double[] d = new double[9], viaDerivatives = new double[3];
         DeCasteljau.evaluateWithDerivatives(net, 0, 3, 3, 0.3, 0, d, scratch);
