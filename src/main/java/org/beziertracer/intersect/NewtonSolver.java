@@ -15,17 +15,21 @@ import org.beziertracer.geometry.SubPatchTable;
  *       hierarchy provides good initial guesses"): here the point where the ray crosses the leaf's
  *       parallelogram ({@link NewtonLeafRecords}), whose thickness R also rejects leaves the ray
  *       misses before any evaluation;</li>
- *   <li>leaf domains overlap: iterates and roots may lie anywhere in the leaf's parameter box grown
- *       by {@link #OVERLAP} leaf widths on every side (roots within the patch), so a root near a
- *       border between leaves is found from either side; an iterate leaving that domain, a
- *       singular Jacobian, {@link #MAX_STEPS} steps or (Martin et al.'s divergence test, from
- *       step {@link #GROWTH_CHECK_FROM} on) a growing residual ends the attempt;</li>
- *   <li>a second start, the leaf's centre, where it helps: on leaves that may hold several roots.</li>
+ *   <li>leaf domains overlap: a root is accepted anywhere in the leaf's parameter box grown by
+ *       {@link #OVERLAP} leaf width on every side (within the patch), so a root near a border
+ *       between leaves is found from either side, and rejected outside it; iterates may roam the
+ *       patch's domain grown by {@link #WANDER}. An iterate leaving that, a singular Jacobian,
+ *       {@link #MAX_STEPS} steps or (Martin et al.'s divergence test, from step
+ *       {@link #GROWTH_CHECK_FROM} on) a growing residual ends the attempt;</li>
+ *   <li>more starts where they help: on leaves that may hold several roots.</li>
  * </ul>
  * A leaf may hold several roots for this ray when its single-root test (that of
- * {@link RootUniqueness}, with the record's balls) fails: the ray grazes it. A root found there may
- * be the farther of a fold's two, so after the centre the found root's reflections through the
- * first start and through the centre are tried as well, and the nearest root is kept. Nothing but
+ * {@link RootUniqueness}, with the record's balls) fails: the ray grazes it. There the leaf's
+ * centre and its four quarter points ({@link #QUARTERS}) are tried as further starts (a grazing ray
+ * can leave the parallelogram's start outside the basin of every root); a root found may be the
+ * farther of a fold's two, so the found root's reflections through the first start and through
+ * the centre are tried as well, and the nearest root is kept (an attempt stops early once its t
+ * passes the nearest root so far). Nothing but
  * Newton runs: no clipping, no subdivision; a leaf whose attempts all fail is a miss.
  *
  * <p>Each attempt solves {@code F(u,v) = (n1·(S(u,v) − o), n2·(S(u,v) − o)) = 0} on the parent
@@ -42,8 +46,13 @@ final class NewtonSolver {
 
     /** Iteration cap of one attempt (Martin et al. use about 7; our domains are wider). */
     static final int MAX_STEPS = 10;
-    /** Growth of a leaf's parameter box on every side, in leaf widths: the overlapped domain. */
-    static final double OVERLAP = 2;
+    /** Growth of a leaf's parameter box on every side, in leaf widths: the overlapped domain, where roots are accepted. */
+    static final double OVERLAP = 1;
+    /**
+     * Iterates may also wander this far beyond the patch's own domain (the polynomial extends
+     * beyond it; near a fold, Newton's first steps overshoot before they converge).
+     */
+    static final double WANDER = 0.5;
     /** From this step on, a residual larger than the previous one ends the attempt (Martin et al.). */
     static final int GROWTH_CHECK_FROM = 3;
     /** A point with a residual within this factor of the tolerance takes its last step unevaluated. */
@@ -52,6 +61,8 @@ final class NewtonSolver {
     static final double SAME_ROOT = 1e-3;
     /** Slack of the patch's own domain [0,1]² (roots on a patch border survive rounding). */
     static final double PATCH_SLACK = 1e-9;
+    /** Further starts (leaf parameters, pairs) on a leaf that may hold several roots when neither start nor centre converged. */
+    private static final double[] QUARTERS = {0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75};
     /** Outcomes of {@link #start}. */
     static final int MISS = 0, SINGLE_ROOT = 1, MAYBE_SEVERAL = 2;
     /** Outcomes of {@link #iterate}. */
@@ -140,6 +151,11 @@ final class NewtonSolver {
         setDomain(w, u0, du, v0, dv);
         double uLo = Math.max(-PATCH_SLACK, w[ULO]), uHi = Math.min(1 + PATCH_SLACK, w[UHI]);
         double vLo = Math.max(-PATCH_SLACK, w[VLO]), vHi = Math.min(1 + PATCH_SLACK, w[VHI]);
+        // roots are accepted in the leaf's overlapped domain; iterates may also roam the patch
+        w[ULO] = Math.min(w[ULO], -WANDER);
+        w[UHI] = Math.max(w[UHI], 1 + WANDER);
+        w[VLO] = Math.min(w[VLO], -WANDER);
+        w[VHI] = Math.max(w[VHI], 1 + WANDER);
         double s0 = ctx.clip[0], t0 = ctx.clip[1], su = s0, sv = t0;
         boolean found = false;
         double bestT = tMax, bestU = 0, bestV = 0;
@@ -147,11 +163,21 @@ final class NewtonSolver {
         // neighbour's overlapped domain); a leaf that may hold several roots also gets its
         // centre and, once a root is found, that root's reflections through the first start and
         // through the centre, for a nearer root across a fold
-        for (int attempt = 0; attempt < (singleRoot ? 1 : 4) && (attempt < 2 || found); attempt++) {
-            if (attempt > 0) {
+        int quarter = 0, reflection = 0;
+        for (int attempt = 0; attempt < (singleRoot ? 1 : 2 + QUARTERS.length / 2 + 2); attempt++) {
+            if (attempt == 1) {
+                su = 0.5;
+                sv = 0.5;
+            } else if (attempt > 1 && quarter < QUARTERS.length) {
+                su = QUARTERS[quarter++];
+                sv = QUARTERS[quarter++];
+            } else if (attempt > 1 && found && reflection < 2) {
                 double ru = (bestU - u0) / du, rv = (bestV - v0) / dv;
-                su = attempt == 1 ? 0.5 : Math.min(1, Math.max(0, attempt == 2 ? 2 * s0 - ru : 1 - ru));
-                sv = attempt == 1 ? 0.5 : Math.min(1, Math.max(0, attempt == 2 ? 2 * t0 - rv : 1 - rv));
+                su = Math.min(1, Math.max(0, reflection == 0 ? 2 * s0 - ru : 1 - ru));
+                sv = Math.min(1, Math.max(0, reflection == 0 ? 2 * t0 - rv : 1 - rv));
+                reflection++;
+            } else if (attempt > 1) {
+                break;
             }
             w[TMIN] = tMin;
             w[TMAX] = bestT;
