@@ -25,11 +25,12 @@ import org.beziertracer.geometry.SubPatchTable;
  * </ul>
  * A leaf may hold several roots for this ray when its single-root test (that of
  * {@link RootUniqueness}, with the record's balls) fails: the ray grazes it. There the leaf's
- * centre and its four quarter points ({@link #QUARTERS}) are tried as further starts (a grazing ray
- * can leave the parallelogram's start outside the basin of every root); a root found may be the
- * farther of a fold's two, so the found root's reflections through the first start and through
- * the centre are tried as well, and the nearest root is kept (an attempt stops early once its t
- * passes the nearest root so far). Nothing but
+ * centre is tried as a second start and, while no root is found, its four quarter points
+ * ({@link #QUARTERS}; a grazing ray can leave the parallelogram's start outside the basin of every
+ * root), their iterates confined to the overlapped domain so that a start with no root nearby
+ * fails fast; a root found may be the farther of a fold's two, so the found root's reflections
+ * through the first start and through the centre are tried as well, and the nearest root is kept
+ * (an attempt stops early once its t passes the nearest root so far). Nothing but
  * Newton runs: no clipping, no subdivision; a leaf whose attempts all fail is a miss.
  *
  * <p>Each attempt solves {@code F(u,v) = (n1·(S(u,v) − o), n2·(S(u,v) − o)) = 0} on the parent
@@ -161,16 +162,18 @@ final class NewtonSolver {
         double bestT = tMax, bestU = 0, bestV = 0;
         // A single-root leaf gets one attempt (a root it misses near its border lies in a
         // neighbour's overlapped domain); a leaf that may hold several roots also gets its
-        // centre and, once a root is found, that root's reflections through the first start and
-        // through the centre, for a nearer root across a fold
+        // centre, its quarter points while nothing is found and, once a root is found, that
+        // root's reflections through the first start and through the centre, for a nearer root
+        // across a fold
         int quarter = 0, reflection = 0;
         for (int attempt = 0; attempt < (singleRoot ? 1 : 2 + QUARTERS.length / 2 + 2); attempt++) {
             if (attempt == 1) {
                 su = 0.5;
                 sv = 0.5;
-            } else if (attempt > 1 && quarter < QUARTERS.length) {
+            } else if (attempt > 1 && !found && quarter < QUARTERS.length) {
                 su = QUARTERS[quarter++];
                 sv = QUARTERS[quarter++];
+                confine(w, uLo, uHi, vLo, vHi); // a quarter start that leaves the leaf fails fast
             } else if (attempt > 1 && found && reflection < 2) {
                 double ru = (bestU - u0) / du, rv = (bestV - v0) / dv;
                 su = Math.min(1, Math.max(0, reflection == 0 ? 2 * s0 - ru : 1 - ru));
@@ -203,6 +206,14 @@ final class NewtonSolver {
         ctx.rootU = Math.min(1, Math.max(0, bestU));
         ctx.rootV = Math.min(1, Math.max(0, bestV));
         return true;
+    }
+
+    /** Iterates of the next attempts stay in {@code [uLo, uHi] × [vLo, vHi]}. */
+    private static void confine(double[] w, double uLo, double uHi, double vLo, double vHi) {
+        w[ULO] = uLo;
+        w[UHI] = uHi;
+        w[VLO] = vLo;
+        w[VHI] = vHi;
     }
 
     /** The overlapped domain of the leaf {@code [u0, u0+du] × [v0, v0+dv]} into {@code w}; no root to avoid. */

@@ -20,11 +20,19 @@ import org.junit.jupiter.params.provider.EnumSource;
  * the rays; the exact methods (clipping, Newton) never return a farther root where the nearest lies
  * more than 1e-6 of the scene size from a silhouette, and their agreeing hits lie within
  * {@code ROOT_T} of the scene size of the reference's; subdivision's within {@code SUBDIVISION_T}.
+ * On folded random patches (several roots per ray, grazing rays) hit and miss agree as often, and
+ * clipping returns no farther root (Newton: {@link #NEWTON_FOLDED_FARTHER}).
  */
 class MethodAccuracyTest {
 
     /** Issue #10's target: 0.05 % of the rays. */
     static final double HIT_MISS_BUDGET = 0.0005;
+    /**
+     * Farther roots Newton returns on the folded patches, of 5,400 rays: 1 (a bilinear patch, the
+     * nearer root 3e-4 from the patch's border, the ray at cos 0.38 to the normal; trying every
+     * quarter start finds it, but costs Newton a third of its teapot speed). Lower it, never raise it.
+     */
+    static final int NEWTON_FOLDED_FARTHER = 1;
     static final Scene TEAPOT = Models.load("teapot");
     static final double[] TEAPOT_RAYS = MethodAccuracy.randomRays(TEAPOT.controlBounds(), 20_000, 10);
     static final double[][] TEAPOT_REFERENCE = MethodAccuracy.references(TEAPOT, TEAPOT_RAYS);
@@ -71,6 +79,7 @@ class MethodAccuracyTest {
             }
         }
         assertTrue(total.hitMiss <= HIT_MISS_BUDGET * total.rays, method + ": " + total);
+        assertTrue(total.fartherAway <= (method == Method.NEWTON ? NEWTON_FOLDED_FARTHER : 0), method + ": " + total);
     }
 
     private static void check(Method method, MethodAccuracy a, double size) {
