@@ -42,7 +42,6 @@ public final class StatusBar extends JPanel {
         this.app = app;
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, getForeground().darker()));
         progress.setName("status.progress");
-        progress.setIndeterminate(true);
         progress.setToolTipText("opening a model; the current one stays until it is read");
         cancel.setName("status.cancel");
         cancel.setToolTipText("stop opening the model and keep the current one");
@@ -99,6 +98,9 @@ public final class StatusBar extends JPanel {
         message.setText(app.status().message());
         Task task = app.status().task();
         progress.setVisible(task != null);
+        // Animated only while shown: a hidden indeterminate bar still ticks its 15 ms timer,
+        // waking the event thread 66 times a second for nothing
+        progress.setIndeterminate(task != null);
         cancel.setVisible(task != null);
         progress.setString(task == null ? "" : task.label());
         progress.setStringPainted(task != null);

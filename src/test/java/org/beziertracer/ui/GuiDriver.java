@@ -173,7 +173,6 @@ final class GuiDriver {
         if (m == null) {
             fail("no menu " + title);
         }
-        click(m);
         String name = id.startsWith("menu.") ? id : "menu." + id;
         JMenuItem item = onEdt(() -> {
             for (Component c : m.getMenuComponents()) {
@@ -186,8 +185,8 @@ final class GuiDriver {
         if (item == null) {
             fail("no item " + name + " in menu " + title);
         }
-        waitFor(title + " → " + name + " showing", item::isShowing);
-        click(item);
+        clickUntil(m, title + " → " + name + " showing", item::isShowing);
+        clickUntil(item, title + " → " + name + " chosen", () -> !item.isShowing());
     }
 
     /** The visible dialog that holds a {@code type} (a file chooser, an option pane), waiting up to 10 s. */
@@ -237,7 +236,7 @@ final class GuiDriver {
         key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
         key(KeyEvent.VK_DELETE);
         type(file.toString());
-        assertEquals(file.toString(), onEdt(() -> name.getText()), "the path was typed");
+        waitFor("the path typed into the file chooser", () -> file.toString().equals(name.getText()));
         key(KeyEvent.VK_ENTER);
         waitFor("the file chooser to close", () -> !dialog.isShowing());
     }
@@ -270,11 +269,7 @@ final class GuiDriver {
                     default -> throw new IllegalArgumentException("cannot type '" + c + "'");
                 };
             }
-            if (shift) {
-                key(code, KeyEvent.VK_SHIFT);
-            } else {
-                key(code);
-            }
+            press(code, shift ? new int[] {KeyEvent.VK_SHIFT} : new int[0]);
         }
     }
 
@@ -318,6 +313,15 @@ final class GuiDriver {
     }
 
     void key(int code, int... modifiers) {
+        press(code, modifiers);
+        robot.waitForIdle();
+    }
+
+    /**
+     * Presses and releases a key without waiting for the event thread: typing waits once for the
+     * text instead (Robot.waitForIdle after each key cost seconds a key in a file chooser on Xvfb).
+     */
+    private void press(int code, int... modifiers) {
         for (int m : modifiers) {
             robot.keyPress(m);
         }
@@ -326,7 +330,6 @@ final class GuiDriver {
         for (int k = modifiers.length - 1; k >= 0; k--) {
             robot.keyRelease(modifiers[k]);
         }
-        robot.waitForIdle();
     }
 
     void ctrl(int code) { key(code, KeyEvent.VK_CONTROL); }
@@ -401,6 +404,42 @@ final class GuiDriver {
             m[k] /= n;
         }
         return m;
+    }
+
+    /**
+     * Set-up plumbing: closes any dialog or menu a failed test left open (a modal dialog would
+     * otherwise swallow every later test's input) and brings the main window to the front.
+     */
+    void dismissStrayWindows() {
+        onEdt(() -> {
+            javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath();
+            for (Window w : Window.getWindows()) {
+                if (w != frame && w.isShowing() && w.getOwner() != null) {
+                    w.dispose();
+                }
+            }
+            frame.toFront();
+        });
+        robot.waitForIdle();
+    }
+
+    /**
+     * Clicks {@code comp} until {@code done} holds: a real X server may drop a click that lands
+     * while a new window is still being mapped (seen on a loaded CI machine), so the click is
+     * repeated, up to three times, 5 s apart.
+     */
+    void clickUntil(Component comp, String what, BooleanSupplier done) {
+        for (int attempt = 0; attempt < 3; attempt++) {
+            click(comp);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (System.nanoTime() < end) {
+                if (onEdt(done::getAsBoolean)) {
+                    return;
+                }
+                robot.delay(20);
+            }
+        }
+        fail("timed out waiting for " + what);
     }
 
     /** Closes the window without the unsaved-edits question. */

@@ -24,6 +24,7 @@ abstract class GuiSession {
     @AfterAll
     static void stop() {
         if (d != null) {
+            d.dismissStrayWindows();
             d.close();
             d = null;
         }
@@ -31,6 +32,7 @@ abstract class GuiSession {
 
     @BeforeEach
     void reset() {
+        d.dismissStrayWindows();
         defaultPatch();
     }
 

@@ -51,8 +51,7 @@ class MenuGuiTest extends GuiSession {
     private static void press(JDialog dialog, String text) {
         AbstractButton b = GuiDriver.onEdt(() -> GuiDriver.button(dialog, text));
         assertNotNull(b, "a " + text + " button");
-        d.click(b);
-        d.waitFor("the dialog to close", () -> !dialog.isShowing());
+        d.clickUntil(b, "the dialog to close", () -> !dialog.isShowing());
     }
 
     @Test
