@@ -13,7 +13,6 @@ import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
-import org.beziertracer.render.Camera;
 import org.beziertracer.render.Failures;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.FrameStats;
@@ -89,7 +88,7 @@ public final class RayTraceEngine implements PictureEngine {
         long t0 = System.nanoTime();
         SceneIntersector snapshot = snapshots.prepare(r.scene(), r.light(), r.intersect());
         prepMillis = (System.nanoTime() - t0) / 1e6;
-        RenderJob job = new RenderJob(snapshot, new Camera(r.camera()), r.settings(), r.options());
+        RenderJob job = r.job(snapshot);
         session.cancel();
         target = r.target();
         current = r;
