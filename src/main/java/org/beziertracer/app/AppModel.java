@@ -106,10 +106,6 @@ public final class AppModel {
         return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy();
     }
 
-    public String debugBusy() {
-        return "engine " + engine.busy() + " overlay " + overlay.busy() + " editor " + editor.busy() + " view " + viewTasks.busy() + " io " + io.busy() + " status " + status.busy();
-    }
-
     /** Stops rendering and the workers. */
     public void close() {
         engine.close();

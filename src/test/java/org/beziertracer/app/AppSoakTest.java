@@ -92,15 +92,10 @@ class AppSoakTest {
                 long issuedAt = System.nanoTime();
                 boolean idle = SoakChecks.awaitIdle(onUi, app::busy, 40_000);
                 if (!idle) {
-                    System.out.println("NOT IDLE: " + onUi.call(() -> app.debugBusy() + " " + app.settings().current()));
-                    Thread.getAllStackTraces().forEach((t, st) -> {
-                        System.out.println(t.getName() + " " + t.getState());
-                        for (StackTraceElement e : st) System.out.println("    " + e);
-                    });
+                    SoakChecks.printThreads();
                 }
                 assertTrue(idle, "the app goes idle after the run");
                 SoakChecks.Final last = onUi.call(() -> SoakChecks.Final.of(app));
-                System.out.println("LAST " + actions.last);
                 long idleAt = System.nanoTime();
                 String mismatch = last.mismatch(last.freshRender());
                 onUi.call(() -> {

@@ -36,7 +36,6 @@ public final class SoakActions {
     private final boolean resizes;
     private final List<String> models = BuiltIns.names();
     private final Map<Kind, Integer> counts = new EnumMap<>(Kind.class);
-    public final Map<Kind, Integer> last = new EnumMap<>(Kind.class);
     private boolean pressed;
     private double x, y, dx, dy;
     private int stepsLeft;
@@ -114,7 +113,6 @@ public final class SoakActions {
             }
         }
         counts.merge(kind, 1, Integer::sum);
-        last.put(kind, total());
         return kind;
     }
 

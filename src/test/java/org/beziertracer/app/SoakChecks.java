@@ -125,6 +125,16 @@ public final class SoakChecks {
         <T> T call(Callable<T> task) throws Exception;
     }
 
+    /** Every thread's stack, to standard output (when the app did not go idle). */
+    public static void printThreads() {
+        Thread.getAllStackTraces().forEach((t, stack) -> {
+            System.out.println("soak: thread " + t.getName() + " " + t.getState());
+            for (StackTraceElement e : stack) {
+                System.out.println("    " + e);
+            }
+        });
+    }
+
     /** Used heap after full collections, in bytes. */
     public static long settledHeap() throws InterruptedException {
         long used = Long.MAX_VALUE;
