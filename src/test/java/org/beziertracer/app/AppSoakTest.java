@@ -28,7 +28,7 @@ import org.junit.jupiter.api.Test;
 class AppSoakTest {
 
     /** Commands issued (a shorter run than the GUI soak's). */
-    static final int COMMANDS = 2000;
+    static final int COMMANDS = Integer.getInteger("soak.commands", 2000);
     /** The model loaded first, and again at the end before the heap is measured. */
     static final String FIRST_MODEL = "teapot-room";
     /** Picture size in device pixels. */
