@@ -10,7 +10,6 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.Callable;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -27,6 +26,8 @@ import org.junit.jupiter.api.Test;
  */
 class AppSoakTest {
 
+    /** Checkpoints: after each round of commands the app must go idle on a fresh render of its state. */
+    static final int ROUNDS = 8;
     /** Commands issued (a shorter run than the GUI soak's). */
     static final int COMMANDS = Integer.getInteger("soak.commands", 2000);
     /** The model loaded first, and again at the end before the heap is measured. */
@@ -56,20 +57,14 @@ class AppSoakTest {
     }
 
     @Test
-    void thousandsOfRandomCommandsEndOnAFreshRenderWithNoErrorAndABoundedHeap() throws Exception {
+    void thousandsOfRandomCommandsEndOnFreshRendersWithNoErrorAndABoundedHeap() throws Exception {
         long seed = SoakChecks.seed("AppSoakTest");
         long t0 = System.nanoTime();
         ExecutorService uiThread = Executors.newSingleThreadExecutor(r -> new Thread(r, "soak-ui"));
         SoakChecks.OnUi onUi = new SoakChecks.OnUi() {
             @Override
             public <T> T call(Callable<T> task) throws Exception {
-                return CompletableFuture.supplyAsync(() -> {
-                    try {
-                        return task.call();
-                    } catch (Exception e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, uiThread).get(60, TimeUnit.SECONDS);
+                return uiThread.submit(task).get(60, TimeUnit.SECONDS);
             }
         };
         RecordingDialogs dialogs = new RecordingDialogs();
@@ -84,20 +79,17 @@ class AppSoakTest {
                 assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads");
                 long heapAfterLoad = SoakChecks.settledHeap();
                 SoakActions actions = new SoakActions(app, seed, () -> {}, true);
-                actions.issue(uiThread, COMMANDS, new Random(seed ^ 0x5DEECE66DL));
-                onUi.call(() -> {
-                    actions.finish();
-                    return null;
-                });
-                long issuedAt = System.nanoTime();
-                boolean idle = SoakChecks.awaitIdle(onUi, app::busy, 40_000);
-                if (!idle) {
-                    SoakChecks.printThreads();
+                Random pace = new Random(seed ^ 0x5DEECE66DL);
+                SoakChecks.Final last = null;
+                for (int round = 1; round <= ROUNDS; round++) {
+                    actions.issue(uiThread, COMMANDS / ROUNDS, pace);
+                    last = SoakChecks.idleState(onUi, app, actions, 40_000);
+                    String where = " (round " + round + " of " + ROUNDS + ", seed " + seed + ")";
+                    assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread" + where);
+                    assertEquals(List.of(), dialogs.errors, "no error reached the dialogs (render, prep, edit, load)" + where);
+                    assertNull(last.mismatch(last.freshRender()), "the picture is a fresh render of the state" + where);
                 }
-                assertTrue(idle, "the app goes idle after the run");
-                SoakChecks.Final last = onUi.call(() -> SoakChecks.Final.of(app));
-                long idleAt = System.nanoTime();
-                String mismatch = last.mismatch(last.freshRender());
+                long checked = System.nanoTime();
                 onUi.call(() -> {
                     app.settings().replace(Settings.defaults());
                     app.files().openBuiltIn(FIRST_MODEL);
@@ -105,13 +97,10 @@ class AppSoakTest {
                 });
                 assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads again");
                 long heapAfterRun = SoakChecks.settledHeap();
-                System.out.printf("AppSoakTest: %d commands (%s) in %.1f s, idle %.1f s later; %d discards; "
-                                + "heap %.1f MB after the first load, %.1f MB after the run; total %.1f s; %s%n",
-                        actions.total(), onUi.call(actions::summary), (issuedAt - t0) / 1e9, (idleAt - issuedAt) / 1e9,
-                        dialogs.discards, heapAfterLoad / 1e6, heapAfterRun / 1e6, (System.nanoTime() - t0) / 1e9, last.describe());
-                assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread");
-                assertEquals(List.of(), dialogs.errors, "no error reached the dialogs (render, prep, edit, load)");
-                assertNull(mismatch, "the final picture is a fresh render of the final state (seed " + seed + ")");
+                System.out.printf("AppSoakTest: %d commands (%s) and %d checkpoints in %.1f s; %d discards; heap %.1f MB "
+                                + "after the first load, %.1f MB after the run; total %.1f s; last state %s%n",
+                        actions.total(), onUi.call(actions::summary), ROUNDS, (checked - t0) / 1e9, dialogs.discards,
+                        heapAfterLoad / 1e6, heapAfterRun / 1e6, (System.nanoTime() - t0) / 1e9, last.describe());
                 assertTrue(heapAfterRun <= 2 * heapAfterLoad, "heap " + heapAfterRun + " after the run, "
                         + heapAfterLoad + " after the first load (seed " + seed + ")");
             } finally {

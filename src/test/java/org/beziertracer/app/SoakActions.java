@@ -57,12 +57,12 @@ public final class SoakActions {
 
     private static Map<Kind, Integer> weights() {
         Map<Kind, Integer> w = new EnumMap<>(Kind.class);
-        w.put(Kind.PRESS, 20);
+        w.put(Kind.PRESS, 30);
         w.put(Kind.HOVER, 3);
         w.put(Kind.WHEEL, 4);
         w.put(Kind.UNDO, 10);
         w.put(Kind.REDO, 6);
-        w.put(Kind.TOGGLE, 14);
+        w.put(Kind.TOGGLE, 12);
         w.put(Kind.METHOD, 4);
         w.put(Kind.LEVEL, 8);
         w.put(Kind.LIGHT, 2);
@@ -161,11 +161,17 @@ public final class SoakActions {
         app.pointer().released(x, y);
     }
 
-    /** A random toggle; in the wireframe view, often the ray trace back on (the picture is what the soak checks). */
+    /**
+     * A random toggle; while the ray trace or the control points are off, often that one back on
+     * (the picture is what the soak checks, and hidden points cannot be dragged).
+     */
     private void toggle(double a, double b) {
         Toggle t = Toggle.values()[(int) (a * Toggle.values().length)];
-        if (!app.settings().current().on(Toggle.RAY_TRACE) && b < 0.5) {
+        Settings now = app.settings().current();
+        if (!now.on(Toggle.RAY_TRACE) && b < 0.5) {
             t = Toggle.RAY_TRACE;
+        } else if (!now.on(Toggle.CONTROL_POINTS) && b >= 0.5) {
+            t = Toggle.CONTROL_POINTS;
         }
         app.settings().toggle(t);
     }
@@ -212,25 +218,26 @@ public final class SoakActions {
     }
 
     /**
-     * Issues {@code count} commands from the calling thread onto the UI thread {@code ui}, in bursts
-     * of 1 to 60 without waiting for the app; between bursts mostly no pause, sometimes a few
-     * milliseconds, now and then long enough for frames to complete ({@code pace} draws them; few
-     * sleeps, since on a loaded machine each one costs a scheduling delay).
+     * Issues {@code count} commands from the calling thread onto the UI thread {@code ui}, one task
+     * each (as events arrive), in bursts of 1 to 30 without waiting for the app. Between bursts
+     * ({@code pace} draws them): a quarter of the time no pause, mostly a few milliseconds (a scene
+     * snapshot gets prepared, a coarse pass may show), sometimes tens of milliseconds, now and then
+     * long enough for whole frames to complete.
      */
     public void issue(Executor ui, int count, Random pace) throws InterruptedException {
         for (int issued = 0; issued < count; ) {
-            int burst = Math.min(count - issued, 1 + pace.nextInt(60));
-            ui.execute(() -> {
-                for (int k = 0; k < burst; k++) {
-                    step();
-                }
-            });
+            int burst = Math.min(count - issued, 1 + pace.nextInt(30));
+            for (int k = 0; k < burst; k++) {
+                ui.execute(this::step);
+            }
             issued += burst;
             int p = pace.nextInt(100);
-            if (p < 2) {
+            if (p >= 98) {
                 Thread.sleep(100 + pace.nextInt(200));
-            } else if (p < 35) {
-                Thread.sleep(1 + pace.nextInt(8));
+            } else if (p >= 85) {
+                Thread.sleep(20 + pace.nextInt(40));
+            } else if (p >= 25) {
+                Thread.sleep(1 + pace.nextInt(15));
             }
         }
     }

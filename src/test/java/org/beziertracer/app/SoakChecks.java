@@ -103,6 +103,23 @@ public final class SoakChecks {
     }
 
     /**
+     * A checkpoint: ends the open gesture and brings the ray trace back ({@link SoakActions#finish}),
+     * waits (up to {@code timeoutMillis}) until the app is idle, and returns its final state with
+     * the picture it shows.
+     */
+    public static Final idleState(OnUi onUi, AppModel app, SoakActions actions, long timeoutMillis) throws Exception {
+        onUi.call(() -> {
+            actions.finish();
+            return null;
+        });
+        if (!awaitIdle(onUi, app::busy, timeoutMillis)) {
+            printThreads();
+            throw new AssertionError("the app did not go idle within " + timeoutMillis + " ms");
+        }
+        return onUi.call(() -> Final.of(app));
+    }
+
+    /**
      * Waits until {@code busy} (asked on the UI thread through {@code onUi}) has been false for
      * three checks in a row, 30 ms apart; false after {@code timeoutMillis}.
      */
