@@ -1,9 +1,12 @@
 package org.beziertracer.app;
 
 import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.render.Camera;
+import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.RenderOptions;
 
 /**
@@ -26,5 +29,14 @@ public record RenderRequest(Scene scene, LightPlacement light, CameraSpec camera
     public static RenderRequest of(Scene scene, CameraSpec camera, Settings s, Picture target) {
         return new RenderRequest(scene, s.light(), camera, RenderChoices.renderSettings(s, target.width(), target.height()),
                 RenderChoices.intersectOptions(s), RenderChoices.renderOptions(s), target);
+    }
+
+    /**
+     * The render job of this request over {@code snapshot}, the {@link #scene} with its
+     * {@link #light} placed, intersected with {@link #intersect} (the engine's snapshot, or a fresh
+     * build when a test renders the same request from scratch).
+     */
+    public RenderJob job(SceneIntersector snapshot) {
+        return new RenderJob(snapshot, new Camera(camera), settings, options);
     }
 }

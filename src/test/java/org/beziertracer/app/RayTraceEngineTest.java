@@ -72,6 +72,43 @@ class RayTraceEngineTest {
         }
     }
 
+    /**
+     * Found while building the app soak: a render that failed after a newer request had started
+     * marked the engine's frame as done, so {@code busy()} said idle while the newer frame was
+     * still rendering (and the tests that wait for idle compared a half-rendered picture).
+     */
+    @Test
+    void aFailedRenderLeavesTheEngineBusyUntilTheNewerFrameIsDone() throws InterruptedException {
+        Scene scene = Models.teapot();
+        Settings slow = Settings.defaults().with(Toggle.SUPER_SAMPLING, true).with(Level.SAMPLES_PER_PIXEL, 16);
+        var camera = OrbitView.fit(scene.controlBounds(), slow.fovDegrees()).camera(4 / 3.0);
+        java.util.concurrent.BlockingQueue<String> errors = new java.util.concurrent.LinkedBlockingQueue<>();
+        java.util.concurrent.atomic.AtomicBoolean newerDone = new java.util.concurrent.atomic.AtomicBoolean();
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.onError(errors::add);
+            engine.onStatus(st -> newerDone.compareAndSet(false, st.pass() == st.passCount() && st.spp() == 16));
+            RenderRequest newer = RenderRequest.of(scene, camera, slow, new Picture(160, 120, () -> {}));
+            java.util.concurrent.atomic.AtomicBoolean once = new java.util.concurrent.atomic.AtomicBoolean();
+            // The first tile of the failing render asks for a repaint: the newer request comes, then the render fails
+            Picture failing = new Picture(64, 48, () -> {
+                if (once.compareAndSet(false, true)) {
+                    engine.submit(newer);
+                    throw new IllegalStateException("repaint failed");
+                }
+            });
+            engine.submit(RenderRequest.of(scene, camera, Settings.defaults(), failing));
+            assertTrue(errors.poll(30, java.util.concurrent.TimeUnit.SECONDS) != null, "the failure is reported");
+            long end = System.nanoTime() + 60_000_000_000L;
+            while (!newerDone.get()) {
+                boolean busy = engine.busy();
+                assertTrue(busy || newerDone.get(), "busy while the newer frame renders");
+                assertTrue(System.nanoTime() < end, "the newer frame finishes");
+                Thread.sleep(1);
+            }
+            waitIdle(engine);
+        }
+    }
+
     @Test
     void aFailedPreparationIsReportedAsOneLineAndTheEngineGoesIdle() throws InterruptedException {
         Picture fb = new Picture(32, 24, () -> {});
