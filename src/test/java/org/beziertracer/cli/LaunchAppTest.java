@@ -13,7 +13,7 @@ class LaunchAppTest {
     @Test
     void noArgumentsLaunchTheDesktopAppOnlyWithADisplay() {
         AtomicInteger launched = new AtomicInteger();
-        int code = BezierTracerCommand.run(new String[0], launched::incrementAndGet);
+        int code = BezierTracerCommand.run(new String[0], model -> launched.incrementAndGet());
         if (GraphicsEnvironment.isHeadless()) {
             assertEquals(BezierTracerCommand.EXIT_NO_DISPLAY, code);
             assertEquals(0, launched.get());

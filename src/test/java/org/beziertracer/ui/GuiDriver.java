@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 
 import org.beziertracer.app.AppModel;
 import org.beziertracer.app.AppPreferences;
+import org.beziertracer.app.MemoryPreferences;
 import org.beziertracer.model.BezierPatch;
 
 /**
