@@ -12,8 +12,12 @@ import org.beziertracer.math.Vec3;
  */
 public enum LightPlacement {
     SCENE("Scene's lights", Frame.SCENE, null),
-    /** The default: in front of the model, up and to the left as seen from the eye. */
-    EYE_ABOVE_LEFT("Above left of the eye", Frame.VIEW, new Vec3(-0.2, 0.14, 0.55)),
+    /**
+     * The default: up and to the left as seen from the eye, three quarters of the way to the model,
+     * so it lights the model about 45° off the line of sight and, at the default perspective, its
+     * marker shows inside the picture.
+     */
+    EYE_ABOVE_LEFT("Above left of the eye", Frame.VIEW, new Vec3(-0.2, 0.14, 0.75)),
     AT_EYE("At the eye", Frame.VIEW, Vec3.ZERO),
     ABOVE_LEFT("Above left", Frame.WORLD, new Vec3(-1, -1, 1.5).normalize().scale(4)),
     ABOVE_RIGHT("Above right", Frame.WORLD, new Vec3(1, -1, 1.5).normalize().scale(4)),
