@@ -25,10 +25,21 @@ public final class BezierTracerApp {
      * the file or built-in model it names; returns at once (the app lives on the event thread).
      */
     public static void launch(String model) {
-        start(AppPreferences.user()).thenAccept(frame -> {
+        start(AppPreferences.user(), model);
+    }
+
+    /**
+     * Opens the main window, then the file or built-in {@code model} names (when not null), and
+     * completes with the window once shown.
+     *
+     * @param prefs where the theme and recent files are kept (tests pass a node of their own)
+     */
+    public static CompletableFuture<AppFrame> start(AppPreferences prefs, String model) {
+        return start(prefs).thenApply(frame -> {
             if (model != null) {
                 SwingUtilities.invokeLater(() -> frame.app().files().openArgument(model));
             }
+            return frame;
         });
     }
 
