@@ -81,7 +81,7 @@ final class InspectorPanel extends JPanel {
         c.gridwidth = 2;
         grid.add(message, c);
         add(grid, BorderLayout.NORTH);
-        setPreferredSize(new Dimension(210, getPreferredSize().height));
+        setPreferredSize(new Dimension(200, getPreferredSize().height));
         app.addListener(this::refresh);
         refresh();
     }
@@ -148,7 +148,9 @@ final class InspectorPanel extends JPanel {
         try {
             if (st == null) {
                 title.setText("No point selected");
-                where.setText("<html>Click a point; Shift adds,<br>Ctrl toggles, Shift-drag on<br>empty space selects an area</html>");
+                where.setText("<html><div style='width:150px'>Click a control point; Shift-click adds, Ctrl-click "
+                        + "toggles, Shift-drag on empty space selects an area. Then drag, nudge with the arrow keys, or "
+                        + "type a coordinate here.</div></html>");
             } else if (st.handles() == 1) {
                 title.setText("Patch " + st.primary().patch() + ", point (" + st.primary().i() + ", " + st.primary().j() + ")");
                 where.setText(st.copies() == 1 ? "1 copy" : st.copies() + " welded copies");

@@ -16,7 +16,7 @@ final class Borders {
      * A straight cross-border row of the teapot's body whose inner point A the overlay draws as a
      * handle of its own (so the mouse can grab it): {@code {pA, iA, jA, pB, iB, jB, pC, iC, jC}}.
      */
-    static int[] visibleRow(Scene scene) {
+    static int[] visibleRow(GuiDriver d, Scene scene) {
         for (int p = 0; p < 12; p++) {
             for (int q = 0; q < 12; q++) {
                 if (p == q) {
@@ -24,7 +24,7 @@ final class Borders {
                 }
                 for (int k = 0; k < 16; k++) {
                     int[] row = row(scene, p, k % 4, k / 4, q);
-                    if (row != null && bend(scene, row) < 1e-9 && pickable(row)) {
+                    if (row != null && bend(scene, row) < 1e-9 && pickable(d, row)) {
                         return row;
                     }
                 }
@@ -61,21 +61,19 @@ final class Borders {
         return true;
     }
 
-    private static boolean pickable(int[] row) {
+    private static boolean pickable(GuiDriver d, int[] row) {
         return GuiDriver.onEdt(() -> {
-            BezierPatch a = d().app.document().scene().patches().get(row[0]);
+            BezierPatch a = d.app.document().scene().patches().get(row[0]);
             double[] at = new double[3];
-            if (!d().app.view().projector().project(a.get(row[1], row[2], 0), a.get(row[1], row[2], 1),
-                    a.get(row[1], row[2], 2), at) || at[0] < 40 || at[1] < 40 || at[0] > d().app.view().width() - 60
-                    || at[1] > d().app.view().height() - 60) {
+            if (!d.app.view().projector().project(a.get(row[1], row[2], 0), a.get(row[1], row[2], 1),
+                    a.get(row[1], row[2], 2), at) || at[0] < 40 || at[1] < 40 || at[0] > d.app.view().width() - 60
+                    || at[1] > d.app.view().height() - 60) {
                 return false;
             }
-            Handle h = d().app.overlay().geometry().pick(at[0], at[1], 1);
+            Handle h = d.app.overlay().geometry().pick(at[0], at[1], 1);
             return h != null && h.ref().patch() == row[0] && h.ref().i() == row[1] && h.ref().j() == row[2];
         });
     }
-
-    private static GuiDriver d() { return GuiSession.d; }
 
     private static double[] point(Scene s, int[] row, int r) {
         BezierPatch p = s.patches().get(row[3 * r]);

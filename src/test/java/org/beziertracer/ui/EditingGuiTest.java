@@ -180,7 +180,7 @@ class EditingGuiTest extends GuiSession {
         d.tool("smoothJoins");
         assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().on(Toggle.SMOOTH_JOINS)));
         Scene teapot = GuiDriver.onEdt(() -> d.app.document().scene());
-        int[] row = Borders.visibleRow(teapot);
+        int[] row = Borders.visibleRow(d, teapot);
         BufferedImage img0 = shot();
         Point a = d.screenOfPoint(row[0], row[1], row[2]);
         d.drag(a, new Point(a.x - 25, a.y - 35), 8);
