@@ -105,13 +105,17 @@ class SmoothJoinsTest {
         return n;
     }
 
+    /** The handle of node {@code role} (0 = A, 1 = B, 2 = C) of join {@code k}, selected. */
+    private static Selection nodeOf(Scene scene, Topology t, int k, int role) {
+        return Selection.ofHandles(List.of(t.handle(t.welds().ref(t.joins().node(k, role), scene), scene)));
+    }
+
     @Test
     void withoutTheOptionAMovedInnerPointBendsTheRow() {
         Scene teapot = Models.teapot();
         Topology t = Topology.of(teapot, true);
         int k = holding(teapot, t).get(0);
-        PointRef a = t.welds().ref(t.joins().node(k, 0), teapot);
-        Selection s = Selection.ofHandles(List.of(t.handle(a, teapot)));
+        Selection s = nodeOf(teapot, t, k, 0);
         double[] d = {5, 7, -3};
         double[][] plain = row(SelectionMove.apply(teapot, s, d, t, false), t.welds(), t.joins(), k);
         assertTrue(SmoothJoins.sine(plain[0], plain[1], plain[2]) > 1e-3, "a plain move bends the row");
@@ -127,8 +131,7 @@ class SmoothJoinsTest {
         Scene teapot = Models.teapot();
         Topology t = Topology.of(teapot, true);
         int k = holding(teapot, t).get(0);
-        PointRef b = t.welds().ref(t.joins().node(k, 1), teapot);
-        Selection s = Selection.ofHandles(List.of(t.handle(b, teapot)));
+        Selection s = nodeOf(teapot, t, k, 1);
         double[] d = {2, -4, 6};
         Scene moved = SelectionMove.apply(teapot, s, d, t, true);
         double[][] before = row(teapot, t.welds(), t.joins(), k), after = row(moved, t.welds(), t.joins(), k);
@@ -146,11 +149,8 @@ class SmoothJoinsTest {
         int k = holding(teapot, t).get(0);
         PointRef c = t.welds().ref(t.joins().node(k, 2), teapot);
         // Bend the row first (without the option), then move its A with the option on: C stays
-        Scene bent = SelectionMove.apply(teapot, Selection.ofHandles(List.of(t.handle(c, teapot))), new double[] {9, 9, 9},
-                t, false);
-        PointRef a = t.welds().ref(t.joins().node(k, 0), teapot);
-        Scene moved = SelectionMove.apply(bent, Selection.ofHandles(List.of(t.handle(a, bent))), new double[] {1, 2, 3},
-                Topology.of(bent, true), true);
+        Scene bent = SelectionMove.apply(teapot, nodeOf(teapot, t, k, 2), new double[] {9, 9, 9}, t, false);
+        Scene moved = SelectionMove.apply(bent, nodeOf(bent, t, k, 0), new double[] {1, 2, 3}, Topology.of(bent, true), true);
         BezierPatch before = bent.patches().get(c.patch()), after = moved.patches().get(c.patch());
         for (int q = 0; q < 3; q++) {
             assertEquals(before.get(c.i(), c.j(), q), after.get(c.i(), c.j(), q), "C is not pulled back into line");

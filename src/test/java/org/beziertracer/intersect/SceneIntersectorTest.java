@@ -220,17 +220,26 @@ class SceneIntersectorTest {
         assertNotNull(edited.scene());
         assertEquals(moved, edited.scene().patches().get(3));
         assertEquals(scene.patches().get(3), si.scene().patches().get(3), "old snapshot unchanged");
+        sameAnswers(edited, rebuilt, rnd);
+    }
+
+    /** 1000 random rays meet {@code edited} and {@code rebuilt} alike; returns how many hit. */
+    private static int sameAnswers(SceneIntersector edited, SceneIntersector rebuilt, Random rnd) {
         TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
         Hit h1 = new Hit(), h2 = new Hit();
+        int hits = 0;
         for (int r = 0; r < 1000; r++) {
             double[] ray = randomRay(rnd);
             boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
             boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
             assertEquals(b, a, "ray " + r);
             if (a) {
+                hits++;
                 assertEquals(h2.t, h1.t, ROOT_T, "ray " + r);
+                assertEquals(h2.index, h1.index, "ray " + r);
             }
         }
+        return hits;
     }
 
     @org.junit.jupiter.params.ParameterizedTest
@@ -250,20 +259,7 @@ class SceneIntersectorTest {
         SceneIntersector rebuilt = SceneIntersector.build(after, io);
         assertSame(after, edited.scene(), "the edited scene itself, not a copy");
         assertEquals(rebuilt.primitiveCount(), edited.primitiveCount());
-        TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
-        Hit h1 = new Hit(), h2 = new Hit();
-        int hits = 0;
-        for (int r = 0; r < 1000; r++) {
-            double[] ray = randomRay(rnd);
-            boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
-            boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
-            assertEquals(b, a, "ray " + r);
-            if (a) {
-                hits++;
-                assertEquals(h2.t, h1.t, ROOT_T, "ray " + r);
-                assertEquals(h2.index, h1.index, "ray " + r);
-            }
-        }
+        int hits = sameAnswers(edited, rebuilt, rnd);
         assertTrue(hits > 100, "hits " + hits);
     }
 

@@ -48,10 +48,6 @@ class FilesGuiTest extends GuiSession {
     @TempDir
     Path dir;
 
-    private static String title() {
-        return GuiDriver.onEdt(() -> d.frame.getTitle());
-    }
-
     /** Saves the default patch, bent, as {@code name} through File → Save As; returns its picture. */
     private BufferedImage saveBent(Path file) {
         d.menu("Surface", "randomize");
@@ -149,13 +145,7 @@ class FilesGuiTest extends GuiSession {
     @Order(3)
     void exportImageAsksSizeSamplesAndSamplerAndWritesThePng() throws Exception {
         Path png = dir.resolve("export.png");
-        d.menu("File", "exportImage");
-        JDialog options = d.dialogWith(JSpinner.class);
-        typeSpinner(options, "export.width", "200");
-        typeSpinner(options, "export.height", "150");
-        typeSpinner(options, "export.spp", "4");
-        d.click(GuiDriver.onEdt(() -> GuiDriver.button(options, "OK")));
-        d.chooseFile(png);
+        exportThroughTheDialog(png, "200", "150", "4");
         d.waitFor("the export to finish", () -> d.app.status().message().startsWith("exported"));
         BufferedImage img = ImageIO.read(png.toFile());
         assertEquals(200, img.getWidth());
@@ -165,6 +155,32 @@ class FilesGuiTest extends GuiSession {
         assertTrue(middle[0] > corner[0] + 40, "the lit surface in the middle, the background in the corner: "
                 + GuiDriver.save(img, "export"));
         assertEquals("exported 200×150 image to " + png, d.status("message"));
+        d.menu("File", "exportImage");
+        JDialog again = d.dialogWith(JSpinner.class);
+        assertEquals(org.beziertracer.render.SamplerKind.REGULAR, GuiDriver.onEdt(() ->
+                ((javax.swing.JComboBox<?>) GuiDriver.find(again, "export.sampler")).getSelectedItem()),
+                "the choices are offered again next time");
+        assertEquals(200, (int) GuiDriver.onEdt(() -> ((JSpinner) GuiDriver.find(again, "export.width")).getValue()));
+        d.click(GuiDriver.onEdt(() -> GuiDriver.button(again, "Cancel")));
+        d.waitFor("the dialog to close", () -> !again.isShowing());
+        d.settle();
+        assertEquals("exported 200×150 image to " + png, d.status("message"), "Cancel exports nothing");
+    }
+
+    /** File → Export Image…: types the size and samples, picks the first sampler (regular), OK, then the file. */
+    private static void exportThroughTheDialog(Path png, String width, String height, String spp) {
+        d.menu("File", "exportImage");
+        JDialog options = d.dialogWith(JSpinner.class);
+        typeSpinner(options, "export.width", width);
+        typeSpinner(options, "export.height", height);
+        typeSpinner(options, "export.spp", spp);
+        javax.swing.JComboBox<?> sampler = (javax.swing.JComboBox<?>) GuiDriver.find(options, "export.sampler");
+        d.click(sampler);
+        d.key(KeyEvent.VK_HOME);
+        d.key(KeyEvent.VK_ENTER);
+        d.waitFor("the regular sampler", () -> sampler.getSelectedIndex() == 0);
+        d.click(GuiDriver.onEdt(() -> GuiDriver.button(options, "OK")));
+        d.chooseFile(png);
     }
 
     private static void typeSpinner(JDialog dialog, String name, String value) {
@@ -183,13 +199,7 @@ class FilesGuiTest extends GuiSession {
         d.menu("Models", "model:teapot");
         d.settle();
         Path png = dir.resolve("big.png");
-        d.menu("File", "exportImage");
-        JDialog options = d.dialogWith(JSpinner.class);
-        typeSpinner(options, "export.width", "4000");
-        typeSpinner(options, "export.height", "3000");
-        typeSpinner(options, "export.spp", "64");
-        d.click(GuiDriver.onEdt(() -> GuiDriver.button(options, "OK")));
-        d.chooseFile(png);
+        exportThroughTheDialog(png, "4000", "3000", "64");
         javax.swing.JProgressBar bar = d.find("status.progress");
         d.waitFor("a progress bar that fills", () -> bar.isShowing() && !bar.isIndeterminate() && bar.getValue() > 0);
         assertEquals("exporting big.png", GuiDriver.onEdt(() -> bar.getString()));

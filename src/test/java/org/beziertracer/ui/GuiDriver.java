@@ -162,33 +162,7 @@ final class GuiDriver {
 
     /** Opens the menu called {@code title} in the menu bar and clicks its item {@code menu.<id>}, with the mouse. */
     void menu(String title, String id) {
-        JMenu m = onEdt(() -> {
-            for (int k = 0; k < frame.getJMenuBar().getMenuCount(); k++) {
-                JMenu c = frame.getJMenuBar().getMenu(k);
-                if (title.equals(c.getText())) {
-                    return c;
-                }
-            }
-            return null;
-        });
-        if (m == null) {
-            fail("no menu " + title);
-        }
-        click(m);
-        String name = id.startsWith("menu.") ? id : "menu." + id;
-        JMenuItem item = onEdt(() -> {
-            for (Component c : m.getMenuComponents()) {
-                if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
-                    return mi;
-                }
-            }
-            return null;
-        });
-        if (item == null) {
-            fail("no item " + name + " in menu " + title);
-        }
-        waitFor(title + " → " + name + " showing", item::isShowing);
-        click(item);
+        menuPath(title, id.startsWith("menu.") ? id.substring("menu.".length()) : id);
     }
 
     /**

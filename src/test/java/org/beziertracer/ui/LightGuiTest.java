@@ -25,12 +25,6 @@ import org.junit.jupiter.api.TestMethodOrder;
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class LightGuiTest extends GuiSession {
 
-    private static BufferedImage shot() {
-        d.mouseAway();
-        d.settle();
-        return d.capturePanel();
-    }
-
     @Test
     @Order(1)
     void theDefaultLightComesFromAboveLeftAndAtTheEyeIsOnePresetAway() {
