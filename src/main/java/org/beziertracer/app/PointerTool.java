@@ -69,7 +69,10 @@ public final class PointerTool {
             Selection s = selectFor(hit.ref(), base, mods);
             app.select(s);
             if (s.contains(hit.ref())) {
-                gesture = new MoveSelection(base, s, start, x, y);
+                // A plain click (no drag) on one of several selected points selects that one alone
+                Selection alone = mods.equals(Modifiers.NONE) && s.handleCount() > 1
+                        ? Selection.ofHandles(List.of(app.topology().handle(hit.ref(), base))) : null;
+                gesture = new MoveSelection(base, s, start, x, y, alone);
             }
         } else if (mods.selecting() && app.settings().current().pointsShown()) {
             gesture = new Band(x, y, mods.ctrl());
@@ -156,11 +159,14 @@ public final class PointerTool {
         private final double grabDx, grabDy;
         private final Topology topology;
         private final boolean smooth;
+        private final Selection ifClicked;
         private double mouseX, mouseY;
         private Supplier<Scene> lastStep;
 
-        MoveSelection(Scene base, Selection selection, Vec3 start, double x, double y) {
+        /** @param ifClicked the selection after a click without a drag, or null to keep it */
+        MoveSelection(Scene base, Selection selection, Vec3 start, double x, double y, Selection ifClicked) {
             this.base = base;
+            this.ifClicked = ifClicked;
             this.epoch = app.document().epoch();
             this.selection = selection;
             this.start = start;
@@ -198,6 +204,9 @@ public final class PointerTool {
             Runnable commit = () -> app.dragEnded(base, epoch, name);
             if (lastStep == null) {
                 commit.run();
+                if (ifClicked != null) {
+                    app.select(ifClicked);
+                }
             } else {
                 app.editor().preview(epoch, lastStep, commit);
             }

@@ -98,6 +98,14 @@ final class InspectorPanel extends JPanel {
         typing.put(f, false);
         t.addActionListener(e -> apply(f));
         t.getInputMap().put(KeyStroke.getKeyStroke("ESCAPE"), "revert");
+        // Up and down stay in the field: they would otherwise reach the menus and nudge the selection
+        for (String k : new String[] {"UP", "DOWN", "shift UP", "shift DOWN"}) {
+            t.getInputMap().put(KeyStroke.getKeyStroke(k), "stay");
+        }
+        t.getActionMap().put("stay", new javax.swing.AbstractAction() {
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {}
+        });
         t.getActionMap().put("revert", new javax.swing.AbstractAction() {
             @Override
             public void actionPerformed(java.awt.event.ActionEvent e) {

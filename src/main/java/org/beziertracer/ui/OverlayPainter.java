@@ -90,8 +90,8 @@ final class OverlayPainter {
     }
 
     /**
-     * A light: a sun (a disc with rays); pulled in from outside the picture, a ring with an arrow
-     * pointing the way to the light.
+     * A light: a sun (a disc with rays); pale when pulled in from outside the picture; with a bar
+     * across when it cannot be dragged (a scene's own light).
      */
     private static void light(Graphics2D g, LightMarker m, double unit) {
         double r = 6 * unit;

@@ -51,6 +51,9 @@ class SelectionGesturesTest {
         assertEquals(Selection.of(p(1, 1), p(2, 2)), app.selection(), "Ctrl-click takes a selected point out");
         click(0, 3, Modifiers.CTRL);
         assertEquals(Selection.of(p(1, 1), p(2, 2), p(0, 3)), app.selection(), "and puts another in");
+        click(2, 2, Modifiers.NONE);
+        assertEquals(Selection.of(p(2, 2)), app.selection(), "a plain click on a selected point selects it alone");
+        click(0, 3, Modifiers.SHIFT);
         click(3, 3, Modifiers.NONE);
         assertEquals(Selection.of(p(3, 3)), app.selection(), "a plain click starts over");
         app.pointer().pressed(3, 3, Modifiers.NONE);

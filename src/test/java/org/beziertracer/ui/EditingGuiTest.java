@@ -150,6 +150,10 @@ class EditingGuiTest extends GuiSession {
         assertEquals(1.25, GuiDriver.onEdt(() -> d.app.document().scene()).patches().get(0).get(1, 2, 2), 1e-12);
         assertTrue(GuiDriver.differing(img0, img1, 24) > 300, "the surface rose: " + GuiDriver.save(img1, "inspector-z"));
         assertEquals("1.25", GuiDriver.onEdt(() -> z.getText()));
+        Scene typed = GuiDriver.onEdt(() -> d.app.document().scene());
+        d.key(KeyEvent.VK_UP);
+        d.settle();
+        assertTrue(typed == GuiDriver.onEdt(() -> d.app.document().scene()), "Up in the field does not nudge the point");
         d.typeInto(z, "abc");
         d.settle();
         javax.swing.JLabel message = d.find("inspector.message");
