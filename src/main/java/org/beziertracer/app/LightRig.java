@@ -69,11 +69,10 @@ public final class LightRig {
         return out;
     }
 
-    /** Camera right, up and forward, as {@link ScreenProjector} has them. */
+    /** Camera right, up and forward, as the picture has them. */
     private static Vec3[] axes(CameraSpec camera) {
-        Vec3 f = camera.target().sub(camera.eye()).normalize();
-        Vec3 r = f.cross(camera.up()).normalize();
-        return new Vec3[] {r, r.cross(f), f};
+        ScreenProjector p = new ScreenProjector(camera, 1, 1);
+        return new Vec3[] {p.right(), p.up(), p.forward()};
     }
 
     private static double radius(Framing framing) {

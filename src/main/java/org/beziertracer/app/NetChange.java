@@ -35,27 +35,6 @@ final class NetChange {
         net[k + 2] += dz;
     }
 
-    /** Moves point {@code ref} to {@code (x, y, z)}. */
-    void moveTo(PointRef ref, double x, double y, double z) {
-        double[] net = net(ref.patch());
-        int k = index(ref);
-        net[k] = x;
-        net[k + 1] = y;
-        net[k + 2] = z;
-    }
-
-    /** Where {@code ref} is now (after the moves so far) into {@code out}. */
-    void position(PointRef ref, double[] out) {
-        double[] net = nets.get(ref.patch());
-        BezierPatch p = base.patches().get(ref.patch());
-        for (int c = 0; c < 3; c++) {
-            out[c] = net == null ? p.get(ref.i(), ref.j(), c) : net[p.index(ref.i(), ref.j(), c)];
-        }
-    }
-
-    /** True when no point has moved. */
-    boolean isEmpty() { return nets.isEmpty(); }
-
     private int index(PointRef ref) {
         return base.patches().get(ref.patch()).index(ref.i(), ref.j(), 0);
     }
@@ -76,12 +55,11 @@ final class NetChange {
         return base.toBuilder().patches(patches).build();
     }
 
-    /** Patch indices touched, in the order first moved. */
-    int[] touched() {
-        return nets.keySet().stream().mapToInt(Integer::intValue).toArray();
-    }
-
-    /** {@code p} with another net of the same size, everything else kept. */
+    /**
+     * {@code p} with another net of the same size, everything else kept. The one place an edit
+     * makes a patch from a net: when patches gain weights and trims (the rational patches of issue
+     * 11), this must keep them ({@code p.withNet(net)}), or a move would silently drop them.
+     */
     static BezierPatch withNet(BezierPatch p, double[] net) {
         return new BezierPatch(p.degreeU(), p.degreeV(), net);
     }

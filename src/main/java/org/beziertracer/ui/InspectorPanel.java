@@ -13,7 +13,6 @@ import java.util.Locale;
 import java.util.Map;
 
 import javax.swing.BorderFactory;
-import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
@@ -180,7 +179,4 @@ final class InspectorPanel extends JPanel {
             refreshing = false;
         }
     }
-
-    /** The field for {@code f} (tests). */
-    JComponent field(Field f) { return fields.get(f); }
 }
