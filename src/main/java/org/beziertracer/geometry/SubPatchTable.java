@@ -174,10 +174,21 @@ public final class SubPatchTable {
 
     /** A new table with patch {@code index} replaced and re-split; the others are reused. */
     public SubPatchTable withPatch(int index, BezierPatch patch) {
+        return withPatches(new int[] {index}, List.of(patch));
+    }
+
+    /**
+     * A new table with patches {@code indices[k]} replaced by {@code replacements.get(k)} and
+     * re-split, the others reused: one pass over the table however many patches changed (an edit
+     * that moves a point shared by several patches).
+     */
+    public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements) {
         PatchPieces[] copy = pieces.clone();
-        copy[index] = PatchSplitter.split(patch, options);
         var list = new java.util.ArrayList<>(patches);
-        list.set(index, patch);
+        for (int k = 0; k < indices.length; k++) {
+            copy[indices[k]] = PatchSplitter.split(replacements.get(k), options);
+            list.set(indices[k], replacements.get(k));
+        }
         return new SubPatchTable(list, copy, options);
     }
 

@@ -75,6 +75,19 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
      */
     Leaves withPatch(Scene edited, int index, double sceneSize);
 
+    /**
+     * {@link #withPatch} for several patches at once ({@code edited} differs from the old scene in
+     * patches {@code indices} only); kinds that can should remake their data once, not once per
+     * patch.
+     */
+    default Leaves withPatches(Scene edited, int[] indices, double sceneSize) {
+        Leaves out = this;
+        for (int index : indices) {
+            out = out.withPatch(edited, index, sceneSize);
+        }
+        return out;
+    }
+
     /** Sub-patches (BVH leaves) of the exact mode; the number of whole patches for other kinds. */
     int subPatchCount();
 

@@ -107,6 +107,16 @@ abstract class PatchLeaves implements Leaves {
         return with(table.withPatch(index, edited.patches().get(index)), RELATIVE_TOLERANCE * sceneSize);
     }
 
+    /** Re-splits only the edited patches, in one new table ({@link SubPatchTable#withPatches}). */
+    @Override
+    public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
+        java.util.List<org.beziertracer.model.BezierPatch> replacements = new java.util.ArrayList<>(indices.length);
+        for (int index : indices) {
+            replacements.add(edited.patches().get(index));
+        }
+        return with(table.withPatches(indices, replacements), RELATIVE_TOLERANCE * sceneSize);
+    }
+
     @Override
     public final int count() { return table.count; }
 

@@ -73,10 +73,20 @@ public final class SceneIntersector {
      * when the number of leaves is unchanged, else rebuilt.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
+        return withPatches(scene.withPatch(index, patch), new int[] {index});
+    }
+
+    /**
+     * A new snapshot of {@code edited}, a scene that differs from this one's only in the patches
+     * {@code indices} (the same number of patches, planes, spheres and materials): those patches'
+     * leaves are remade in one pass and the BVH is refitted once (rebuilt when the number of leaves
+     * changed). An edit that moves a point shared by several patches builds one new scene and
+     * calls this once, rather than {@link #withPatch} once per copy.
+     */
+    public SceneIntersector withPatches(Scene edited, int[] indices) {
         long t0 = System.nanoTime();
-        Scene edited = scene.withPatch(index, patch);
         double size = sizeOf(edited);
-        Leaves newLeaves = leaves.withPatch(edited, index, size);
+        Leaves newLeaves = leaves.withPatches(edited, indices, size);
         Accelerator newAccel;
         if (newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
             newAccel = bvh.refit(newLeaves.bounds());

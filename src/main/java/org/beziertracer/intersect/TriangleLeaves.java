@@ -64,6 +64,12 @@ final class TriangleLeaves implements Leaves {
         return build(edited, mesh.segments);
     }
 
+    /** The whole mesh is tessellated again, once. */
+    @Override
+    public TriangleLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
+        return build(edited, mesh.segments);
+    }
+
     @Override
     public int count() { return mesh.count; }
 
