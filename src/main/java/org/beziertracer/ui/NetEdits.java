@@ -45,7 +45,7 @@ public final class NetEdits {
             for (int k = 2; k < net.length; k += 3) {
                 net[k] += (2 * random.nextDouble() - 1) * RANDOM_Z_RANGE * scale;
             }
-            patches.add(new BezierPatch(p.degreeU(), p.degreeV(), net));
+            patches.add(base.withNet(net));
         }
         return scene.toBuilder().patches(patches).build();
     }
