@@ -3,6 +3,7 @@ package org.beziertracer.model;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Objects;
 
 import org.beziertracer.math.BezierDecomposition;
 import org.beziertracer.math.KnotVector;
@@ -141,6 +142,20 @@ public final class FreeFormSurface {
                     new PatchOrigin(this, k, total)));
         }
         return out;
+    }
+
+    /** Equal descriptions: same basis, degrees, parameter values, points, weights, range and trim loops. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof FreeFormSurface s && s.basis == basis && s.degreeU == degreeU && s.degreeV == degreeV
+                && s.countU == countU && s.countV == countV && Arrays.equals(s.parmU, parmU)
+                && Arrays.equals(s.parmV, parmV) && Arrays.equals(s.points, points) && Arrays.equals(s.weights, weights)
+                && Arrays.equals(s.range, range) && Objects.equals(s.trim, trim);
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(basis, degreeU, degreeV, countU, countV, Arrays.hashCode(points), Arrays.hashCode(parmU));
     }
 
     @Override
