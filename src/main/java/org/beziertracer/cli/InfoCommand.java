@@ -18,21 +18,27 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code info MODEL}: prints patch count, the degree histogram and the control-point bounding box.
+ * {@code info MODEL}: prints patch count, the degree histogram, the rational and trimmed patches and
+ * the free-form surfaces they came from ({@link SurfaceSummary}), the control-point bounding box
+ * and the sub-patch and BVH figures.
  * <pre>
  * model: teapot
  * patches: 32
- * degrees: 3x3 x32
+ * degrees: 3x3 (32)
+ * rational patches: 0
+ * trimmed patches: 0
+ * surfaces: 0
  * control-point bounds: x[-120,141] y[-80,80] z[0,120]
  * </pre>
  * Degrees are listed as {@code nxm (count)}, sorted by u then v degree. A model that cannot be read
  * ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
-        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a model.")
+        description = "Prints patch count, degrees, rational and trimmed patches, free-form surfaces and their Bézier"
+                + " pieces, control-point bounding box, sub-patch and BVH figures of a model.")
 final class InfoCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (" + Models.NAME_LIST + ")")
     String model;
 
     @Spec
@@ -45,6 +51,7 @@ final class InfoCommand implements Callable<Integer> {
         out.println("model: " + model);
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
+        SurfaceSummary.lines(scene).forEach(out::println);
         out.println("control-point bounds: " + scene.controlBounds());
         SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
         out.println("sub-patches: " + si.subPatchCount());

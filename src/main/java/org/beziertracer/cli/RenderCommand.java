@@ -17,6 +17,7 @@ import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.SceneFiles;
+import org.beziertracer.model.io.Models;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
 import org.beziertracer.render.Film;
@@ -51,7 +52,7 @@ final class RenderCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE",
-            description = "a .bpt/.obj model, a built-in model (patch, teapot)")
+            description = "a .bpt/.obj model, a built-in model (" + Models.NAME_LIST + ")")
     String model;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically)")

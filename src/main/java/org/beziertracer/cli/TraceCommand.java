@@ -44,7 +44,7 @@ final class TraceCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (" + Models.NAME_LIST + ")")
     String model;
 
     @Option(names = "--method", paramLabel = "clipping|newton|subdivision", defaultValue = "clipping",

@@ -18,7 +18,8 @@ public final class ModelLoader {
     private ModelLoader() {}
 
     /** Built-in models and scenes, in menu order. */
-    public static final List<String> BUILT_INS = List.of("patch", "teapot", "teapot-room");
+    public static final List<String> BUILT_INS = List.of("patch", "teapot", "teapot-room", "teacup", "teaspoon",
+            "sphere", "torus", "trimmed-plate");
 
     /** Extensions File → Open accepts. */
     public static final List<String> EXTENSIONS = List.of("bpt", "obj", "json");

@@ -25,6 +25,11 @@ import org.beziertracer.model.Scene;
  *   <li>{@code teapot} — the 32-patch Utah teapot as built into Sunflow (z-up, bounding box
  *       {@code x[-120,141] y[-80,80] z[0,120]}), read from the classpath resource
  *       {@value #TEAPOT_RESOURCE}; see {@code shared/models/README.md} for its provenance.</li>
+ *   <li>{@code teacup} (26 patches) and {@code teaspoon} (16 patches) — the rest of Newell's 1975
+ *       tea set, bicubic Bézier patches from the published control points (z-up), read from
+ *       {@code teacup.bpt} and {@code teaspoon.bpt} beside the teapot.</li>
+ *   <li>{@code sphere}, {@code torus}, {@code trimmed-plate} — rational B-spline and trimmed
+ *       surfaces, see {@link BuiltInSurfaces}.</li>
  * </ul>
  * Otherwise {@link #load(String)} takes a path and picks the reader by extension
  * ({@code .bpt} or {@code .obj}, any case). All failures are one-line
@@ -37,7 +42,11 @@ public final class Models {
     public static final String TEAPOT_RESOURCE = "/org/beziertracer/models/teapot.bpt";
 
     /** Names accepted by {@link #builtIn(String)}, in the order shown to users. */
-    public static final List<String> NAMES = List.of("patch", "teapot");
+    public static final List<String> NAMES = List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus",
+            "trimmed-plate");
+
+    /** {@link #NAMES} as one line, for help texts (a compile-time constant). */
+    public static final String NAME_LIST = "patch, teapot, teacup, teaspoon, sphere, torus, trimmed-plate";
 
     /** Half the side of the square spanned by {@link #flatGrid(int, int)}. */
     public static final double GRID_HALF_SIZE = 1.5;
@@ -85,18 +94,31 @@ public final class Models {
     }
 
     private static final class TeapotHolder {
-        static final Scene TEAPOT = loadTeapot();
+        static final Scene TEAPOT = resource(TEAPOT_RESOURCE);
+    }
 
-        private static Scene loadTeapot() {
-            try (InputStream in = Models.class.getResourceAsStream(TEAPOT_RESOURCE)) {
-                if (in == null) {
-                    throw new IllegalStateException("built-in model resource " + TEAPOT_RESOURCE + " is missing");
-                }
-                return new Scene(BptReader.read(new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8)),
-                        "teapot.bpt"));
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
+    /** The teacup and the teaspoon, read once when first asked for. */
+    private static final class TeaSetHolder {
+        static final Scene TEACUP = resource("/org/beziertracer/models/teacup.bpt");
+        static final Scene TEASPOON = resource("/org/beziertracer/models/teaspoon.bpt");
+    }
+
+    /** The free-form built-ins, built once when first asked for. */
+    private static final class SurfaceHolder {
+        static final Scene SPHERE = new Scene(BuiltInSurfaces.sphere());
+        static final Scene TORUS = new Scene(BuiltInSurfaces.torus());
+        static final Scene TRIMMED_PLATE = new Scene(BuiltInSurfaces.trimmedPlate());
+    }
+
+    private static Scene resource(String path) {
+        try (InputStream in = Models.class.getResourceAsStream(path)) {
+            if (in == null) {
+                throw new IllegalStateException("built-in model resource " + path + " is missing");
             }
+            return new Scene(BptReader.read(new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8)),
+                    path.substring(path.lastIndexOf('/') + 1)));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
     }
 
@@ -105,6 +127,11 @@ public final class Models {
         return switch (name.toLowerCase(Locale.ROOT)) {
             case "patch" -> patch();
             case "teapot" -> teapot();
+            case "teacup" -> TeaSetHolder.TEACUP;
+            case "teaspoon" -> TeaSetHolder.TEASPOON;
+            case "sphere" -> SurfaceHolder.SPHERE;
+            case "torus" -> SurfaceHolder.TORUS;
+            case "trimmed-plate" -> SurfaceHolder.TRIMMED_PLATE;
             default -> null;
         };
     }
@@ -134,7 +161,10 @@ public final class Models {
         }
     }
 
-    /** Saves patches atomically, choosing BPT or free-form OBJ by the extension of {@code file}. */
+    /**
+     * Saves patches atomically, choosing BPT or free-form OBJ by the extension of {@code file}
+     * (BPT refuses rational and trimmed patches with one line; OBJ keeps everything).
+     */
     public static void save(Path file, List<BezierPatch> patches) throws IOException {
         if (Format.of(file.toString()) == Format.BPT) {
             BptWriter.write(file, patches);

@@ -13,6 +13,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -169,7 +170,7 @@ final class SceneReader {
     private static List<BezierPatch> inlinePatches(JsonNode list) {
         List<BezierPatch> out = new ArrayList<>();
         for (JsonNode p : list.array()) {
-            p.object("degree", "points");
+            p.object("degree", "points", "weights", "domain");
             JsonNode degree = p.require("degree");
             List<JsonNode> nm = degree.array();
             if (nm.size() != 2) {
@@ -192,7 +193,14 @@ final class SceneReader {
             for (int k = 0; k < pts.size(); k++) {
                 System.arraycopy(pts.get(k).asNumbers(3), 0, net, 3 * k, 3);
             }
-            out.add(new BezierPatch(n, m, net));
+            double[] weights = p.has("weights") ? p.get("weights").asNumbers(pts.size()) : null;
+            PatchDomain domain = null;
+            if (p.has("domain")) {
+                double[] d = p.get("domain").asNumbers(4);
+                domain = build(p.get("domain"), () -> new PatchDomain(d[0], d[1], d[2], d[3], null));
+            }
+            PatchDomain dom = domain;
+            out.add(build(p.has("weights") ? p.get("weights") : points, () -> new BezierPatch(n, m, net, weights, dom, null)));
         }
         return out;
     }

@@ -12,6 +12,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -22,7 +23,9 @@ import org.beziertracer.model.Sphere;
  * Writes a {@link SceneDocument} as a version-1 scene file that {@link SceneReader} reads back to
  * an equal document: every material is named {@code m0, m1, …} in scene order and referenced by
  * name, patches are written inline ({@code "patches"}, one model per run of patches sharing a
- * material), numbers use the shortest text that parses back to the same double
+ * material; a rational patch with its {@code "weights"}, a patch of a free-form surface with its
+ * {@code "domain"}; trimmed surfaces cannot be written inline and are refused with one line),
+ * numbers use the shortest text that parses back to the same double
  * ({@link NumberText#format}). Arrays of numbers stay on one line. Stateless.
  */
 final class SceneWriter {
@@ -143,6 +146,17 @@ final class SceneWriter {
             }
         }
         o.add("points", points);
+        if (p.trim() != null) {
+            throw new IllegalArgumentException("a scene file cannot hold a trimmed surface inline; save the model as"
+                    + " .obj and name it in the scene file with \"file\"");
+        }
+        if (p.isRational()) {
+            o.add("weights", numbers(p.weights()));
+        }
+        PatchDomain d = p.domain();
+        if (!d.isUnit()) {
+            o.add("domain", numbers(d.u0(), d.u1(), d.v0(), d.v1()));
+        }
         return o;
     }
 
