@@ -36,6 +36,14 @@ final class HodographBounds {
         out[o + 8] = 1e-10 * (la + ra) * (lb + rb);
     }
 
+    /** Writes data for which the single-root test never succeeds (infinite radii): for rational pieces. */
+    static void never(double[] out, int o) {
+        java.util.Arrays.fill(out, o, o + STRIDE, 0);
+        out[o + 6] = Double.POSITIVE_INFINITY;
+        out[o + 7] = Double.POSITIVE_INFINITY;
+        out[o + 8] = Double.POSITIVE_INFINITY;
+    }
+
     /**
      * Ball around the differences {@code net[p + step] − net[p]} for {@code cols} points per row
      * and {@code rows + 1} rows ({@code rowStride} doubles apart): centre to {@code ab[c..c+3)},
