@@ -95,4 +95,19 @@ public final class RationalDeCasteljau {
             out[outOff + 6 + c] = wv == 0 ? scratch[h + 8 + c] / w : (scratch[h + 8 + c] - s * wv) / w;
         }
     }
+
+    /**
+     * {@code S}, {@code ∂S/∂u}, {@code ∂S/∂v} into {@code out[0..9)} of a polynomial net
+     * ({@code dim = 3}, exactly {@link DeCasteljau#evaluateWithDerivatives(double[], int, int, int,
+     * double, double, double[], double[])}) or a homogeneous rational one ({@code dim = 4}): the
+     * one call for code that holds both kinds (the whole patches of a scene).
+     */
+    public static void pointAndDerivatives(double[] net, int off, int n, int m, int dim, double u, double v,
+                                           double[] out, double[] scratch) {
+        if (dim == 4) {
+            evaluateWithDerivatives(net, off, n, m, u, v, out, 0, scratch, 0);
+        } else {
+            DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, out, scratch);
+        }
+    }
 }
