@@ -33,6 +33,10 @@ import org.beziertracer.geometry.SubPatchTable;
  * the nearest returned, and pieces are pruned by their ray-space bounds (the third coordinate
  * bounds t, so a piece beyond the best hit so far is dropped).
  *
+ * <p>A rational leaf is clipped on its weighted distances {@code w·d} (the zero set of
+ * {@code Σ w_ij·d_ij·B_i(u)·B_j(v)}, Nishita et al.), its weights carried along in the context's
+ * weight arena ({@link RationalNets}); everything else is the same.
+ *
  * <p>Allocation-free: all nets live in the context's arena, a stack of at most
  * {@link TraceContext#MAX_ENTRIES} entries.
  */
@@ -76,6 +80,10 @@ final class BezierClipper {
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
         ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
+        boolean rational = RationalNets.rational(tab, s);
+        if (rational) {
+            RationalNets.weigh(ctx, tab, s, points);
+        }
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         int sp = 1;
         double best = tMax;
@@ -92,6 +100,9 @@ final class BezierClipper {
             // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
             double[] rb = ctx.rayBounds;
             Bounds.ofPoints(arena, base, points, rb);
+            if (rational) {
+                RationalNets.depthBounds(ctx, w, points, rb);
+            }
             double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             double slack = tolerance;
             if (min1 > slack || max1 < -slack || min2 > slack || max2 < -slack
@@ -141,9 +152,15 @@ final class BezierClipper {
                 }
                 if (b - a < 1) {
                     DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+                    if (rational) {
+                        RationalNets.restrictU(ctx, w, n, m, a, b);
+                    }
                 }
                 if (d - c < 1) {
                     DeCasteljau.restrictV(arena, base, n, m, 3, c, d);
+                    if (rational) {
+                        RationalNets.restrictV(ctx, w, n, m, c, d);
+                    }
                 }
                 boxes[b4] = a; boxes[b4 + 1] = b; boxes[b4 + 2] = c; boxes[b4 + 3] = d;
                 continue;
@@ -157,6 +174,9 @@ final class BezierClipper {
             double keptU = b - a;
             if (keptU < 1) {
                 DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+                if (rational) {
+                    RationalNets.restrictU(ctx, w, n, m, a, b);
+                }
                 double du = u1 - u0;
                 u1 = u0 + du * b;
                 u0 = u0 + du * a;
@@ -171,6 +191,9 @@ final class BezierClipper {
             double keptV = b - a;
             if (keptV < 1) {
                 DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
+                if (rational) {
+                    RationalNets.restrictV(ctx, w, n, m, a, b);
+                }
                 double dv = v1 - v0;
                 v1 = v0 + dv * b;
                 v0 = v0 + dv * a;
@@ -197,7 +220,11 @@ final class BezierClipper {
                     sp--; // stack full: drop this piece (bounded work)
                     continue;
                 }
-                split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
+                boolean inU = u1 - u0 >= v1 - v0;
+                boolean swapped = split(ctx, arena, base, len, n, m, boxes, b4, inU);
+                if (rational) {
+                    RationalNets.split(ctx, w, n, m, inU, swapped);
+                }
                 sp++;
             }
         }
@@ -357,10 +384,11 @@ final class BezierClipper {
 
     /**
      * Splits the piece in slot {@code base} in half; the half nearer the ray origin goes to the
-     * next slot (visited first), the other stays.
+     * next slot (visited first), the other stays. Returns true when the upper half stayed (the
+     * halves were swapped).
      */
-    static void split(TraceContext ctx, double[] arena, int base, int len, int n, int m,
-                      double[] boxes, int b4, boolean inU) {
+    static boolean split(TraceContext ctx, double[] arena, int base, int len, int n, int m,
+                         double[] boxes, int b4, boolean inU) {
         double[] tmp = ctx.tmpNet;
         System.arraycopy(arena, base, tmp, 0, len);
         int next = base + len;
@@ -389,6 +417,7 @@ final class BezierClipper {
             boxes[b4] = lu0; boxes[b4 + 1] = lu1; boxes[b4 + 2] = lv0; boxes[b4 + 3] = lv1;
             boxes[n4] = hu0; boxes[n4 + 1] = hu1; boxes[n4 + 2] = hv0; boxes[n4 + 3] = hv1;
         }
+        return swap;
     }
 
     private static double minThird(double[] net, int base, int len) {

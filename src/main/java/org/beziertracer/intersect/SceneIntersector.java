@@ -3,10 +3,11 @@ package org.beziertracer.intersect;
 import org.beziertracer.accel.Accelerator;
 import org.beziertracer.accel.Bvh;
 import org.beziertracer.accel.FlatList;
-import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.PatchNormals;
+import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.geometry.TrimCurves;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 
@@ -38,6 +39,8 @@ public final class SceneIntersector {
     final double tolerance;
     final double sceneSize;
     final double buildMillis;
+    /** The leaf solver without the trim test, for {@link TrimFilter} (one object, bound once). */
+    private final TrimFilter.Solver untrimmed = this::solveLeaf;
 
     private SceneIntersector(Scene scene, SubPatchTable table, TriangleMesh mesh, Accelerator accel,
                              IntersectOptions options, double buildMillis) {
@@ -126,6 +129,7 @@ public final class SceneIntersector {
                 b.v = mesh.uv(b.subPatch, b.b1, b.b2, 1);
             }
             hit.set(ctx.best);
+            SurfaceParameters.toSurface(table, hit);
             best = hit.t;
         }
         for (int k = 0; k < shapes.planeCount; k++) {
@@ -192,8 +196,27 @@ public final class SceneIntersector {
         }
     }
 
-    /** Runs the selected solver on sub-patch {@code s}; the root goes to {@code ctx.root*}. */
+    /**
+     * Runs the selected solver on sub-patch {@code s}, keeping only roots inside the trim region
+     * of a leaf that needs the test ({@link TrimFilter}); the root goes to {@code ctx.root*}.
+     */
     boolean solvePatch(TraceContext ctx, int s, double tMin, double tMax) {
+        if (table.trimTest != null && table.trimTest[s]) {
+            return TrimFilter.solve(untrimmed, table, ctx, s, tMin, tMax);
+        }
+        return solveLeaf(ctx, s, tMin, tMax);
+    }
+
+    /** True when a tessellated-mode hit on triangle {@code prim} lies inside its patch's trim region. */
+    boolean keepsTriangleHit(TraceContext ctx, int prim) {
+        int k = mesh.patchOf[prim];
+        TrimCurves trim = table.patchTrim[k];
+        return trim == null || TrimFilter.inside(table, ctx, k, trim, mesh.uv(prim, ctx.rootB1, ctx.rootB2, 0),
+                mesh.uv(prim, ctx.rootB1, ctx.rootB2, 1));
+    }
+
+    /** The selected solver on sub-patch {@code s}, trims ignored. */
+    private boolean solveLeaf(TraceContext ctx, int s, double tMin, double tMax) {
         ctx.solverCalls++;
         switch (method) {
             case CLIPPING:
@@ -219,27 +242,44 @@ public final class SceneIntersector {
         if (hit.kind == Hit.PATCH && mesh != null) {
             mesh.surfacePoint(hit.subPatch, hit.b1, hit.b2, sp);
         } else if (hit.kind == Hit.PATCH) {
-            int k = hit.index;
-            int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
-            double[] e = ctx.hitEval;
-            if (ctx.hitEvalPatch != k || ctx.hitEvalU != hit.u || ctx.hitEvalV != hit.v) {
-                // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
-                e = ctx.eval;
-                ctx.evalPatch = -1;
-                DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
-            }
-            sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
-            sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
-            sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
-            double[] nrm = ctx.normal;
-            PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, table.patchSquaredExtent[k], nrm, 0,
-                    ctx.scratch);
-            sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
+            patchPoint(ctx, hit, sp);
         } else if (hit.kind == Hit.PLANE) {
             shapes.planePoint(hit.index, hit, ctx, sp);
         } else {
             shapes.spherePoint(hit.index, hit, ctx, sp);
         }
+    }
+
+    /**
+     * The patch geometry at a patch hit, on the parent patch (rational through its homogeneous
+     * net); for a piece of a free-form surface the derivatives are with respect to the surface's
+     * parameters, which the hit reports.
+     */
+    private void patchPoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
+        int k = hit.index;
+        int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k], dim = table.patchDim[k];
+        boolean plain = SurfaceParameters.unit(table, k);
+        double u = plain ? hit.u : SurfaceParameters.s(table, k, hit.u);
+        double v = plain ? hit.v : SurfaceParameters.t(table, k, hit.v);
+        double[] e = ctx.hitEval;
+        if (ctx.hitEvalPatch != k || ctx.hitEvalU != u || ctx.hitEvalV != v) {
+            // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
+            e = ctx.eval;
+            ctx.evalPatch = -1;
+            RationalDeCasteljau.pointAndDerivatives(table.patchNets, off, n, m, dim, u, v, e, ctx.scratch);
+        }
+        double su = 1, sv = 1;
+        if (!plain) {
+            su = 1 / (table.patchDomain[4 * k + 1] - table.patchDomain[4 * k]);
+            sv = 1 / (table.patchDomain[4 * k + 3] - table.patchDomain[4 * k + 2]);
+        }
+        sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
+        sp.dpdux = e[3] * su; sp.dpduy = e[4] * su; sp.dpduz = e[5] * su;
+        sp.dpdvx = e[6] * sv; sp.dpdvy = e[7] * sv; sp.dpdvz = e[8] * sv;
+        double[] nrm = ctx.normal;
+        PatchNormals.unitNormal(table.patchNets, off, n, m, dim, u, v, e, table.patchSquaredExtent[k], nrm, 0,
+                ctx.scratch);
+        sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
     }
 
     public Scene scene() { return scene; }

@@ -3,6 +3,7 @@ package org.beziertracer.intersect;
 import org.beziertracer.accel.LeafIntersector;
 import org.beziertracer.accel.LeafOccluder;
 import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.TrimCurves;
 
 /**
  * Per-thread scratch for ray queries: the current ray and its ray-space frame, the BVH stack,
@@ -40,6 +41,10 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     /** BVH traversal stack; grown (rarely, outside the per-ray loop) when a deeper BVH arrives. */
     int[] stack = new int[256];
     final double[] arena = new double[MAX_ENTRIES * NET_LENGTH];
+    /** The weights of the arena's nets, for rational leaves ({@link RationalNets}); same slots. */
+    final double[] weightArena = new double[MAX_ENTRIES * RationalNets.WEIGHT_SLOT];
+    /** Scratch of the trim test ({@link TrimFilter}). */
+    final double[] trimScratch = new double[TrimCurves.SCRATCH_LENGTH];
     final double[] entryBoxes = new double[MAX_ENTRIES * 4];
     final int[] entryDepth = new int[MAX_ENTRIES];
     final double[] tmpNet = new double[NET_LENGTH];
@@ -144,7 +149,7 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     public double intersect(int prim, double tMax) {
         TriangleMesh mesh = scene.mesh;
         if (mesh != null) {
-            if (mesh.intersect(this, prim, tMin, tMax)) {
+            if (mesh.intersect(this, prim, tMin, tMax) && scene.keepsTriangleHit(this, prim)) {
                 found = true;
                 best.t = rootT;
                 best.b1 = rootB1;
@@ -180,7 +185,7 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     public boolean occludes(int prim, double tMax) {
         TriangleMesh mesh = scene.mesh;
         if (mesh != null) {
-            return mesh.intersect(this, prim, tMin, tMax);
+            return mesh.intersect(this, prim, tMin, tMax) && scene.keepsTriangleHit(this, prim);
         }
         return scene.solvePatch(this, prim, tMin, tMax);
     }
