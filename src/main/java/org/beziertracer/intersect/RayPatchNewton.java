@@ -72,6 +72,8 @@ final class RayPatchNewton {
             u += du;
             v += dv;
             if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
+                ctx.escapeU = u; // where the iteration left the box (NewtonSolver may restart there)
+                ctx.escapeV = v;
                 return DIVERGED;
             }
             if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15) {

@@ -79,6 +79,8 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
 
     // Root found by the last solver call, in the parent patch's parameters
     double rootT, rootU, rootV;
+    /** The iterate with which the last diverged Newton solve left its box. */
+    double escapeU, escapeV;
     /** Tessellated mode: barycentric weights of the hit triangle's second and third corner. */
     double rootB1, rootB2;
 
