@@ -35,13 +35,14 @@ final class NewtonSolver {
         double uLo = Math.max(-1e-9, u0 - mu), uHi = Math.min(1 + 1e-9, u1 + mu);
         double vLo = Math.max(-1e-9, v0 - mv), vHi = Math.min(1 + 1e-9, v1 + mv);
         double escapeU = Double.NaN, escapeV = Double.NaN;
+        ctx.escapeU = Double.NaN; // set only when the centre start leaves the box (not when it runs out of steps)
         for (int k = 0; k < STARTS.length; k += 2) {
             double u = u0 + STARTS[k] * (u1 - u0), v = v0 + STARTS[k + 1] * (v1 - v0);
             int r = RayPatchNewton.solve(ctx, tab, tab.parent[s], u, v, MAX_STEPS, uLo, uHi, vLo, vHi, tolerance);
             if (accept(ctx, r, tMin, tMax)) {
                 return true;
             }
-            if (k == 0 && r == RayPatchNewton.DIVERGED) {
+            if (k == 0 && !Double.isNaN(ctx.escapeU)) {
                 escapeU = Math.min(uHi, Math.max(uLo, ctx.escapeU));
                 escapeV = Math.min(vHi, Math.max(vLo, ctx.escapeV));
             }
