@@ -69,8 +69,8 @@ public final class Bvh implements Accelerator {
     }
 
     @Override
-    public double closestHit(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafIntersector leaf, int[] stack) {
+    public <Q> double closestHit(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query, int[] stack) {
         final double[] b = nodeBounds;
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
@@ -84,7 +84,7 @@ public final class Bvh implements Accelerator {
             if (n > 0) {
                 // Leaf: every primitive may shrink tMax
                 for (int i = leftFirst[node], end = i + n; i < end; i++) {
-                    tMax = leaf.intersect(primIndices[i], tMax);
+                    tMax = leaf.intersect(query, primIndices[i], tMax);
                 }
                 node = -1;
             } else {
@@ -127,8 +127,8 @@ public final class Bvh implements Accelerator {
     }
 
     @Override
-    public boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafOccluder leaf, int[] stack) {
+    public <Q> boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query, int[] stack) {
         final double[] b = nodeBounds;
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
@@ -141,7 +141,7 @@ public final class Bvh implements Accelerator {
             int n = count[node];
             if (n > 0) {
                 for (int i = leftFirst[node], end = i + n; i < end; i++) {
-                    if (leaf.occludes(primIndices[i], tMax)) {
+                    if (leaf.occludes(query, primIndices[i], tMax)) {
                         return true;
                     }
                 }

@@ -1,8 +1,6 @@
 package org.beziertracer.geometry;
 
-import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
@@ -91,7 +89,7 @@ public final class SubPatchTable {
         patchDegreeU = new int[pieces.length];
         patchDegreeV = new int[pieces.length];
         patchDim = new int[pieces.length];
-        patchDomain = new double[4 * pieces.length];
+        patchDomain = domains(this.patches);
         int patchDoubles = 0;
         boolean anyRational = false, anyTrimmed = false;
         for (int k = 0; k < pieces.length; k++) {
@@ -103,11 +101,6 @@ public final class SubPatchTable {
             patchDoubles += p.pointCount() * patchDim[k];
             anyRational |= p.isRational();
             anyTrimmed |= trims[k] != null;
-            PatchDomain d = p.domain();
-            patchDomain[4 * k] = d.u0();
-            patchDomain[4 * k + 1] = d.u1();
-            patchDomain[4 * k + 2] = d.v0();
-            patchDomain[4 * k + 3] = d.v1();
         }
         patchNets = new double[patchDoubles];
         patchSquaredExtent = new double[pieces.length];
@@ -170,15 +163,23 @@ public final class SubPatchTable {
         firstOf[pieces.length] = s;
     }
 
+    /** {@code u0, u1, v0, v1} of each patch's {@link PatchDomain}, one after another. */
+    public static double[] domains(List<BezierPatch> patches) {
+        double[] out = new double[4 * patches.size()];
+        for (int k = 0; k < patches.size(); k++) {
+            PatchDomain d = patches.get(k).domain();
+            out[4 * k] = d.u0();
+            out[4 * k + 1] = d.u1();
+            out[4 * k + 2] = d.v0();
+            out[4 * k + 3] = d.v1();
+        }
+        return out;
+    }
+
     /** Splits every patch (the trim curves of each distinct trim region are built once). */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
         PatchPieces[] pieces = new PatchPieces[patches.size()];
-        TrimCurves[] trims = new TrimCurves[patches.size()];
-        Map<TrimRegion, TrimCurves> built = new IdentityHashMap<>();
-        for (int k = 0; k < trims.length; k++) {
-            TrimRegion region = patches.get(k).trim();
-            trims[k] = region == null ? null : built.computeIfAbsent(region, TrimCurves::of);
-        }
+        TrimCurves[] trims = TrimCurves.forPatches(patches);
         // Patches split independently; large scenes use the common fork-join pool (build time only)
         IntStream range = IntStream.range(0, pieces.length);
         (pieces.length >= PARALLEL_PATCHES ? range.parallel() : range)

@@ -1,8 +1,12 @@
 package org.beziertracer.geometry;
 
 import java.util.Arrays;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
 
 import org.beziertracer.math.BezierDecomposition;
+import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.TrimCurve;
 import org.beziertracer.model.TrimLoop;
 import org.beziertracer.model.TrimPiece;
@@ -89,6 +93,20 @@ public final class TrimCurves {
             b.addLoop(loop, l++);
         }
         return new TrimCurves(b, hole, region.outer().size());
+    }
+
+    /**
+     * The trim curves of each patch (null for an untrimmed one), built once per distinct trim
+     * region: the pieces of one surface share theirs.
+     */
+    public static TrimCurves[] forPatches(List<BezierPatch> patches) {
+        TrimCurves[] out = new TrimCurves[patches.size()];
+        Map<TrimRegion, TrimCurves> built = new IdentityHashMap<>();
+        for (int k = 0; k < out.length; k++) {
+            TrimRegion region = patches.get(k).trim();
+            out[k] = region == null ? null : built.computeIfAbsent(region, TrimCurves::of);
+        }
+        return out;
     }
 
     /** Number of Bézier segments, closing segments included. */

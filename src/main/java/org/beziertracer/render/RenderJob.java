@@ -18,7 +18,7 @@ import org.beziertracer.model.Sphere;
  * <p>The intersector must have been built with the method and BVH switch the settings ask for
  * (and the tessellation the options ask for);
  * {@link #prepare} does that. An edit of one patch can reuse the old snapshot via
- * {@link SceneIntersector#withPatch} and {@link #withIntersector}.
+ * {@link SceneIntersector#withPatch} in a new job.
  */
 public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options) {
 
@@ -76,11 +76,6 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
 
     public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options); }
 
-    /** Same intersector: only for settings with the same method and BVH switch. */
-    public RenderJob withSettings(RenderSettings s) { return new RenderJob(intersector, camera, s, options); }
-
     /** Same intersector: only for options with the same {@link RenderOptions#tessellate()}. */
     public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o); }
-
-    public RenderJob withIntersector(SceneIntersector si) { return new RenderJob(si, camera, settings, options); }
 }

@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -12,7 +13,6 @@ import org.junit.jupiter.api.Test;
 
 class TessellatorTest {
 
-    private static final double TOL = 1e-12;
     /** Triangles with a smaller area (relative to the squared teapot size) count as degenerate. */
     private static final double DEGENERATE_AREA = 1e-9;
 
@@ -44,10 +44,10 @@ class TessellatorTest {
                     double[] s = TestNets.eval(net, 0, 3, 3, 3, u, v);
                     double len = 0;
                     for (int c = 0; c < 3; c++) {
-                        assertEquals(s[c], mesh.position(vert, c), TOL * 100, where + " position");
+                        assertEquals(s[c], mesh.position(vert, c), ROUNDING * 100, where + " position");
                         len += mesh.normal(vert, c) * mesh.normal(vert, c);
                     }
-                    assertEquals(1, Math.sqrt(len), TOL, where + " normal length");
+                    assertEquals(1, Math.sqrt(len), ROUNDING, where + " normal length");
                 }
             }
         }

@@ -174,7 +174,7 @@ class NurbsIntersectionTest {
                 SceneIntersector a = SceneIntersector.build(new Scene(List.of(poly)), IntersectOptions.defaults().withMethod(method));
                 SceneIntersector b = SceneIntersector.build(new Scene(List.of(rational)),
                         IntersectOptions.defaults().withMethod(method));
-                assertNull(b.table().weights, "all weights 1: the polynomial fast path");
+                assertNull(((PatchLeaves) b.leaves).table.weights, "all weights 1: the polynomial fast path");
                 TraceContext ca = a.newContext(), cb = b.newContext();
                 Hit ha = new Hit(), hb = new Hit();
                 for (int r = 0; r < 100; r++) {
