@@ -36,12 +36,74 @@ final class HodographBounds {
         out[o + 8] = 1e-10 * (la + ra) * (lb + rb);
     }
 
-    /** Writes data for which the single-root test never succeeds (infinite radii): for rational pieces. */
-    static void never(double[] out, int o) {
-        java.util.Arrays.fill(out, o, o + STRIDE, 0);
-        out[o + 6] = Double.POSITIVE_INFINITY;
-        out[o + 7] = Double.POSITIVE_INFINITY;
-        out[o + 8] = Double.POSITIVE_INFINITY;
+    /**
+     * The same data for a rational net: Euclidean points {@code xyz[off..]} and their weights
+     * {@code w[wOff..]}. The first derivative of the rational patch is
+     * {@code S_u = (H_u.xyz − S·H_u.w) / H.w} (quotient rule on the homogeneous patch {@code H});
+     * with {@code c} the centre of the control box, {@code H_u.xyz − S·H_u.w =
+     * n·Σ Δ(w·(P−c))·B − (S−c)·n·Σ Δw·B}, so over the piece {@code S_u/n} lies in the box
+     * {@code [a_lo − h·D, a_hi + h·D] / [w_min, w_max]} (interval arithmetic), {@code a} ranging
+     * over the differences {@code Δ(w·(P−c))}, {@code h} the half extents of the control box,
+     * {@code D} the largest {@code |Δw|} and {@code w} over the weights (the convex-hull
+     * property of {@code H}). The ball around that box is looser than a polynomial piece's, and
+     * tight for flat pieces with even weights.
+     */
+    static void computeRational(double[] xyz, int off, double[] w, int wOff, int n, int m, double[] out, int o) {
+        int points = (n + 1) * (m + 1);
+        double[] lo = new double[3], hi = new double[3];
+        double wMin = Double.POSITIVE_INFINITY, wMax = 0;
+        for (int k = 0; k < points; k++) {
+            for (int c = 0; c < 3; c++) {
+                lo[c] = Math.min(k == 0 ? Double.POSITIVE_INFINITY : lo[c], xyz[off + 3 * k + c]);
+                hi[c] = Math.max(k == 0 ? Double.NEGATIVE_INFINITY : hi[c], xyz[off + 3 * k + c]);
+            }
+            wMin = Math.min(wMin, w[wOff + k]);
+            wMax = Math.max(wMax, w[wOff + k]);
+        }
+        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, n + 1, lo, hi, wMin, wMax, out, o);
+        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, n + 1, lo, hi, wMin, wMax, out, o + 3);
+        double la = Math.sqrt(out[o] * out[o] + out[o + 1] * out[o + 1] + out[o + 2] * out[o + 2]);
+        double lb = Math.sqrt(out[o + 3] * out[o + 3] + out[o + 4] * out[o + 4] + out[o + 5] * out[o + 5]);
+        out[o + 6] = ra;
+        out[o + 7] = rb;
+        out[o + 8] = 1e-10 * (la + ra) * (lb + rb);
+    }
+
+    /**
+     * Centre (to {@code out[o..o+3)}) and radius of a ball holding {@code S_u/n} ({@code step} 1)
+     * or {@code S_v/m} ({@code step} = points per row) over a rational piece; see
+     * {@link #computeRational}.
+     */
+    private static double rationalBall(double[] xyz, int off, double[] w, int wOff, int n, int m, int step, int row,
+                                       double[] lo, double[] hi, double wMin, double wMax, double[] out, int o) {
+        double[] aLo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] aHi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        double dMax = 0;
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0; i <= n; i++) {
+                int p = j * row + i, q = p + step;
+                if ((step == 1 && i == n) || (step != 1 && j == m)) {
+                    continue;
+                }
+                double wp = w[wOff + p], wq = w[wOff + q];
+                dMax = Math.max(dMax, Math.abs(wq - wp));
+                for (int c = 0; c < 3; c++) {
+                    double centre = 0.5 * (lo[c] + hi[c]);
+                    double a = wq * (xyz[off + 3 * q + c] - centre) - wp * (xyz[off + 3 * p + c] - centre);
+                    aLo[c] = Math.min(aLo[c], a);
+                    aHi[c] = Math.max(aHi[c], a);
+                }
+            }
+        }
+        double r2 = 0;
+        for (int c = 0; c < 3; c++) {
+            double h = 0.5 * (hi[c] - lo[c]);
+            double nLo = aLo[c] - h * dMax, nHi = aHi[c] + h * dMax;
+            double sLo = nLo >= 0 ? nLo / wMax : nLo / wMin, sHi = nHi >= 0 ? nHi / wMin : nHi / wMax;
+            out[o + c] = 0.5 * (sLo + sHi);
+            r2 += 0.25 * (sHi - sLo) * (sHi - sLo);
+        }
+        return Math.sqrt(r2);
     }
 
     /**

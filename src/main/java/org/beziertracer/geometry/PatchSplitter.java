@@ -19,7 +19,8 @@ import org.beziertracer.model.PatchDomain;
  * classified against its trim loops ({@link TrimCurves#classify}, on the piece's box in the
  * surface's parameters grown by {@link #TRIM_MARGIN} on each side, so that hits a solver reports
  * slightly outside a leaf are covered): a piece wholly outside is dropped, with all its
- * descendants; a piece wholly inside needs no trim test for its hits. Run at build time only
+ * descendants; a piece wholly inside needs no trim test for its hits; a piece a trim curve crosses
+ * is split on to the depth cap. Run at build time only
  * (allocates a few arrays per patch, none per halving).
  */
 public final class PatchSplitter {
@@ -86,7 +87,7 @@ public final class PatchSplitter {
                 RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
                 xyz = euclid;
             }
-            if (done(xyz, depth)) {
+            if (done(xyz, depth, trimState)) {
                 out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
                 return;
             }
@@ -104,27 +105,23 @@ public final class PatchSplitter {
             }
         }
 
-        /** True when the piece is a leaf: no splitting, the depth cap, or flat (and even weights). */
-        private boolean done(double[] xyz, int depth) {
+        /**
+         * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
+         * trim curve crosses is split on to the depth cap, so that most hits fall in pieces wholly
+         * inside (no trim test) and the pieces that need the test are small.
+         */
+        private boolean done(double[] xyz, int depth, int trimState) {
             if (!options.enabled() || depth >= options.maxDepth()) {
                 return true;
+            }
+            if (trimState == TrimCurves.MIXED) {
+                return false;
             }
             Bounds.ofPoints(xyz, 0, points, box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
             double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
             double tolerance = options.flatnessTolerance();
-            if (NetMeasures.flatness(xyz, 0, n, m) > tolerance * size) {
-                return false;
-            }
-            if (dim == 4) {
-                double wMin = Double.POSITIVE_INFINITY, wMax = 0;
-                for (int k = 0; k < points; k++) {
-                    wMin = Math.min(wMin, weights[k]);
-                    wMax = Math.max(wMax, weights[k]);
-                }
-                return wMax <= (1 + tolerance) * wMin;
-            }
-            return true;
+            return NetMeasures.flatness(xyz, 0, n, m) <= tolerance * size;
         }
 
         /** The piece's class against the trim loops, on its box in surface parameters (grown by the margin). */

@@ -145,9 +145,10 @@ public final class SubPatchTable {
                 Bounds.ofPoints(nets, off, len / 3, box);
                 System.arraycopy(box, 0, bounds, 6 * s, 6);
                 if (p.weights() != null) {
-                    // the derivative bounds of a rational piece are not those of its Euclidean net
-                    HodographBounds.never(uniqueness, HodographBounds.STRIDE * s);
+                    // the derivative bounds of a rational piece come from its homogeneous net
                     System.arraycopy(p.weights(), i * (len / 3), weights, off / 3, len / 3);
+                    HodographBounds.computeRational(nets, off, weights, off / 3, p.degreeU(), p.degreeV(), uniqueness,
+                            HodographBounds.STRIDE * s);
                 } else {
                     HodographBounds.compute(nets, off, p.degreeU(), p.degreeV(), uniqueness,
                             HodographBounds.STRIDE * s, box);

@@ -56,6 +56,8 @@ public final class TrimCurves {
     private final double[] points;
     /** Per segment: uMin, uMax, vMin, vMax of its Euclidean control points. */
     private final double[] boxes;
+    /** Per segment: v of its first and of its last point (Euclidean). */
+    private final double[] endV;
     private final int[] loop;
     private final boolean[] hole;
     private final int outerCount;
@@ -70,9 +72,13 @@ public final class TrimCurves {
         this.hole = hole;
         this.outerCount = outerCount;
         this.boxes = new double[4 * count];
+        this.endV = new double[2 * count];
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (int s = 0; s < count; s++) {
             box(points, offset[s], degree[s], boxes, 4 * s);
+            int first = offset[s], last = first + 3 * degree[s];
+            endV[2 * s] = points[first + 1] / points[first + 2];
+            endV[2 * s + 1] = points[last + 1] / points[last + 2];
             lo = Math.min(lo, Math.min(boxes[4 * s], boxes[4 * s + 2]));
             hi = Math.max(hi, Math.max(boxes[4 * s + 1], boxes[4 * s + 3]));
         }
@@ -124,7 +130,9 @@ public final class TrimCurves {
             if (boxes[b + 2] > v || boxes[b + 3] <= v || boxes[b + 1] <= u) {
                 continue; // wholly above, below or left: no crossing
             }
-            if (crossings(s, u, v, scratch)) {
+            // wholly right: a crossing exactly when the end points lie on different sides
+            boolean crossed = boxes[b] > u ? (endV[2 * s] > v) != (endV[2 * s + 1] > v) : crossings(s, u, v, scratch);
+            if (crossed) {
                 if (odd != null) {
                     odd[loop[s]] ^= true;
                 } else {
