@@ -44,8 +44,10 @@ public final class TrimCurves {
     public static final double TINY = 1e-13;
     /** Most pieces the subdivision stack holds; the depth needed for {@link #TINY} is about 45. */
     static final int STACK = 96;
+    /** Where the box of the piece in hand is kept in the scratch array (after the stack). */
+    private static final int BOX = STACK * DeCasteljau.MAX_ORDER * 3;
     /** Doubles of scratch {@link #contains} and {@link #classify} need. */
-    public static final int SCRATCH_LENGTH = STACK * DeCasteljau.MAX_ORDER * 3;
+    public static final int SCRATCH_LENGTH = BOX + 4;
 
     /** {@link #classify} results. */
     public static final int OUTSIDE = 0, INSIDE = 1, MIXED = 2;
@@ -178,15 +180,8 @@ public final class TrimCurves {
         int top = 1;
         while (top > 0) {
             int e = (top - 1) * stride;
-            double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY;
-            double vMin = Double.POSITIVE_INFINITY, vMax = Double.NEGATIVE_INFINITY;
-            for (int k = 0, p = e; k <= d; k++, p += 3) {
-                double w = arena[p + 2], x = arena[p] / w, y = arena[p + 1] / w;
-                uMin = Math.min(uMin, x);
-                uMax = Math.max(uMax, x);
-                vMin = Math.min(vMin, y);
-                vMax = Math.max(vMax, y);
-            }
+            box(arena, e, d, arena, BOX);
+            double uMin = arena[BOX], uMax = arena[BOX + 1], vMin = arena[BOX + 2], vMax = arena[BOX + 3];
             if (vMin > v || vMax <= v || uMax <= u) {
                 top--;
                 continue;
@@ -225,15 +220,8 @@ public final class TrimCurves {
         int top = 1;
         while (top > 0) {
             int e = (top - 1) * stride;
-            double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY;
-            double vMin = Double.POSITIVE_INFINITY, vMax = Double.NEGATIVE_INFINITY;
-            for (int k = 0, p = e; k <= d; k++, p += 3) {
-                double w = arena[p + 2], x = arena[p] / w, y = arena[p + 1] / w;
-                uMin = Math.min(uMin, x);
-                uMax = Math.max(uMax, x);
-                vMin = Math.min(vMin, y);
-                vMax = Math.max(vMax, y);
-            }
+            box(arena, e, d, arena, BOX);
+            double uMin = arena[BOX], uMax = arena[BOX + 1], vMin = arena[BOX + 2], vMax = arena[BOX + 3];
             if (uMin > u1 || uMax < u0 || vMin > v1 || vMax < v0) {
                 top--;
                 continue;

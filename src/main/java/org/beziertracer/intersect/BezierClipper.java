@@ -198,19 +198,32 @@ final class BezierClipper {
             }
         }
         if (b - a < 1) {
-            DeCasteljau.restrictU(arena, 0, n, m, 3, a, b);
-            if (ctx.leafRational) {
-                RationalNets.restrictU(ctx, 0, n, m, a, b);
-            }
+            restrict(ctx, 0, 0, n, m, true, a, b);
         }
         if (d - c < 1) {
-            DeCasteljau.restrictV(arena, 0, n, m, 3, c, d);
-            if (ctx.leafRational) {
-                RationalNets.restrictV(ctx, 0, n, m, c, d);
-            }
+            restrict(ctx, 0, 0, n, m, false, c, d);
         }
         boxes[0] = a; boxes[1] = b; boxes[2] = c; boxes[3] = d;
         return 1;
+    }
+
+    /**
+     * Restricts the piece in stack slot {@code w} (its net at {@code ctx.arena[base..]}) to
+     * {@code [a,b]} in u ({@code inU}) or v, and its weights with it when the leaf is rational.
+     */
+    private static void restrict(TraceContext ctx, int base, int w, int n, int m, boolean inU, double a, double b) {
+        if (inU) {
+            DeCasteljau.restrictU(ctx.arena, base, n, m, 3, a, b);
+        } else {
+            DeCasteljau.restrictV(ctx.arena, base, n, m, 3, a, b);
+        }
+        if (ctx.leafRational) {
+            if (inU) {
+                RationalNets.restrictU(ctx, w, n, m, a, b);
+            } else {
+                RationalNets.restrictV(ctx, w, n, m, a, b);
+            }
+        }
     }
 
     /**
@@ -231,10 +244,7 @@ final class BezierClipper {
         double a = ctx.clip[0], b = ctx.clip[1];
         double keptU = b - a;
         if (keptU < 1) {
-            DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
-            if (ctx.leafRational) {
-                RationalNets.restrictU(ctx, w, n, m, a, b);
-            }
+            restrict(ctx, base, w, n, m, true, a, b);
             double du = u1 - u0;
             u1 = u0 + du * b;
             u0 = u0 + du * a;
@@ -247,10 +257,7 @@ final class BezierClipper {
         b = ctx.clip[1];
         double keptV = b - a;
         if (keptV < 1) {
-            DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
-            if (ctx.leafRational) {
-                RationalNets.restrictV(ctx, w, n, m, a, b);
-            }
+            restrict(ctx, base, w, n, m, false, a, b);
             double dv = v1 - v0;
             v1 = v0 + dv * b;
             v0 = v0 + dv * a;

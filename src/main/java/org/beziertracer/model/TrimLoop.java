@@ -37,6 +37,38 @@ public record TrimLoop(List<TrimPiece> pieces) {
         }
     }
 
+    /** Control points of the unit circle from (1,0) counter-clockwise: 9 points, 4 quarter arcs. */
+    private static final double[] UNIT_CIRCLE = {1, 0, 1, 1, 0, 1, -1, 1, -1, 0, -1, -1, 0, -1, 1, -1, 1, 0};
+
+    /**
+     * The exact circle of centre {@code (cu, cv)} and radius {@code r}, one rational quadratic
+     * B-spline of 9 points (4 quarter arcs, weights {@code 1, √2/2, 1}; Piegl &amp; Tiller §7.5),
+     * counter-clockwise or clockwise, on {@code [0,4]}.
+     */
+    public static TrimLoop circle(double cu, double cv, double r, boolean ccw) {
+        double[] pts = new double[18], w = new double[9];
+        for (int k = 0; k < 9; k++) {
+            pts[2 * k] = cu + r * UNIT_CIRCLE[2 * k];
+            pts[2 * k + 1] = cv + r * (ccw ? UNIT_CIRCLE[2 * k + 1] : -UNIT_CIRCLE[2 * k + 1]);
+            w[k] = k % 2 == 0 ? 1 : Math.sqrt(0.5);
+        }
+        double[] knots = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+        return new TrimLoop(List.of(new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 2, knots, pts, w), 0, 4)));
+    }
+
+    /** The closed polygon through the corners {@code u0 v0 u1 v1 …}, one degree-1 B-spline. */
+    public static TrimLoop polygon(double... uv) {
+        int count = uv.length / 2 + 1;
+        double[] pts = java.util.Arrays.copyOf(uv, 2 * count);
+        pts[2 * count - 2] = uv[0];
+        pts[2 * count - 1] = uv[1];
+        double[] knots = new double[count + 2];
+        for (int k = 0; k < knots.length; k++) {
+            knots[k] = Math.max(0, Math.min(count - 1, k - 1));
+        }
+        return new TrimLoop(List.of(new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 1, knots, pts, null), 0, count - 1)));
+    }
+
     /** {@code (u, v)} of the piece's start, then of its end. */
     public static double[] ends(TrimPiece piece) {
         TrimCurve c = piece.curve();

@@ -75,7 +75,7 @@ class TrimCurvesTest {
         // the circle as two half arcs, both run from their end to their start (clockwise)
         TrimLoop whole = TrimShapes.circle(0.5, 0.5, 0.3, true);
         TrimCurve c = whole.pieces().get(0).curve();
-        TrimLoop halves = new TrimLoop(List.of(new TrimPiece(c, 0.5, 0), new TrimPiece(c, 1, 0.5)));
+        TrimLoop halves = new TrimLoop(List.of(new TrimPiece(c, 2, 0), new TrimPiece(c, 4, 2)));
         TrimCurves a = TrimCurves.of(new TrimRegion(List.of(whole), List.of()));
         TrimCurves b = TrimCurves.of(new TrimRegion(List.of(halves), List.of()));
         Random rnd = new Random(43);

@@ -39,83 +39,84 @@ class NurbsIntersectionTest {
         return new double[] {o[0], o[1], o[2], target[0] - o[0], target[1] - o[1], target[2] - o[2]};
     }
 
-    @ParameterizedTest
-    @EnumSource(Method.class)
-    void raysAtTheNurbsSphereMeetTheUnitSphere(Method method) {
-        SceneIntersector si = SceneIntersector.build(Models.builtIn("sphere"), IntersectOptions.defaults().withMethod(method));
+    /** The exact answer for a ray: {t} of the nearest hit, {NaN} for a miss, null near the silhouette. */
+    @FunctionalInterface
+    private interface ClosedForm {
+        double[] nearest(double[] ray);
+    }
+
+    /** Signed distance of a point from the exact surface. */
+    @FunctionalInterface
+    private interface Distance {
+        double of(double x, double y, double z);
+    }
+
+    /**
+     * Shoots {@link #RAYS} seeded rays at the model: hit/miss as the closed form says; every hit's
+     * surface point on the exact surface, and for the exact methods its ray point and t too.
+     */
+    private static void matchesClosedForm(String model, Method method, long seed, double spread, ClosedForm exact,
+                                          Distance surface) {
+        SceneIntersector si = SceneIntersector.build(Models.builtIn(model), IntersectOptions.defaults().withMethod(method));
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
-        Random rnd = new Random(71);
+        Random rnd = new Random(seed);
         int hits = 0, misses = 0;
         for (int r = 0; r < RAYS; r++) {
-            double[] q = ray(rnd, 1.4);
-            double dd = q[3] * q[3] + q[4] * q[4] + q[5] * q[5], od = q[0] * q[3] + q[1] * q[4] + q[2] * q[5];
-            double oo = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-            double distance = Math.sqrt(Math.max(0, oo - od * od / dd)); // of the centre from the ray's line
-            if (Math.abs(distance - 1) < SILHOUETTE) {
+            double[] q = ray(rnd, spread);
+            double[] want = exact.nearest(q);
+            if (want == null) {
                 continue;
             }
             boolean found = si.closestHit(ctx, q[0], q[1], q[2], q[3], q[4], q[5], 0, Double.POSITIVE_INFINITY, hit);
-            String where = method + " ray " + r + " " + Arrays.toString(q);
-            if (distance > 1) {
+            String where = model + " " + method + " ray " + r + " " + Arrays.toString(q);
+            if (Double.isNaN(want[0])) {
                 assertFalse(found, "closed form misses: " + where);
                 misses++;
                 continue;
             }
             assertTrue(found, "closed form hits: " + where);
             hits++;
-            double tExact = (-od - Math.sqrt(od * od - dd * (oo - 1))) / dd;
             si.surfacePoint(ctx, hit, sp);
-            assertEquals(1, Math.sqrt(sp.px * sp.px + sp.py * sp.py + sp.pz * sp.pz), ON_SURFACE, "surface point " + where);
-            double x = q[0] + hit.t * q[3], y = q[1] + hit.t * q[4], z = q[2] + hit.t * q[5];
+            assertEquals(0, surface.of(sp.px, sp.py, sp.pz), ON_SURFACE, "surface point " + where);
             if (method == Method.SUBDIVISION) {
-                assertEquals(tExact, hit.t, SUBDIVISION_T, where);
+                assertEquals(want[0], hit.t, SUBDIVISION_T, where);
             } else {
-                assertEquals(1, Math.sqrt(x * x + y * y + z * z), ON_SURFACE, "ray point " + where);
-                assertEquals(tExact, hit.t, ON_SURFACE, where);
+                assertEquals(0, surface.of(q[0] + hit.t * q[3], q[1] + hit.t * q[4], q[2] + hit.t * q[5]), ON_SURFACE,
+                        "ray point " + where);
+                assertEquals(want[0], hit.t, ON_SURFACE, where);
             }
-            // the outward normal of the sphere, also at the poles
-            assertEquals(1, Math.abs(sp.nx * sp.px + sp.ny * sp.py + sp.nz * sp.pz), 1e-6, "normal " + where);
+            if (model.equals("sphere")) {
+                // the outward normal of the sphere, also at the poles
+                assertEquals(1, Math.abs(sp.nx * sp.px + sp.ny * sp.py + sp.nz * sp.pz), 1e-6, "normal " + where);
+            }
         }
-        assertTrue(hits > RAYS / 4 && misses > RAYS / 10, method + ": " + hits + " hits, " + misses + " misses");
+        assertTrue(hits > RAYS / 5 && misses > RAYS / 10, method + ": " + hits + " hits, " + misses + " misses");
+    }
+
+    @ParameterizedTest
+    @EnumSource(Method.class)
+    void raysAtTheNurbsSphereMeetTheUnitSphere(Method method) {
+        matchesClosedForm("sphere", method, 71, 1.4, NurbsIntersectionTest::sphereRoot,
+                (x, y, z) -> Math.sqrt(x * x + y * y + z * z) - 1);
     }
 
     @ParameterizedTest
     @EnumSource(Method.class)
     void raysAtTheNurbsTorusMeetTheExactTorus(Method method) {
-        SceneIntersector si = SceneIntersector.build(Models.builtIn("torus"), IntersectOptions.defaults().withMethod(method));
-        TraceContext ctx = si.newContext();
-        Hit hit = new Hit();
-        SurfacePoint sp = new SurfacePoint();
-        Random rnd = new Random(72);
-        int hits = 0, misses = 0;
-        for (int r = 0; r < RAYS; r++) {
-            double[] q = ray(rnd, 1.3);
-            double[] exact = torusRoot(q);
-            if (exact == null) {
-                continue; // too close to the silhouette to judge
-            }
-            boolean found = si.closestHit(ctx, q[0], q[1], q[2], q[3], q[4], q[5], 0, Double.POSITIVE_INFINITY, hit);
-            String where = method + " ray " + r + " " + Arrays.toString(q);
-            if (Double.isNaN(exact[0])) {
-                assertFalse(found, "closed form misses: " + where);
-                misses++;
-                continue;
-            }
-            assertTrue(found, "closed form hits: " + where);
-            hits++;
-            si.surfacePoint(ctx, hit, sp);
-            assertEquals(0, tube(sp.px, sp.py, sp.pz), ON_SURFACE, "surface point " + where);
-            if (method == Method.SUBDIVISION) {
-                assertEquals(exact[0], hit.t, SUBDIVISION_T, where);
-            } else {
-                assertEquals(0, tube(q[0] + hit.t * q[3], q[1] + hit.t * q[4], q[2] + hit.t * q[5]), ON_SURFACE,
-                        "ray point " + where);
-                assertEquals(exact[0], hit.t, ON_SURFACE, where);
-            }
+        matchesClosedForm("torus", method, 72, 1.3, NurbsIntersectionTest::torusRoot, NurbsIntersectionTest::tube);
+    }
+
+    /** The unit sphere's nearest root {t}, {NaN} for a miss, null within the silhouette margin. */
+    private static double[] sphereRoot(double[] q) {
+        double dd = q[3] * q[3] + q[4] * q[4] + q[5] * q[5], od = q[0] * q[3] + q[1] * q[4] + q[2] * q[5];
+        double oo = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+        double distance = Math.sqrt(Math.max(0, oo - od * od / dd)); // of the centre from the ray's line
+        if (Math.abs(distance - 1) < SILHOUETTE) {
+            return null;
         }
-        assertTrue(hits > RAYS / 5 && misses > RAYS / 10, method + ": " + hits + " hits, " + misses + " misses");
+        return new double[] {distance > 1 ? Double.NaN : (-od - Math.sqrt(od * od - dd * (oo - 1))) / dd};
     }
 
     /** Signed distance from the torus surface (major radius 1, minor {@link #TORUS_MINOR}). */

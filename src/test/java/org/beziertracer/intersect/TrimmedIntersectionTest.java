@@ -29,17 +29,8 @@ class TrimmedIntersectionTest {
 
     private static final double H = Math.sqrt(0.5);
 
-    /** The exact circle, a rational quadratic B-spline, counter-clockwise or clockwise. */
     static TrimLoop circle(double cx, double cy, double r, boolean ccw) {
-        double[] unit = {1, 0, 1, 1, 0, 1, -1, 1, -1, 0, -1, -1, 0, -1, 1, -1, 1, 0};
-        double[] pts = new double[18], w = new double[9];
-        for (int k = 0; k < 9; k++) {
-            pts[2 * k] = cx + r * unit[2 * k];
-            pts[2 * k + 1] = cy + r * (ccw ? unit[2 * k + 1] : -unit[2 * k + 1]);
-            w[k] = k % 2 == 0 ? 1 : H;
-        }
-        return new TrimLoop(List.of(new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 2,
-                new double[] {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4}, pts, w), 0, 4)));
+        return TrimLoop.circle(cx, cy, r, ccw);
     }
 
     /** A polygon, one straight Bézier curve per edge. */

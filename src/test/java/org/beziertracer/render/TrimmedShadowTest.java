@@ -14,10 +14,7 @@ import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.SplineBasis;
-import org.beziertracer.model.TrimCurve;
 import org.beziertracer.model.TrimLoop;
-import org.beziertracer.model.TrimPiece;
 import org.beziertracer.model.TrimRegion;
 import org.junit.jupiter.api.Test;
 
@@ -26,16 +23,7 @@ class TrimmedShadowTest {
 
     /** A flat plate over [-1,1]² at height 2 with a round hole of radius 0.4 at its centre. */
     private static BezierPatch plateWithHole() {
-        double h = Math.sqrt(0.5);
-        double[] unit = {1, 0, 1, 1, 0, 1, -1, 1, -1, 0, -1, -1, 0, -1, 1, -1, 1, 0};
-        double[] pts = new double[18], w = new double[9];
-        for (int k = 0; k < 9; k++) {
-            pts[2 * k] = 0.5 + 0.2 * unit[2 * k];
-            pts[2 * k + 1] = 0.5 + 0.2 * unit[2 * k + 1];
-            w[k] = k % 2 == 0 ? 1 : h;
-        }
-        TrimCurve circle = new TrimCurve(SplineBasis.BSPLINE, 2, new double[] {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4}, pts, w);
-        TrimRegion hole = new TrimRegion(List.of(), List.of(new TrimLoop(List.of(new TrimPiece(circle, 0, 4)))));
+        TrimRegion hole = new TrimRegion(List.of(), List.of(TrimLoop.circle(0.5, 0.5, 0.2, true)));
         return new BezierPatch(1, 1, new double[] {-1, -1, 2, 1, -1, 2, -1, 1, 2, 1, 1, 2}, null,
                 new PatchDomain(0, 1, 0, 1, hole), null);
     }

@@ -94,7 +94,8 @@ final class BuiltInSurfaces {
             }
         }
         TrimRegion trim = new TrimRegion(List.of(roundedRectangle(0.04, 0.96, 0.12)),
-                List.of(circle(0.3, 0.68, 0.16, false), polygon(0.62, 0.55, 0.86, 0.6, 0.7, 0.86), blob()));
+                List.of(TrimLoop.circle(0.3, 0.68, 0.16, false), TrimLoop.polygon(0.62, 0.55, 0.86, 0.6, 0.7, 0.86),
+                        blob()));
         double[] parm = {0, 1};
         return new FreeFormSurface(SplineBasis.BEZIER, 3, 3, parm, parm, 4, 4, pts, null,
                 new double[] {0, 1, 0, 1}, trim).toPatches();
@@ -124,31 +125,6 @@ final class BuiltInSurfaces {
     private static TrimPiece arc(double u0, double v0, double cu, double cv, double u1, double v1) {
         return new TrimPiece(new TrimCurve(SplineBasis.BEZIER, 2, new double[] {0, 1},
                 new double[] {u0, v0, cu, cv, u1, v1}, new double[] {1, H, 1}), 0, 1);
-    }
-
-    /** The exact circle, one rational quadratic B-spline; clockwise unless {@code ccw}. */
-    private static TrimLoop circle(double cu, double cv, double r, boolean ccw) {
-        double[] pts = new double[18];
-        double[] w = new double[9];
-        for (int k = 0; k < 9; k++) {
-            pts[2 * k] = cu + r * CIRCLE[2 * k];
-            pts[2 * k + 1] = cv + r * (ccw ? CIRCLE[2 * k + 1] : -CIRCLE[2 * k + 1]);
-            w[k] = circleWeight(k);
-        }
-        return new TrimLoop(List.of(new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 2, CIRCLE_KNOTS, pts, w), 0, 4)));
-    }
-
-    /** A closed polyline through the corners, as one degree-1 B-spline. */
-    private static TrimLoop polygon(double... uv) {
-        int count = uv.length / 2 + 1;
-        double[] pts = java.util.Arrays.copyOf(uv, 2 * count);
-        pts[2 * count - 2] = uv[0];
-        pts[2 * count - 1] = uv[1];
-        double[] knots = new double[count + 2];
-        for (int k = 0; k < knots.length; k++) {
-            knots[k] = Math.max(0, Math.min(count - 1, k - 1));
-        }
-        return new TrimLoop(List.of(new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 1, knots, pts, null), 0, count - 1)));
     }
 
     /** A closed uniform (unclamped) cubic B-spline: 6 points, the first 3 repeated at the end. */
