@@ -39,29 +39,28 @@ final class HodographBounds {
     /**
      * The same data for a rational net: Euclidean points {@code xyz[off..]} and their weights
      * {@code w[wOff..]}. The first derivative of the rational patch is
-     * {@code S_u = (H_u.xyz − S·H_u.w) / H.w} (quotient rule on the homogeneous patch {@code H});
-     * with {@code c} the centre of the control box, {@code H_u.xyz − S·H_u.w =
-     * n·Σ Δ(w·(P−c))·B − (S−c)·n·Σ Δw·B}, so over the piece {@code S_u/n} lies in the box
-     * {@code [a_lo − h·D, a_hi + h·D] / [w_min, w_max]} (interval arithmetic), {@code a} ranging
-     * over the differences {@code Δ(w·(P−c))}, {@code h} the half extents of the control box,
-     * {@code D} the largest {@code |Δw|} and {@code w} over the weights (the convex-hull
-     * property of {@code H}). The ball around that box is looser than a polynomial piece's, and
-     * tight for flat pieces with even weights.
+     * {@code S_u = N_u / H.w} with {@code N_u = H_u.xyz − S·H_u.w} (quotient rule on the
+     * homogeneous patch {@code H}). The single-root test only asks whether
+     * {@code F1u(ξ1)·F2v(ξ2) − F1v(ξ1)·F2u(ξ2)} can vanish, and dividing the derivatives at
+     * {@code ξ1} and at {@code ξ2} by the positive {@code H.w} there does not change its sign; so
+     * the balls here bound {@code N_u/n} and {@code N_v/m} instead. With {@code c} the centre of the
+     * control box, {@code N_u = n·Σ Δ(w·(P−c))·B − (S−c)·n·Σ Δw·B}, which over the piece lies in the
+     * box {@code [a_lo − h·D, a_hi + h·D]}: {@code a} ranging over the differences
+     * {@code Δ(w·(P−c))}, {@code h} the half extents of the control box (which holds {@code S})
+     * and {@code D} the largest {@code |Δw|} (the convex-hull property of {@code H}). Tight for
+     * flat pieces with even weights; for equal weights it is the polynomial bound scaled.
      */
     static void computeRational(double[] xyz, int off, double[] w, int wOff, int n, int m, double[] out, int o) {
         int points = (n + 1) * (m + 1);
         double[] lo = new double[3], hi = new double[3];
-        double wMin = Double.POSITIVE_INFINITY, wMax = 0;
         for (int k = 0; k < points; k++) {
             for (int c = 0; c < 3; c++) {
                 lo[c] = Math.min(k == 0 ? Double.POSITIVE_INFINITY : lo[c], xyz[off + 3 * k + c]);
                 hi[c] = Math.max(k == 0 ? Double.NEGATIVE_INFINITY : hi[c], xyz[off + 3 * k + c]);
             }
-            wMin = Math.min(wMin, w[wOff + k]);
-            wMax = Math.max(wMax, w[wOff + k]);
         }
-        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, n + 1, lo, hi, wMin, wMax, out, o);
-        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, n + 1, lo, hi, wMin, wMax, out, o + 3);
+        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, n + 1, lo, hi, out, o);
+        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, n + 1, lo, hi, out, o + 3);
         double la = Math.sqrt(out[o] * out[o] + out[o + 1] * out[o + 1] + out[o + 2] * out[o + 2]);
         double lb = Math.sqrt(out[o + 3] * out[o + 3] + out[o + 4] * out[o + 4] + out[o + 5] * out[o + 5]);
         out[o + 6] = ra;
@@ -70,12 +69,12 @@ final class HodographBounds {
     }
 
     /**
-     * Centre (to {@code out[o..o+3)}) and radius of a ball holding {@code S_u/n} ({@code step} 1)
-     * or {@code S_v/m} ({@code step} = points per row) over a rational piece; see
+     * Centre (to {@code out[o..o+3)}) and radius of a ball holding {@code N_u/n} ({@code step} 1)
+     * or {@code N_v/m} ({@code step} = points per row) over a rational piece; see
      * {@link #computeRational}.
      */
     private static double rationalBall(double[] xyz, int off, double[] w, int wOff, int n, int m, int step, int row,
-                                       double[] lo, double[] hi, double wMin, double wMax, double[] out, int o) {
+                                       double[] lo, double[] hi, double[] out, int o) {
         double[] aLo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] aHi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         double dMax = 0;
@@ -99,9 +98,8 @@ final class HodographBounds {
         for (int c = 0; c < 3; c++) {
             double h = 0.5 * (hi[c] - lo[c]);
             double nLo = aLo[c] - h * dMax, nHi = aHi[c] + h * dMax;
-            double sLo = nLo >= 0 ? nLo / wMax : nLo / wMin, sHi = nHi >= 0 ? nHi / wMin : nHi / wMax;
-            out[o + c] = 0.5 * (sLo + sHi);
-            r2 += 0.25 * (sHi - sLo) * (sHi - sLo);
+            out[o + c] = 0.5 * (nLo + nHi);
+            r2 += 0.25 * (nHi - nLo) * (nHi - nLo);
         }
         return Math.sqrt(r2);
     }

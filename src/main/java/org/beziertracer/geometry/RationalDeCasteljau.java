@@ -86,7 +86,11 @@ public final class RationalDeCasteljau {
     public static void evaluateWithDerivatives(double[] hnet, int off, int n, int m, double u, double v,
                                                double[] out, int outOff, double[] scratch, int scratchOff) {
         int h = scratchOff + HOMOGENEOUS;
-        DeCasteljau.evaluateWithDerivatives(hnet, off, n, m, 4, u, v, scratch, h, scratch, scratchOff);
+        if (n == 3 && m == 3) {
+            DeCasteljau3.bicubic4WithDerivatives(hnet, off, u, v, scratch, h); // the hot case, on locals
+        } else {
+            DeCasteljau.evaluateWithDerivatives(hnet, off, n, m, 4, u, v, scratch, h, scratch, scratchOff);
+        }
         double w = scratch[h + 3], wu = scratch[h + 7], wv = scratch[h + 11];
         for (int c = 0; c < 3; c++) {
             double s = scratch[h + c] / w;

@@ -136,9 +136,10 @@ final class BezierClipper {
      */
     private static boolean missesRay(TraceContext ctx, int base, int points, double slack, double tMin) {
         double[] rb = ctx.rayBounds;
-        Bounds.ofPoints(ctx.arena, base, points, rb);
         if (ctx.leafRational) {
-            RationalNets.depthBounds(ctx, base / (3 * points), points, rb);
+            RationalNets.rayBounds(ctx, base / (3 * points), points, rb);
+        } else {
+            Bounds.ofPoints(ctx.arena, base, points, rb);
         }
         double invLength = ctx.invLength;
         return rb[0] > slack || rb[3] < -slack || rb[1] > slack || rb[4] < -slack

@@ -45,21 +45,27 @@ final class RationalNets {
     }
 
     /**
-     * Overwrites {@code rb[2]} and {@code rb[5]} (as written by {@code Bounds.ofPoints} on the
-     * weighted coordinates) with the range of the Euclidean {@code d3} of the piece in slot
-     * {@code slot}.
+     * The ray-space bounds of the piece in slot {@code slot} into {@code rb} (the layout of
+     * {@code Bounds.ofPoints}: minima, then maxima): the first two coordinates over the weighted
+     * distances (their signs are those of the distances), the third over the Euclidean
+     * {@code d3 = (w·d3)/w}, which bounds the ray parameter. One pass.
      */
-    static void depthBounds(TraceContext ctx, int slot, int points, double[] rb) {
+    static void rayBounds(TraceContext ctx, int slot, int points, double[] rb) {
         double[] a = ctx.arena, w = ctx.weightArena;
-        int p = slot * 3 * points + 2, q = slot * points;
-        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        int p = slot * 3 * points, q = slot * points;
+        double lo1 = Double.POSITIVE_INFINITY, lo2 = lo1, lo3 = lo1;
+        double hi1 = Double.NEGATIVE_INFINITY, hi2 = hi1, hi3 = hi1;
         for (int k = 0; k < points; k++, p += 3) {
-            double d = a[p] / w[q + k];
-            if (d < lo) lo = d;
-            if (d > hi) hi = d;
+            double d1 = a[p], d2 = a[p + 1], d3 = a[p + 2] / w[q + k];
+            if (d1 < lo1) lo1 = d1;
+            if (d1 > hi1) hi1 = d1;
+            if (d2 < lo2) lo2 = d2;
+            if (d2 > hi2) hi2 = d2;
+            if (d3 < lo3) lo3 = d3;
+            if (d3 > hi3) hi3 = d3;
         }
-        rb[2] = lo;
-        rb[5] = hi;
+        rb[0] = lo1; rb[1] = lo2; rb[2] = lo3;
+        rb[3] = hi1; rb[4] = hi2; rb[5] = hi3;
     }
 
     /** Restricts the weights of slot {@code slot} in u to {@code [a,b]}, as the arena was. */

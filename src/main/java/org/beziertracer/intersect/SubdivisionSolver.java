@@ -47,9 +47,10 @@ final class SubdivisionSolver {
             int w = sp - 1, base = w * len, b4 = 4 * w;
             // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
             double[] rb = ctx.rayBounds;
-            Bounds.ofPoints(arena, base, points, rb);
             if (rational) {
-                RationalNets.depthBounds(ctx, w, points, rb);
+                RationalNets.rayBounds(ctx, w, points, rb);
+            } else {
+                Bounds.ofPoints(arena, base, points, rb);
             }
             double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > tolerance || max1 < -tolerance || min2 > tolerance || max2 < -tolerance

@@ -91,6 +91,31 @@ class RationalDeCasteljauTest {
     }
 
     @Test
+    void theBicubicHomogeneousPathIsBitIdenticalToTheGenericOne() {
+        Random rnd = new Random(25);
+        double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+        for (int trial = 0; trial < TRIALS; trial++) {
+            double[] h = randomNet(rnd, 3, 3, 4, 10);
+            double u = rnd.nextDouble(), v = rnd.nextDouble();
+            double[] fast = new double[12], generic = new double[12];
+            DeCasteljau3.bicubic4WithDerivatives(h, 0, u, v, fast, 0);
+            DeCasteljau.evaluateWithDerivatives(h, 0, 3, 3, 4, u, v, generic, 0, scratch, 0);
+            assertArrayEquals(generic, fast, "trial " + trial);
+        }
+        // and the bicubic rational patch with unit weights is the polynomial one bit for bit
+        for (int trial = 0; trial < TRIALS; trial++) {
+            double[] xyz = randomNet(rnd, 3, 3, 3, 10), ones = new double[16], h = new double[64];
+            Arrays.fill(ones, 1);
+            RationalDeCasteljau.toHomogeneous(xyz, 0, ones, 0, 16, h, 0);
+            double u = rnd.nextDouble(), v = rnd.nextDouble();
+            double[] poly = new double[9], rat = new double[9];
+            DeCasteljau.evaluateWithDerivatives(xyz, 0, 3, 3, u, v, poly, scratch);
+            RationalDeCasteljau.evaluateWithDerivatives(h, 0, 3, 3, u, v, rat, 0, scratch, 0);
+            assertArrayEquals(poly, rat, "trial " + trial);
+        }
+    }
+
+    @Test
     void aSplitRationalNetReproducesTheSurface() {
         Random rnd = new Random(23);
         double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
