@@ -29,7 +29,12 @@ import org.openjdk.jmh.infra.Blackhole;
  * rays through the model's box):
  * <ul>
  *   <li>{@code polynomial} / {@code rational}: a 4×4 tiling of wavy bicubic patches, the second
- *       with the same control points and weights drawn log-uniformly from [0.7, 1.4] (issue 11: at most 1.3×);</li>
+ *       with the same control points and weights drawn log-uniformly from [0.7, 1.4] — another,
+ *       wavier surface (issue 11: at most 1.3×);</li>
+ *   <li>{@code reparametrized}: the polynomial tiles as rational patches with weights
+ *       {@code α^i·β^j} ({@code α, β} per patch in [0.8, 1.25]): the very same surfaces in a rational
+ *       parametrization (a Möbius reparametrization), so it measures what the rational machinery
+ *       itself costs;</li>
  *   <li>{@code untrimmed} / {@code trimmed}: the built-in {@code trimmed-plate} without and with
  *       its trim loops (an outer loop of 8 curves and 3 holes; issue 11: at most 1.2×).</li>
  * </ul>
@@ -40,7 +45,7 @@ import org.openjdk.jmh.infra.Blackhole;
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
 public class FreeFormBench {
 
-    @Param({"polynomial", "rational", "untrimmed", "trimmed"})
+    @Param({"polynomial", "rational", "reparametrized", "untrimmed", "trimmed"})
     public String surface;
 
     SceneIntersector si;
@@ -53,6 +58,7 @@ public class FreeFormBench {
         Scene scene = switch (surface) {
             case "polynomial" -> tiles(false);
             case "rational" -> tiles(true);
+            case "reparametrized" -> reparametrized(tiles(false));
             case "untrimmed" -> untrimmedPlate();
             case "trimmed" -> Models.builtIn("trimmed-plate");
             default -> throw new IllegalArgumentException(surface);
@@ -80,6 +86,26 @@ public class FreeFormBench {
                 }
                 patches.add(new BezierPatch(3, 3, net, rational ? w : null, null, null));
             }
+        }
+        return new Scene(patches);
+    }
+
+    /**
+     * Each patch with weights {@code α^i·β^j}: the same surface, rationally reparametrized
+     * (Farin, <i>Curves and Surfaces for CAGD</i>, rational Bézier curves: standard form).
+     */
+    static Scene reparametrized(Scene polynomial) {
+        Random rnd = new Random(12);
+        List<BezierPatch> patches = new ArrayList<>();
+        for (BezierPatch p : polynomial.patches()) {
+            double alpha = 0.8 * Math.pow(1.5625, rnd.nextDouble()), beta = 0.8 * Math.pow(1.5625, rnd.nextDouble());
+            double[] w = new double[p.pointCount()];
+            for (int j = 0; j <= p.degreeV(); j++) {
+                for (int i = 0; i <= p.degreeU(); i++) {
+                    w[j * (p.degreeU() + 1) + i] = Math.pow(alpha, i) * Math.pow(beta, j);
+                }
+            }
+            patches.add(new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet(), w, null, null));
         }
         return new Scene(patches);
     }
