@@ -53,6 +53,19 @@ public final class Bvh implements Accelerator {
     }
 
     /**
+     * About the most heap {@link #build} holds at once for {@code primCount} primitives, in bytes:
+     * the builder's arrays (centroids, primitive order, room for {@code 2n-1} nodes, work stack)
+     * while the final node arrays are copied out of them. Keep this in step with
+     * {@link BinnedSahBuilder} and the fields above when the layout changes.
+     */
+    public static long estimateBytes(long primCount) {
+        long nodes = Math.max(1, 2 * primCount - 1);
+        long nodeBytes = 6 * 8 + 4 + 4;                       // nodeBounds, leftFirst, count
+        long builder = primCount * (3 * 8 + 4 + 2 * 4) + nodes * nodeBytes;
+        return builder + nodes * nodeBytes;                   // + the final copy of the node arrays
+    }
+
+    /**
      * Builds a hierarchy over {@code primCount} boxes.
      *
      * @param primBounds six doubles per primitive ({@code minX, minY, minZ, maxX, maxY, maxZ}),

@@ -1,6 +1,5 @@
 package org.beziertracer.cli;
 
-import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 
 import picocli.CommandLine;
@@ -36,7 +35,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp(desktopApp);
         }
-        return commandLine().execute(args);
+        CommandLine cl = commandLine();
+        return execute(cl, args);
     }
 
     /**
@@ -47,23 +47,36 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         CommandLine cl = commandLine();
         cl.setOut(out);
         cl.setErr(err);
-        int code = cl.execute(args);
+        int code = execute(cl, args);
         out.flush();
         err.flush();
         return code;
     }
 
+    /**
+     * Runs the command; an {@link Error} (out of memory, stack overflow), which picocli lets
+     * through, becomes one line too ({@link CliErrors}).
+     */
+    private static int execute(CommandLine cl, String[] args) {
+        try {
+            return cl.execute(args);
+        } catch (Error e) {
+            boolean sub = args.length > 0 && cl.getSubcommands().containsKey(args[0]);
+            return CliErrors.report(e, sub ? args[0] : cl.getCommandName(), cl.getErr());
+        }
+    }
+
     /** The configured command tree: sub-commands plus the one-line error handler. */
     static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
+        cl.setResourceBundle(new CliText());
         cl.setExecutionExceptionHandler(CliErrors::handle);
         return cl;
     }
 
     static int launchApp(Runnable desktopApp) {
-        if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("beziertracer: no display available, so the desktop app cannot open; "
-                    + "use the command line instead: java -jar target/beziertracer.jar --help");
+        if (!DisplayCheck.displayReachable()) {
+            System.err.println(DisplayCheck.NO_DISPLAY);
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {

@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.IdentityHashMap;
 import java.util.List;
@@ -113,6 +114,25 @@ public final class TrimCurves {
         for (int k = 0; k < out.length; k++) {
             TrimRegion region = patches.get(k).trim();
             out[k] = region == null ? null : built.computeIfAbsent(region, TrimCurves::of);
+        }
+        return out;
+    }
+
+    /**
+     * Every segment as a polyline of {@code samples + 1} points {@code u0, v0, u1, v1, …} at equal
+     * parameter steps (for drawing; allocates).
+     */
+    public List<double[]> polylines(int samples) {
+        List<double[]> out = new ArrayList<>(count);
+        double[] p = new double[3], scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+        for (int s = 0; s < count; s++) {
+            double[] line = new double[2 * (samples + 1)];
+            for (int k = 0; k <= samples; k++) {
+                DeCasteljau.evaluateCurve(points, offset[s], 3, degree[s], 3, (double) k / samples, p, 0, scratch);
+                line[2 * k] = p[0] / p[2];
+                line[2 * k + 1] = p[1] / p[2];
+            }
+            out.add(line);
         }
         return out;
     }

@@ -42,8 +42,13 @@ public final class SceneIntersector {
         this.buildMillis = buildMillis;
     }
 
-    /** Makes the leaves (splitting the patches, or tessellating them) and builds the acceleration structure. */
+    /**
+     * Makes the leaves (splitting the patches, or tessellating them) and builds the acceleration structure.
+     *
+     * @throws IllegalArgumentException (one line, {@link HeapBudget}) when it would not fit in the heap
+     */
     public static SceneIntersector build(Scene scene, IntersectOptions options) {
+        HeapBudget.require(null, scene, options);
         long t0 = System.nanoTime();
         double size = sizeOf(scene);
         Leaves leaves = Leaves.of(scene, options, size);

@@ -111,6 +111,24 @@ public final class FreeFormSurface {
     /** The trim loops, or null. */
     public TrimRegion trim() { return trim; }
 
+    /** How many Bézier pieces {@link #toPatches()} makes (the knot spans in the range), without making them. */
+    public long pieceCount() {
+        return (long) spans(basis.knotVector(degreeU, parmU), range[0], range[1])
+                * spans(basis.knotVector(degreeV, parmV), range[2], range[3]);
+    }
+
+    private static int spans(double[] knots, double from, double to) {
+        int count = 1;
+        double last = from;
+        for (double k : knots) {
+            if (k > last && k < to) {
+                count++;
+                last = k;
+            }
+        }
+        return count;
+    }
+
     /**
      * The Bézier pieces, v piece major and u piece fastest, each with its {@link PatchDomain} (its
      * box in this surface's parameters and the trim region) and its {@link PatchOrigin}. A piece

@@ -34,12 +34,16 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
      * own, else {@link #defaultCamera}.
      */
     public static RenderJob prepare(Scene scene, RenderSettings settings, RenderOptions options) {
-        IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(settings.method()))
-                .withBvh(settings.bvh()).withTessellate(options.tessellate());
-        SceneIntersector si = SceneIntersector.build(scene, io);
+        SceneIntersector si = SceneIntersector.build(scene, intersectOptions(settings, options));
         Camera camera = scene.camera().map(Camera::new)
                 .orElseGet(() -> defaultCamera(scene, (double) settings.width() / settings.height()));
         return new RenderJob(si, camera, settings, options);
+    }
+
+    /** The intersection options {@link #prepare} builds with: method and BVH from the settings, K from the options. */
+    public static IntersectOptions intersectOptions(RenderSettings settings, RenderOptions options) {
+        return IntersectOptions.defaults().withMethod(Method.parse(settings.method())).withBvh(settings.bvh())
+                .withTessellate(options.tessellate());
     }
 
     /** {@link Camera#fit} of {@link #bounds(Scene)} with the default 40° field of view. */

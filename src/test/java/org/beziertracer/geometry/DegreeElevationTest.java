@@ -2,11 +2,11 @@ package org.beziertracer.geometry;
 
 import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 
@@ -57,7 +57,7 @@ class DegreeElevationTest {
     void elevatingBeyondTheMaximumDegreeIsRejected() {
         int max = BezierPatch.MAX_DEGREE;
         BezierPatch p = new BezierPatch(max, 1, new double[(max + 1) * 2 * 3]);
-        var e = assertThrows(IllegalArgumentException.class, () -> DegreeElevation.elevateU(p));
-        assertTrue(e.getMessage().contains("degree in u"), e.getMessage());
+        String e = UserMessages.of(IllegalArgumentException.class, () -> DegreeElevation.elevateU(p));
+        assertTrue(e.contains("degree in u"), e);
     }
 }

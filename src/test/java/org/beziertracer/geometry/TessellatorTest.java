@@ -2,11 +2,11 @@ package org.beziertracer.geometry;
 
 import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
 import org.junit.jupiter.api.Test;
@@ -80,8 +80,8 @@ class TessellatorTest {
     @Test
     void aSegmentCountOutOfRangeIsRejected() {
         List<BezierPatch> teapot = TestNets.teapot();
-        var e = assertThrows(IllegalArgumentException.class, () -> Tessellator.tessellate(teapot, 0));
-        assertTrue(e.getMessage().contains("got 0"), e.getMessage());
-        assertThrows(IllegalArgumentException.class, () -> Tessellator.tessellate(List.of(), 4));
+        String e = UserMessages.of(IllegalArgumentException.class, () -> Tessellator.tessellate(teapot, 0));
+        assertTrue(e.contains("got 0"), e);
+        UserMessages.of(IllegalArgumentException.class, () -> Tessellator.tessellate(List.of(), 4));
     }
 }

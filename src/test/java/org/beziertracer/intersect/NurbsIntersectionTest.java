@@ -57,7 +57,7 @@ class NurbsIntersectionTest {
      */
     private static void matchesClosedForm(String model, Method method, long seed, double spread, ClosedForm exact,
                                           Distance surface) {
-        SceneIntersector si = SceneIntersector.build(Models.builtIn(model), IntersectOptions.defaults().withMethod(method));
+        SceneIntersector si = SceneIntersector.build(Models.load(model), IntersectOptions.defaults().withMethod(method));
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();

@@ -4,7 +4,6 @@ import static org.beziertracer.Tolerances.DERIVED;
 import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -12,6 +11,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
@@ -201,7 +201,7 @@ class TessellatedModeTest {
 
     @Test
     void optionsRejectANegativeTessellation() {
-        assertThrows(IllegalArgumentException.class, () -> IntersectOptions.defaults().withTessellate(-1));
+        UserMessages.of(IllegalArgumentException.class, () -> IntersectOptions.defaults().withTessellate(-1));
         assertFalse(IntersectOptions.defaults().tessellated());
         assertTrue(IntersectOptions.defaults().withTessellate(3).tessellated());
     }

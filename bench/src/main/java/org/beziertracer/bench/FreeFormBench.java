@@ -60,7 +60,7 @@ public class FreeFormBench {
             case "rational" -> tiles(true);
             case "reparametrized" -> reparametrized(tiles(false));
             case "untrimmed" -> untrimmedPlate();
-            case "trimmed" -> Models.builtIn("trimmed-plate");
+            case "trimmed" -> Models.load("trimmed-plate");
             default -> throw new IllegalArgumentException(surface);
         };
         si = SceneIntersector.build(scene, IntersectOptions.defaults());
@@ -112,7 +112,7 @@ public class FreeFormBench {
 
     /** The trimmed plate's surface without its trim loops. */
     static Scene untrimmedPlate() {
-        BezierPatch p = Models.builtIn("trimmed-plate").patches().get(0);
+        BezierPatch p = Models.load("trimmed-plate").patches().get(0);
         return new Scene(List.of(new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet())));
     }
 

@@ -34,6 +34,7 @@ final class ObjFreeForm {
 
     private final String file;
     private final ObjVertices vertices;
+    private final ReadLimits limits;
     private final List<BezierPatch> patches = new ArrayList<>();
     private final List<TrimCurve> curves = new ArrayList<>();
     private SplineBasis basis;
@@ -46,9 +47,10 @@ final class ObjFreeForm {
     private long forwardIndex;
     private int curvesBefore, curvesAfter;
 
-    ObjFreeForm(String file, ObjVertices vertices) {
+    ObjFreeForm(String file, ObjVertices vertices, ReadLimits limits) {
         this.file = file;
         this.vertices = vertices;
+        this.limits = limits;
     }
 
     /** The Bézier patches of every surface read so far. */
@@ -100,6 +102,9 @@ final class ObjFreeForm {
     private void paramVertex(String[] t) {
         if (t.length < 3 || t.length > 4) {
             throw error("expected u v (and an optional weight) after vp, found " + (t.length - 1) + " values");
+        }
+        if (vertices.paramCount() >= limits.vertices()) {
+            throw error("a file may have at most " + limits.vertices() + " parameter vertices; this is one more");
         }
         int index = vertices.paramCount() + 1;
         double u = NumberText.parseFinite(t[1], "the u coordinate of parameter vertex " + index, file, line);
@@ -319,9 +324,16 @@ final class ObjFreeForm {
         block = null;
         if (b.degreeV == 0) {
             curves.add(ObjBlocks.curve(b, vertices, file));
-        } else {
-            patches.addAll(ObjBlocks.surface(b, vertices, file).toPatches());
+            return;
         }
+        FreeFormSurface surface = ObjBlocks.surface(b, vertices, file);
+        long made = surface.pieceCount();
+        if (patches.size() + made > limits.patches()) {
+            line = b.line;
+            throw error("a model may have at most " + limits.patches() + " patches; this surf makes " + made
+                    + " more after " + patches.size());
+        }
+        patches.addAll(surface.toPatches());
     }
 
     private ModelFormatException error(String detail) {

@@ -1,13 +1,7 @@
 package org.beziertracer.model.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.Reader;
-import java.io.StringReader;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 
@@ -47,8 +41,11 @@ import org.beziertracer.model.Scene;
  * with the line number. A file without any surface is an error.
  *
  * <p>Every error is a one-line {@link ModelFormatException} whose line number is the first
- * physical line of the statement ({@link ObjFreeForm} lists the free-form ones). Stateless and
- * thread-safe.
+ * physical line of the statement ({@link ObjFreeForm} lists the free-form ones). The caps of
+ * {@link ReadLimits} hold: lines, statements (continuation lines joined: at most
+ * {@value #STATEMENT_LINES} lines' worth), vertices (and parameter vertices) and patches; a surf
+ * is counted before its patches are built. Files are opened through {@link FileFormats#OBJ}.
+ * Stateless and thread-safe.
  */
 public final class ObjReader {
     private ObjReader() {}
@@ -59,66 +56,72 @@ public final class ObjReader {
     private static final Set<String> UNSUPPORTED = Set.of("curv", "scrv", "sp", "con",
             "bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
 
-    /** Reads an OBJ file into a scene; errors name the file by {@code file.getFileName()}. */
-    public static Scene readScene(Path file) throws IOException {
-        return new Scene(read(file));
-    }
-
-    /** Reads an OBJ file; errors name the file by {@code file.getFileName()}. */
-    public static List<BezierPatch> read(Path file) throws IOException {
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(in, String.valueOf(file.getFileName()));
-        }
-    }
+    /** A statement joined from continuation lines may hold this many lines' worth of characters. */
+    static final int STATEMENT_LINES = 4;
 
     /** Reads OBJ text; for tests and in-memory use. */
     public static List<BezierPatch> read(String text, String fileName) {
         try {
-            return read(new StringReader(text), fileName);
+            return read(TextSource.of(text, fileName));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
     }
 
+    /** The patches of {@code text} as a scene (the reader {@link FileFormats#OBJ} declares). */
+    static Scene readScene(TextSource text) throws IOException {
+        return new Scene(read(text));
+    }
+
     /**
-     * Reads OBJ text from {@code in} (not closed).
+     * Reads OBJ text.
      *
-     * @param fileName shown at the start of every error message
-     * @throws ModelFormatException for any syntax, range or unsupported-element problem
+     * @throws ModelFormatException for any syntax, range, cap or unsupported-element problem,
+     *                              naming {@link TextSource#fileName()}
      */
-    public static List<BezierPatch> read(Reader in, String fileName) throws IOException {
-        return new Parser(fileName).parse(in instanceof BufferedReader b ? b : new BufferedReader(in));
+    public static List<BezierPatch> read(TextSource text) throws IOException {
+        return new Parser(text).parse();
     }
 
     /** One parse: the vertex tables and the free-form state ({@link ObjFreeForm}). */
     private static final class Parser {
+        private final TextSource text;
+        private final ReadLimits limits;
         private final String file;
         private final ObjVertices vertices = new ObjVertices();
         private final ObjFreeForm freeForm;
         private int line;
 
-        Parser(String file) {
-            this.file = file;
-            this.freeForm = new ObjFreeForm(file, vertices);
+        Parser(TextSource text) {
+            this.text = text;
+            this.limits = text.limits();
+            this.file = text.fileName();
+            this.freeForm = new ObjFreeForm(file, vertices, limits);
         }
 
-        List<BezierPatch> parse(BufferedReader in) throws IOException {
+        List<BezierPatch> parse() throws IOException {
             int physical = 0;
             String raw;
             StringBuilder statement = new StringBuilder();
             int statementLine = 0;
-            while ((raw = in.readLine()) != null) {
-                physical++;
+            long statementCap = (long) STATEMENT_LINES * limits.lineChars();
+            while ((raw = text.readLine()) != null) {
+                physical = text.lineNumber();
                 int hash = raw.indexOf('#');
-                String text = (hash >= 0 ? raw.substring(0, hash) : raw).stripTrailing();
+                String content = (hash >= 0 ? raw.substring(0, hash) : raw).stripTrailing();
                 if (statement.length() == 0) {
                     statementLine = physical;
                 }
-                if (text.endsWith("\\")) {
-                    statement.append(text, 0, text.length() - 1).append(' ');
+                if (statement.length() + content.length() > statementCap) {
+                    line = statementLine;
+                    throw error("statement longer than " + statementCap + " characters (joined continuation"
+                            + " lines), the most a statement may hold");
+                }
+                if (content.endsWith("\\")) {
+                    statement.append(content, 0, content.length() - 1).append(' ');
                     continue;
                 }
-                statement.append(text);
+                statement.append(content);
                 line = statementLine;
                 String s = statement.toString().strip();
                 statement.setLength(0);
@@ -174,6 +177,9 @@ public final class ObjReader {
             if (t.length < 4 || t.length > 5) {
                 throw error("expected 3 coordinates (and an optional weight) after v, found " + (t.length - 1)
                         + " values");
+            }
+            if (vertices.count() >= limits.vertices()) {
+                throw error("a file may have at most " + limits.vertices() + " vertices; this is one more");
             }
             int index = vertices.count() + 1;
             double[] xyz = new double[3];

@@ -12,7 +12,6 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
-import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -23,8 +22,8 @@ import org.beziertracer.model.Sphere;
  * Writes a {@link SceneDocument} as a version-1 scene file that {@link SceneReader} reads back to
  * an equal document: every material is named {@code m0, m1, …} in scene order and referenced by
  * name, patches are written inline ({@code "patches"}, one model per run of patches sharing a
- * material; a rational patch with its {@code "weights"}, a patch of a free-form surface with its
- * {@code "domain"}; trimmed surfaces cannot be written inline and are refused with one line),
+ * material; a rational patch with its {@code "weights"}, a piece of a free-form surface with its
+ * {@code "domain"} and {@code "trim"}, {@link SceneFreeForm}),
  * numbers use the shortest text that parses back to the same double
  * ({@link NumberText#format}). Arrays of numbers stay on one line. Stateless.
  */
@@ -146,17 +145,7 @@ final class SceneWriter {
             }
         }
         o.add("points", points);
-        if (p.trim() != null) {
-            throw new IllegalArgumentException("a scene file cannot hold a trimmed surface inline; save the model as"
-                    + " .obj and name it in the scene file with \"file\"");
-        }
-        if (p.isRational()) {
-            o.add("weights", numbers(p.weights()));
-        }
-        PatchDomain d = p.domain();
-        if (!d.isUnit()) {
-            o.add("domain", numbers(d.u0(), d.u1(), d.v0(), d.v1()));
-        }
+        SceneFreeForm.write(o, p);
         return o;
     }
 
@@ -187,7 +176,7 @@ final class SceneWriter {
 
     private static JsonArray vec(Vec3 v) { return numbers(v.x(), v.y(), v.z()); }
 
-    private static JsonArray numbers(double... values) {
+    static JsonArray numbers(double... values) {
         JsonArray a = new JsonArray();
         for (double v : values) {
             a.add(number(v));
@@ -196,7 +185,7 @@ final class SceneWriter {
     }
 
     /** A number printed by {@link NumberText#format}: shortest round-trip text, whole numbers bare. */
-    private static JsonPrimitive number(double v) {
+    static JsonPrimitive number(double v) {
         return new JsonPrimitive(new JsonNode.NumberLiteral(NumberText.format(v)));
     }
 

@@ -22,7 +22,7 @@ class BuiltInSurfacesTest {
 
     @Test
     void everySpherePointIsAtDistanceOneFromTheOrigin() {
-        List<BezierPatch> sphere = Models.builtIn("sphere").patches();
+        List<BezierPatch> sphere = Models.load("sphere").patches();
         assertEquals(8, sphere.size());
         Random rnd = new Random(51);
         for (BezierPatch p : sphere) {
@@ -36,7 +36,7 @@ class BuiltInSurfacesTest {
 
     @Test
     void everyTorusPointSatisfiesTheTorusEquation() {
-        List<BezierPatch> torus = Models.builtIn("torus").patches();
+        List<BezierPatch> torus = Models.load("torus").patches();
         assertEquals(16, torus.size());
         double r = BuiltInSurfaces.TORUS_MINOR;
         Random rnd = new Random(52);
@@ -51,7 +51,7 @@ class BuiltInSurfacesTest {
 
     @Test
     void theTrimmedPlateHasAnOuterLoopAndThreeHoles() {
-        BezierPatch plate = Models.builtIn("trimmed-plate").patches().get(0);
+        BezierPatch plate = Models.load("trimmed-plate").patches().get(0);
         assertNotNull(plate.trim());
         assertEquals(1, plate.trim().outer().size());
         assertEquals(8, plate.trim().outer().get(0).pieces().size());
@@ -60,7 +60,7 @@ class BuiltInSurfacesTest {
 
     @Test
     void theTeacupAndTeaspoonAreTheNewellPatches() {
-        Scene cup = Models.builtIn("teacup"), spoon = Models.builtIn("teaspoon");
+        Scene cup = Models.load("teacup"), spoon = Models.load("teaspoon");
         assertEquals(26, cup.patchCount());
         assertEquals(16, spoon.patchCount());
         Aabb box = cup.controlBounds();
@@ -72,8 +72,8 @@ class BuiltInSurfacesTest {
 
     @Test
     void everyBuiltInModelGoesThroughObjAndBack() {
-        for (String name : Models.NAMES) {
-            List<BezierPatch> patches = Models.builtIn(name).patches();
+        for (String name : BuiltIns.names(FileFormat.Holds.MODEL)) {
+            List<BezierPatch> patches = Models.load(name).patches();
             String text = ObjWriter.toString(patches);
             assertEquals(patches, ObjReader.read(text, name + ".obj"), name);
         }

@@ -26,8 +26,8 @@ class FreeFormSavingTest {
     void objFilesKeepRationalAndTrimmedModels() throws IOException {
         for (String name : List.of("sphere", "trimmed-plate")) {
             Path file = dir.resolve(name + ".obj");
-            List<BezierPatch> patches = Models.builtIn(name).patches();
-            Models.save(file, patches);
+            List<BezierPatch> patches = Models.load(name).patches();
+            FileFormats.OBJ.write(file, new SceneDocument(new Scene(patches), RenderSettings.defaults()));
             assertEquals(patches, Models.load(file.toString()).patches(), name);
         }
     }
@@ -36,24 +36,35 @@ class FreeFormSavingTest {
     void bptRefusesRationalAndTrimmedPatchesWithOneLineAndWritesNothing() {
         Path file = dir.resolve("sphere.bpt");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> Models.save(file, Models.builtIn("sphere").patches()));
+                () -> FileFormats.BPT.write(file, new SceneDocument(Models.load("sphere"), RenderSettings.defaults())));
         assertTrue(e.getMessage().contains("patch 1 is rational; save the model as .obj"), e.getMessage());
         assertFalse(Files.exists(file));
-        e = assertThrows(IllegalArgumentException.class,
-                () -> Models.save(dir.resolve("plate.bpt"), Models.builtIn("trimmed-plate").patches()));
+        e = assertThrows(IllegalArgumentException.class, () -> FileFormats.BPT.write(dir.resolve("plate.bpt"),
+                new SceneDocument(Models.load("trimmed-plate"), RenderSettings.defaults())));
         assertTrue(e.getMessage().contains("is trimmed"), e.getMessage());
     }
 
     @Test
-    void sceneFilesKeepWeightsAndDomainsButRefuseTrims() {
-        Scene sphere = Models.builtIn("sphere");
+    void sceneFilesKeepWeightsDomainsAndTrims() {
+        Scene sphere = Models.load("sphere");
         String json = SceneFiles.toJson(new SceneDocument(sphere, RenderSettings.defaults()));
         assertTrue(json.contains("\"weights\""), json);
         assertTrue(json.contains("\"domain\": [3, 4, 1, 2]"), json);
         assertEquals(sphere.patches(), SceneFiles.parse(json, "sphere.json", null).scene().patches());
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SceneFiles.toJson(
-                new SceneDocument(Models.builtIn("trimmed-plate"), RenderSettings.defaults())));
-        assertTrue(e.getMessage().contains("cannot hold a trimmed surface inline"), e.getMessage());
+        Scene plate = Models.load("trimmed-plate");
+        String trimmed = SceneFiles.toJson(new SceneDocument(plate, RenderSettings.defaults()));
+        assertTrue(trimmed.contains("\"trim\""), trimmed);
+        assertEquals(plate.patches(), SceneFiles.parse(trimmed, "plate.json", null).scene().patches());
+    }
+
+    @Test
+    void anOpenTrimLoopInASceneFileNamesItsJsonPath() {
+        String json = "{\"version\": 1, \"models\": [{\"patches\": [{\"degree\": [1, 1], \"points\": [[0,0,0],[1,0,0],"
+                + "[0,1,0],[1,1,0]], \"trim\": {\"holes\": [[{\"curve\": {\"basis\": \"bezier\", \"degree\": 1,"
+                + " \"parm\": [0, 1], \"points\": [[0.2, 0.2], [0.8, 0.2]]}, \"from\": 0, \"to\": 1}]]}}]}]}";
+        ModelFormatException e = assertThrows(ModelFormatException.class, () -> SceneFiles.parse(json, "t.json", null));
+        assertTrue(e.getMessage().contains("trim.holes[0]"), e.getMessage());
+        assertTrue(e.getMessage().contains("expected a closed trim loop"), e.getMessage());
     }
 
     @Test
