@@ -38,29 +38,21 @@ final class HodographBounds {
 
     /**
      * The same data for a rational net: Euclidean points {@code xyz[off..]} and their weights
-     * {@code w[wOff..]}. The first derivative of the rational patch is
-     * {@code S_u = N_u / H.w} with {@code N_u = H_u.xyz − S·H_u.w} (quotient rule on the
-     * homogeneous patch {@code H}). The single-root test only asks whether
+     * {@code w[wOff..]}. The first derivative of the rational patch {@code S = A/W} (homogeneous
+     * parts {@code A = Σ w P B}, {@code W = Σ w B}) is {@code S_u = N_u / W} with
+     * {@code N_u = (A_u·W − A·W_u) / W}. The single-root test only asks whether
      * {@code F1u(ξ1)·F2v(ξ2) − F1v(ξ1)·F2u(ξ2)} can vanish, and dividing the derivatives at
-     * {@code ξ1} and at {@code ξ2} by the positive {@code H.w} there does not change its sign; so
-     * the balls here bound {@code N_u/n} and {@code N_v/m} instead. With {@code c} the centre of the
-     * control box, {@code N_u = n·Σ Δ(w·(P−c))·B − (S−c)·n·Σ Δw·B}, which over the piece lies in the
-     * box {@code [a_lo − h·D, a_hi + h·D]}: {@code a} ranging over the differences
-     * {@code Δ(w·(P−c))}, {@code h} the half extents of the control box (which holds {@code S})
-     * and {@code D} the largest {@code |Δw|} (the convex-hull property of {@code H}). Tight for
-     * flat pieces with even weights; for equal weights it is the polynomial bound scaled.
+     * {@code ξ1} and at {@code ξ2} by the positive {@code W} there does not change its sign; so
+     * the balls here bound {@code N_u/n} and {@code N_v/m}. Expanding the products of Bernstein
+     * sums, {@code A_u·W − A·W_u = n·Σ c·V} with non-negative coefficients {@code c} summing to
+     * {@code W} and the vectors {@code V = w_q·(P_q − P_k) − w_p·(P_p − P_k)} for every pair
+     * {@code p, q} of u-neighbours and every point {@code k}; so {@code N_u/n} lies in the convex
+     * hull of those {@code V} (for equal weights they are the polynomial hodograph's differences).
+     * The ball is the one around their box.
      */
     static void computeRational(double[] xyz, int off, double[] w, int wOff, int n, int m, double[] out, int o) {
-        int points = (n + 1) * (m + 1);
-        double[] lo = new double[3], hi = new double[3];
-        for (int k = 0; k < points; k++) {
-            for (int c = 0; c < 3; c++) {
-                lo[c] = Math.min(k == 0 ? Double.POSITIVE_INFINITY : lo[c], xyz[off + 3 * k + c]);
-                hi[c] = Math.max(k == 0 ? Double.NEGATIVE_INFINITY : hi[c], xyz[off + 3 * k + c]);
-            }
-        }
-        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, n + 1, lo, hi, out, o);
-        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, n + 1, lo, hi, out, o + 3);
+        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, out, o);
+        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, out, o + 3);
         double la = Math.sqrt(out[o] * out[o] + out[o + 1] * out[o + 1] + out[o + 2] * out[o + 2]);
         double lb = Math.sqrt(out[o + 3] * out[o + 3] + out[o + 4] * out[o + 4] + out[o + 5] * out[o + 5]);
         out[o + 6] = ra;
@@ -69,37 +61,36 @@ final class HodographBounds {
     }
 
     /**
-     * Centre (to {@code out[o..o+3)}) and radius of a ball holding {@code N_u/n} ({@code step} 1)
-     * or {@code N_v/m} ({@code step} = points per row) over a rational piece; see
-     * {@link #computeRational}.
+     * Centre (to {@code out[o..o+3)}) and radius of the ball around the box of the vectors
+     * {@code V} of {@link #computeRational} for neighbours {@code step} apart (1: along u; the
+     * points of a row: along v).
      */
-    private static double rationalBall(double[] xyz, int off, double[] w, int wOff, int n, int m, int step, int row,
-                                       double[] lo, double[] hi, double[] out, int o) {
-        double[] aLo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] aHi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        double dMax = 0;
+    private static double rationalBall(double[] xyz, int off, double[] w, int wOff, int n, int m, int step,
+                                       double[] out, int o) {
+        int row = n + 1, points = (n + 1) * (m + 1);
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int j = 0; j <= m; j++) {
             for (int i = 0; i <= n; i++) {
                 int p = j * row + i, q = p + step;
                 if ((step == 1 && i == n) || (step != 1 && j == m)) {
                     continue;
                 }
-                double wp = w[wOff + p], wq = w[wOff + q];
-                dMax = Math.max(dMax, Math.abs(wq - wp));
+                double wp = w[wOff + p], wq = w[wOff + q], d = wq - wp;
                 for (int c = 0; c < 3; c++) {
-                    double centre = 0.5 * (lo[c] + hi[c]);
-                    double a = wq * (xyz[off + 3 * q + c] - centre) - wp * (xyz[off + 3 * p + c] - centre);
-                    aLo[c] = Math.min(aLo[c], a);
-                    aHi[c] = Math.max(aHi[c], a);
+                    double a = wq * xyz[off + 3 * q + c] - wp * xyz[off + 3 * p + c];
+                    for (int k = 0; k < points; k++) {
+                        double v = a - d * xyz[off + 3 * k + c];
+                        lo[c] = Math.min(lo[c], v);
+                        hi[c] = Math.max(hi[c], v);
+                    }
                 }
             }
         }
         double r2 = 0;
         for (int c = 0; c < 3; c++) {
-            double h = 0.5 * (hi[c] - lo[c]);
-            double nLo = aLo[c] - h * dMax, nHi = aHi[c] + h * dMax;
-            out[o + c] = 0.5 * (nLo + nHi);
-            r2 += 0.25 * (nHi - nLo) * (nHi - nLo);
+            out[o + c] = 0.5 * (lo[c] + hi[c]);
+            r2 += 0.25 * (hi[c] - lo[c]) * (hi[c] - lo[c]);
         }
         return Math.sqrt(r2);
     }
