@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 class FreeFormPiecesTest {
 
     /** Pieces against the Cox–de Boor surface, relative to the largest control coordinate. */
-    private static final double REPRODUCTION_REL = 1e-12;
+    private static final double REPRODUCTION_REL = org.beziertracer.Tolerances.ROUNDING;
     private static final int SURFACES = 40;
     private static final int SAMPLES_PER_SURFACE = 25; // 1,000 (u,v) in all
 

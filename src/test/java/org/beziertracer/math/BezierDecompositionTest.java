@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 class BezierDecompositionTest {
 
     /** Bézier pieces against the Cox–de Boor sum, relative to the largest control coordinate. */
-    private static final double REPRODUCTION_REL = 1e-12;
+    private static final double REPRODUCTION_REL = org.beziertracer.Tolerances.ROUNDING;
 
     @Test
     void piecesReproduceRandomCurvesWithMultiplicitiesClampedOrNot() {

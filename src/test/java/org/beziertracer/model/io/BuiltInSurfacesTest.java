@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 class BuiltInSurfacesTest {
 
     /** Distance from the exact shape, relative to its size: rational Bézier pieces are exact to rounding. */
-    private static final double SHAPE_TOLERANCE = 1e-12;
+    private static final double SHAPE_TOLERANCE = org.beziertracer.Tolerances.ROUNDING;
 
     @Test
     void everySpherePointIsAtDistanceOneFromTheOrigin() {
