@@ -138,6 +138,11 @@ public final class PatchNormals {
         return store(x, y, z, threshold, out, outOff);
     }
 
+    /** Normal of the net's diagonals ({@code dim} 3), else +z. */
+    static void netNormal(double[] net, int off, int n, int m, double[] out, int outOff) {
+        netNormal(net, off, n, m, 3, out, outOff);
+    }
+
     /** Normal of the net's diagonals (Euclidean corners), else +z. */
     private static void netNormal(double[] net, int off, int n, int m, int dim, double[] out, int outOff) {
         int p00 = off, pn0 = off + dim * n, p0m = off + dim * m * (n + 1), pnm = p0m + dim * n;
