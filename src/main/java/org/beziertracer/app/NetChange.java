@@ -57,10 +57,10 @@ final class NetChange {
 
     /**
      * {@code p} with another net of the same size, everything else kept. The one place an edit
-     * makes a patch from a net: when patches gain weights and trims (the rational patches of issue
-     * 11), this must keep them ({@code p.withNet(net)}), or a move would silently drop them.
+     * makes a patch from a net: a rational patch keeps its weights, a trimmed one its trim
+     * region and domain ({@link BezierPatch#withNet}).
      */
     static BezierPatch withNet(BezierPatch p, double[] net) {
-        return new BezierPatch(p.degreeU(), p.degreeV(), net);
+        return p.withNet(net);
     }
 }

@@ -19,12 +19,16 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the control-point bounding
- * box and, for a scene, its planes, spheres and lights.
+ * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the rational and trimmed
+ * patches and the free-form surfaces they came from ({@link SurfaceSummary}), the control-point
+ * bounding box and, for a scene, its planes, spheres and lights.
  * <pre>
  * model: teapot-room
  * patches: 32
  * degrees: 3x3 (32)
+ * rational patches: 0
+ * trimmed patches: 0
+ * surfaces: 0
  * control-point bounds: x[-120,141] y[-80,80] z[0,120]
  * objects: 1 plane, 2 spheres, 1 light
  * </pre>
@@ -33,8 +37,8 @@ import picocli.CommandLine.Spec;
  * read ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
-        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a "
-                + "model or scene.")
+        description = "Prints patch count, degrees, rational and trimmed patches, free-form surfaces and their "
+                + "Bézier pieces, control-point bounding box, sub-patch and BVH figures of a model or scene.")
 final class InfoCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
@@ -50,6 +54,7 @@ final class InfoCommand implements Callable<Integer> {
         out.println("model: " + model);
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
+        SurfaceSummary.lines(scene).forEach(out::println);
         out.println("control-point bounds: " + (scene.patchCount() == 0 ? "none" : scene.controlBounds()));
         if (!scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.lights().isEmpty()) {
             out.println("objects: " + count(scene.planes().size(), "plane") + ", "

@@ -5,6 +5,8 @@ import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
+import org.beziertracer.model.TrimRegion;
 
 /**
  * Every sub-patch of every patch of a scene, in flat arrays indexed by sub-patch number
@@ -17,8 +19,16 @@ import org.beziertracer.model.BezierPatch;
  *       {@code BezierPatch}: u fastest, 3 doubles a point);</li>
  *   <li>{@code boxes[4s..4s+3]}: {@code u0, u1, v0, v1}, its parameter box in the parent;</li>
  *   <li>{@code bounds[6s..6s+5]}: the axis-aligned box of its control points, which contains
- *       the sub-patch by the convex-hull property.</li>
+ *       the sub-patch by the convex-hull property (for a rational patch too: its Euclidean
+ *       points, the weights being positive).</li>
  * </ul>
+ *
+ * <p><b>Rational patches</b> keep Euclidean sub-patch nets in {@code nets} and their weights in
+ * {@link #weights} (null when no patch is rational); the whole patch's net in
+ * {@link #patchNets} is then homogeneous ({@link #patchDim} 4, see {@link RationalDeCasteljau}).
+ * <b>Trimmed patches</b> have their {@link TrimCurves} and parameter domain; their sub-patches
+ * wholly outside the trim region are not in the table at all, and {@link #trimTest} says which
+ * of the others need their hits tested.
  *
  * <p>An edit of one patch re-splits only that patch ({@link #withPatch}); the other patches'
  * pieces are reused.
@@ -55,27 +65,51 @@ public final class SubPatchTable {
     public final double[] uniqueness;
     /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
     public final double[] patchSquaredExtent;
+    /** 3: patch {@code k}'s net in {@link #patchNets} is Euclidean; 4: homogeneous (a rational patch). */
+    public final int[] patchDim;
+    /**
+     * Null when no patch is rational; else one weight per sub-patch control point, the weight of
+     * point {@code i} of sub-patch {@code s} at {@code weights[netOffset[s]/3 + i]} (1 for
+     * polynomial patches).
+     */
+    public final double[] weights;
+    /** Null when no patch is trimmed; else per sub-patch whether its hits need the trim test. */
+    public final boolean[] trimTest;
+    /** Per patch its trim curves, or null when untrimmed. */
+    public final TrimCurves[] patchTrim;
+    /** Per patch {@code u0, u1, v0, v1}: its part of its surface's parameter domain ({@code 0,1,0,1} when plain). */
+    public final double[] patchDomain;
 
-    private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, SplitOptions options) {
+    private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, TrimCurves[] trims, SplitOptions options) {
         this.patches = List.copyOf(patches);
         this.pieces = pieces;
         this.options = options;
+        this.patchTrim = trims;
         patchNetOffset = new int[pieces.length];
         patchDegreeU = new int[pieces.length];
         patchDegreeV = new int[pieces.length];
+        patchDim = new int[pieces.length];
+        patchDomain = domains(this.patches);
         int patchDoubles = 0;
+        boolean anyRational = false, anyTrimmed = false;
         for (int k = 0; k < pieces.length; k++) {
+            BezierPatch p = this.patches.get(k);
             patchNetOffset[k] = patchDoubles;
             patchDegreeU[k] = pieces[k].degreeU();
             patchDegreeV[k] = pieces[k].degreeV();
-            patchDoubles += pieces[k].netLength();
+            patchDim[k] = Patches.dim(p);
+            patchDoubles += p.pointCount() * patchDim[k];
+            anyRational |= p.isRational();
+            anyTrimmed |= trims[k] != null;
         }
         patchNets = new double[patchDoubles];
         patchSquaredExtent = new double[pieces.length];
         for (int k = 0; k < pieces.length; k++) {
-            this.patches.get(k).copyNetInto(patchNets, patchNetOffset[k]);
+            BezierPatch p = this.patches.get(k);
+            double[] net = Patches.workingNet(p);
+            System.arraycopy(net, 0, patchNets, patchNetOffset[k], net.length);
             patchSquaredExtent[k] = PatchNormals.squaredExtent(patchNets, patchNetOffset[k],
-                    patchDegreeU[k], patchDegreeV[k]);
+                    patchDegreeU[k], patchDegreeV[k], patchDim[k]);
         }
         int total = 0;
         int doubles = 0;
@@ -92,6 +126,8 @@ public final class SubPatchTable {
         boxes = new double[4 * total];
         bounds = new double[6 * total];
         uniqueness = new double[HodographBounds.STRIDE * total];
+        weights = anyRational ? new double[doubles / 3] : null;
+        trimTest = anyTrimmed ? new boolean[total] : null;
         firstOf = new int[pieces.length + 1];
         double[] box = new double[6];
         int s = 0, off = 0;
@@ -108,21 +144,48 @@ public final class SubPatchTable {
                 netOffset[s] = off;
                 Bounds.ofPoints(nets, off, len / 3, box);
                 System.arraycopy(box, 0, bounds, 6 * s, 6);
-                HodographBounds.compute(nets, off, p.degreeU(), p.degreeV(), uniqueness,
-                        HodographBounds.STRIDE * s, box);
+                if (p.weights() != null) {
+                    // the derivative bounds of a rational piece come from its homogeneous net
+                    System.arraycopy(p.weights(), i * (len / 3), weights, off / 3, len / 3);
+                    HodographBounds.computeRational(nets, off, weights, off / 3, p.degreeU(), p.degreeV(), uniqueness,
+                            HodographBounds.STRIDE * s);
+                } else {
+                    HodographBounds.compute(nets, off, p.degreeU(), p.degreeV(), uniqueness,
+                            HodographBounds.STRIDE * s, box);
+                    if (weights != null) {
+                        java.util.Arrays.fill(weights, off / 3, off / 3 + len / 3, 1);
+                    }
+                }
+                if (trimTest != null && p.trimTest() != null) {
+                    trimTest[s] = p.trimTest()[i];
+                }
             }
         }
         firstOf[pieces.length] = s;
     }
 
-    /** Splits every patch. */
+    /** {@code u0, u1, v0, v1} of each patch's {@link PatchDomain}, one after another. */
+    public static double[] domains(List<BezierPatch> patches) {
+        double[] out = new double[4 * patches.size()];
+        for (int k = 0; k < patches.size(); k++) {
+            PatchDomain d = patches.get(k).domain();
+            out[4 * k] = d.u0();
+            out[4 * k + 1] = d.u1();
+            out[4 * k + 2] = d.v0();
+            out[4 * k + 3] = d.v1();
+        }
+        return out;
+    }
+
+    /** Splits every patch (the trim curves of each distinct trim region are built once). */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
         PatchPieces[] pieces = new PatchPieces[patches.size()];
+        TrimCurves[] trims = TrimCurves.forPatches(patches);
         // Patches split independently; large scenes use the common fork-join pool (build time only)
         IntStream range = IntStream.range(0, pieces.length);
         (pieces.length >= PARALLEL_PATCHES ? range.parallel() : range)
-                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options));
-        return new SubPatchTable(patches, pieces, options);
+                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options, trims[k]));
+        return new SubPatchTable(patches, pieces, trims, options);
     }
 
     /** Patches split for real by {@link #estimateCount}; more are sampled evenly. */
@@ -184,12 +247,21 @@ public final class SubPatchTable {
      */
     public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements) {
         PatchPieces[] copy = pieces.clone();
+        TrimCurves[] trims = patchTrim.clone();
         var list = new java.util.ArrayList<>(patches);
         for (int k = 0; k < indices.length; k++) {
-            copy[indices[k]] = PatchSplitter.split(replacements.get(k), options);
-            list.set(indices[k], replacements.get(k));
+            int index = indices[k];
+            BezierPatch patch = replacements.get(k);
+            TrimRegion region = patch.trim();
+            if (region == null) {
+                trims[index] = null;
+            } else if (region != patches.get(index).trim() || trims[index] == null) {
+                trims[index] = TrimCurves.of(region);
+            }
+            copy[index] = PatchSplitter.split(patch, options, trims[index]);
+            list.set(index, patch);
         }
-        return new SubPatchTable(list, copy, options);
+        return new SubPatchTable(list, copy, trims, options);
     }
 
     /** Number of sub-patches of patch {@code index}. */

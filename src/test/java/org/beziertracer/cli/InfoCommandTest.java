@@ -69,6 +69,32 @@ class InfoCommandTest {
     }
 
     @Test
+    void infoSpherePrintsTheRationalSurfaceAndItsPieces() {
+        Run r = run("info", "sphere");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("patches: 8\n"), r.out());
+        assertTrue(r.out().contains("rational patches: 8\n"), r.out());
+        assertTrue(r.out().contains("surfaces: 1\n"), r.out());
+        assertTrue(r.out().contains("  surface 1: rational bspline, degree 2x2, 9x5 control points, u[0,4] v[0,2],"
+                + " untrimmed -> 8 Bézier pieces (patches 1-8)\n"), r.out());
+    }
+
+    @Test
+    void infoTrimmedPlatePrintsItsTrimLoops() {
+        Run r = run("info", "trimmed-plate");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("trimmed patches: 1\n"), r.out());
+        assertTrue(r.out().contains("trimmed by 1 outer loop (8 curves) and 3 holes (1 curve, 1 curve, 1 curve)"),
+                r.out());
+    }
+
+    @Test
+    void plainPatchesHaveNoSurfaces() {
+        Run r = run("info", "teapot");
+        assertTrue(r.out().contains("rational patches: 0\ntrimmed patches: 0\nsurfaces: 0\n"), r.out());
+    }
+
+    @Test
     void helpDescribesTheCommand() {
         Run r = run("info", "--help");
         assertEquals(0, r.code());

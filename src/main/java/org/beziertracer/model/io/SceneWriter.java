@@ -22,7 +22,9 @@ import org.beziertracer.model.Sphere;
  * Writes a {@link SceneDocument} as a version-1 scene file that {@link SceneReader} reads back to
  * an equal document: every material is named {@code m0, m1, …} in scene order and referenced by
  * name, patches are written inline ({@code "patches"}, one model per run of patches sharing a
- * material), numbers use the shortest text that parses back to the same double
+ * material; a rational patch with its {@code "weights"}, a piece of a free-form surface with its
+ * {@code "domain"} and {@code "trim"}, {@link SceneFreeForm}),
+ * numbers use the shortest text that parses back to the same double
  * ({@link NumberText#format}). Arrays of numbers stay on one line. Stateless.
  */
 final class SceneWriter {
@@ -143,6 +145,7 @@ final class SceneWriter {
             }
         }
         o.add("points", points);
+        SceneFreeForm.write(o, p);
         return o;
     }
 
@@ -173,7 +176,7 @@ final class SceneWriter {
 
     private static JsonArray vec(Vec3 v) { return numbers(v.x(), v.y(), v.z()); }
 
-    private static JsonArray numbers(double... values) {
+    static JsonArray numbers(double... values) {
         JsonArray a = new JsonArray();
         for (double v : values) {
             a.add(number(v));
@@ -182,7 +185,7 @@ final class SceneWriter {
     }
 
     /** A number printed by {@link NumberText#format}: shortest round-trip text, whole numbers bare. */
-    private static JsonPrimitive number(double v) {
+    static JsonPrimitive number(double v) {
         return new JsonPrimitive(new JsonNode.NumberLiteral(NumberText.format(v)));
     }
 
