@@ -59,15 +59,21 @@ public final class Bvh implements Accelerator {
         this.buildMillis = buildMillis;
     }
 
+    /** Bytes per primitive a build holds besides the nodes: the larger of the two builders'. */
+    static final int BUILD_BYTES_PER_PRIM = Math.max(
+            4 + 6 * 4 + 3 * 4,                     // binned SAH: leaf order, float boxes, centroids
+            4 + 6 * 4 + 8 + 2 * 4);                // Morton: leaf order, float boxes, codes, made-node lists
+
     /**
      * About the most heap {@link #build} holds at once for {@code primCount} primitives, in bytes
-     * (not counting the caller's boxes): the builder's float boxes and centroids and the primitive
-     * order, and the node arrays, written in place (room for {@code 2n-1} nodes). Keep this in step
-     * with {@link BinnedSahBuilder} and the fields above when the layout changes.
+     * (not counting the caller's boxes): the builder's float boxes, centroids or codes, and the
+     * primitive order, and the node arrays, written in place (room for {@code 2n-1} nodes). Keep
+     * this in step with {@link BinnedSahBuilder}, {@link MortonBuilder} and the fields above when
+     * the layout changes.
      */
     public static long estimateBytes(long primCount) {
         long nodes = Math.max(1, 2 * primCount - 1);
-        return primCount * (6 * 4 + 3 * 4 + 4) + nodes * NODE_BYTES;
+        return primCount * BUILD_BYTES_PER_PRIM + nodes * NODE_BYTES;
     }
 
     /** Heap held by this hierarchy's arrays, in bytes (array headers included). */
