@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
+import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
 
 /**
@@ -171,6 +172,21 @@ public final class SubPatchTable {
         long perPatch = 8 * 3 * 4 + 8 + 4 + 96;                    // patch arrays, extent, firstOf, pieces objects
         return subPatchCount * perSubPatch + 8 * netDoubles + patches.size() * perPatch;
     }
+
+    /** Heap held by this table's arrays and the pieces it keeps, in bytes (not the patches). */
+    public long bytes() {
+        long b = HeapBytes.of(parent) + HeapBytes.of(degreeU) + HeapBytes.of(degreeV) + HeapBytes.of(netOffset)
+                + HeapBytes.of(nets) + HeapBytes.of(boxes) + HeapBytes.of(bounds) + HeapBytes.of(firstOf)
+                + HeapBytes.of(patchNets) + HeapBytes.of(patchNetOffset) + HeapBytes.of(patchDegreeU)
+                + HeapBytes.of(patchDegreeV) + HeapBytes.of(uniqueness) + HeapBytes.of(patchSquaredExtent);
+        for (PatchPieces p : pieces) {
+            b += PIECES_OBJECT_BYTES + HeapBytes.of(p.nets()) + HeapBytes.of(p.boxes());
+        }
+        return b + HeapBytes.array(pieces.length, 4);
+    }
+
+    /** A {@link PatchPieces} record without its arrays (header, three ints, two references). */
+    static final int PIECES_OBJECT_BYTES = 32;
 
     /** A new table with patch {@code index} replaced and re-split; the others are reused. */
     public SubPatchTable withPatch(int index, BezierPatch patch) {

@@ -75,6 +75,9 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
      */
     Leaves withPatch(Scene edited, int index, double sceneSize);
 
+    /** Heap held by these leaves' data (not the model's patches), in bytes. */
+    long bytes();
+
     /** Sub-patches (BVH leaves) of the exact mode; the number of whole patches for other kinds. */
     int subPatchCount();
 

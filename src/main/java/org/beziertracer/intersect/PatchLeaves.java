@@ -113,6 +113,9 @@ abstract class PatchLeaves implements Leaves {
     }
 
     @Override
+    public final long bytes() { return table.bytes(); }
+
+    @Override
     public final int count() { return table.count; }
 
     @Override

@@ -199,6 +199,12 @@ public final class SceneIntersector {
 
     public int nodeCount() { return accel.nodeCount(); }
 
+    /** Heap held by the leaves' data (sub-patch table or triangle mesh), in bytes. */
+    public long leafBytes() { return leaves.bytes(); }
+
+    /** Heap held by the acceleration structure's nodes (BVH or box list), in bytes. */
+    public long accelBytes() { return accel.bytes(); }
+
     public int depth() { return accel.depth(); }
 
     public double buildMillis() { return buildMillis; }

@@ -70,6 +70,9 @@ final class TriangleLeaves implements Leaves {
     }
 
     @Override
+    public long bytes() { return mesh.bytes(); }
+
+    @Override
     public int count() { return mesh.count; }
 
     @Override
