@@ -1,6 +1,5 @@
 package org.beziertracer.cli;
 
-import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 
 import picocli.CommandLine;
@@ -76,9 +75,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     }
 
     static int launchApp(Runnable desktopApp) {
-        if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("beziertracer: no display available, so the desktop app cannot open; "
-                    + "use the command line instead: java -jar target/beziertracer.jar --help");
+        if (!DisplayCheck.displayReachable()) {
+            System.err.println(DisplayCheck.NO_DISPLAY);
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {
