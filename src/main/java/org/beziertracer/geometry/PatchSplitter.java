@@ -11,13 +11,23 @@ import org.beziertracer.model.BezierPatch;
  * sub-patches and in Tejima, Fujita and Matsuoka, "Direct ray tracing of full-featured
  * subdivision surfaces with Bézier clipping", JCGT 4(1), 2015 (pre-subdivision of patches).
  *
- * <p>Each step halves the parametric direction whose control polygon is longer. Run at build
- * time only (allocates a few arrays per patch, none per halving).
+ * <p>Each step halves the parametric direction whose control polygon is longer. A piece whose
+ * control-box diagonal is below a minimum size is not halved either (the scene-relative stop that
+ * {@link SubPatchTable} sets, so that a model of many small patches is not split many-fold). Run
+ * at build time only (allocates a few arrays per patch, none per halving).
  */
 public final class PatchSplitter {
     private PatchSplitter() {}
 
     public static PatchPieces split(BezierPatch patch, SplitOptions options) {
+        return split(patch, options, 0);
+    }
+
+    /**
+     * As {@link #split(BezierPatch, SplitOptions)}, and a piece whose control-box diagonal is below
+     * {@code minSize} (model units) is not halved.
+     */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, double minSize) {
         int n = patch.degreeU(), m = patch.degreeV();
         int len = (n + 1) * (m + 1) * 3;
         double[] net = patch.copyNet();
@@ -25,7 +35,7 @@ public final class PatchSplitter {
             return new PatchPieces(n, m, 1, net, new double[] {0, 1, 0, 1});
         }
         Builder out = new Builder(len);
-        new Recursion(n, m, options, out).run(net);
+        new Recursion(n, m, options, minSize, out).run(net);
         return new PatchPieces(n, m, out.count, Arrays.copyOf(out.nets, out.count * len),
                 Arrays.copyOf(out.boxes, out.count * 4));
     }
@@ -38,15 +48,17 @@ public final class PatchSplitter {
     private static final class Recursion {
         final int n, m, len;
         final SplitOptions options;
+        final double minSize;
         final Builder out;
         final double[][] lo, hi;
         final double[] box = new double[6];
 
-        Recursion(int n, int m, SplitOptions options, Builder out) {
+        Recursion(int n, int m, SplitOptions options, double minSize, Builder out) {
             this.n = n;
             this.m = m;
             this.len = (n + 1) * (m + 1) * 3;
             this.options = options;
+            this.minSize = minSize;
             this.out = out;
             int levels = options.maxDepth() + 1;
             lo = new double[levels][len];
@@ -61,7 +73,7 @@ public final class PatchSplitter {
             Bounds.ofPoints(net, 0, (n + 1) * (m + 1), box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
             double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (depth >= options.maxDepth()
+            if (depth >= options.maxDepth() || size < minSize
                     || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
                 out.add(net, u0, u1, v0, v1);
                 return;

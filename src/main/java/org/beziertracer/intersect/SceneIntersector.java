@@ -63,8 +63,9 @@ public final class SceneIntersector {
     }
 
     private static Accelerator buildAccel(Leaves leaves, IntersectOptions options) {
-        return options.bvh() ? Bvh.build(leaves.bounds(), leaves.count(), options.bvhOptions())
-                : FlatList.build(leaves.bounds(), leaves.count());
+        double[] bounds = leaves.bounds(0, leaves.count());
+        return options.bvh() ? Bvh.build(bounds, leaves.count(), options.bvhOptions())
+                : FlatList.build(bounds, leaves.count());
     }
 
     /**
@@ -79,7 +80,9 @@ public final class SceneIntersector {
         Leaves newLeaves = leaves.withPatch(edited, index, size);
         Accelerator newAccel;
         if (newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
-            newAccel = bvh.refit(newLeaves.bounds());
+            // Same number of leaves: only the edited patch's moved; refit their leaves and ancestors
+            int first = newLeaves.firstLeaf(index), n = newLeaves.leafCount(index);
+            newAccel = bvh.refit(newLeaves.bounds(first, n), first, n);
         } else {
             newAccel = buildAccel(newLeaves, options);
         }
