@@ -233,23 +233,24 @@ public final class Bvh implements Accelerator {
 
     /**
      * A new hierarchy, same topology, where primitives {@code first .. first+count-1} have new
-     * boxes and the others keep theirs: the leaves that hold a changed primitive are recomputed
-     * from {@code primBounds} (the boxes of <b>all</b> primitives, read only at the leaves that
-     * change) and so are their ancestors; every other node keeps its box. This instance is
-     * unchanged. Cost: one pass over the nodes.
+     * boxes and the others keep theirs: a leaf that holds only changed primitives gets the union of
+     * their new boxes; a leaf that mixes changed and unchanged ones grows to hold the new boxes too
+     * (its old box already holds the unchanged ones: conservative, never too small); their
+     * ancestors are recomputed; every other node keeps its box. This instance is unchanged. Cost:
+     * one pass over the nodes.
      *
-     * @param primBounds six doubles per primitive, as for {@link #build}
+     * @param rangeBounds six doubles for each changed primitive, in order from {@code first}
      * @throws IllegalArgumentException for a short array, a range outside the primitives or a
-     *     non-finite or inverted box in it
+     *     non-finite or inverted box
      */
-    public Bvh refit(double[] primBounds, int first, int count) {
+    public Bvh refit(double[] rangeBounds, int first, int count) {
         long start = System.nanoTime();
         int primCount = primIndices.length;
         if (first < 0 || count < 0 || first > primCount - count) {
             throw new IllegalArgumentException("primitives " + first + ".." + (first + count - 1)
                     + " are not among the " + primCount + " of this hierarchy");
         }
-        checkBounds(primBounds, first, count);
+        checkBounds(rangeBounds, count);
         float[] nb = nodeBounds.clone();
         int nodeCount = nodes.length / 2;
         boolean[] dirty = new boolean[nodeCount];
@@ -257,15 +258,20 @@ public final class Bvh implements Accelerator {
         for (int i = nodeCount - 1; i >= 0 && count > 0; i--) {
             int lf = nodes[2 * i], n = nodes[2 * i + 1], o = 6 * i;
             if (n > 0) {
-                boolean changed = false;
-                for (int k = lf; k < lf + n && !changed; k++) {
-                    changed = primIndices[k] - first >= 0 && primIndices[k] - first < count;
+                int changed = 0;
+                for (int k = lf; k < lf + n; k++) {
+                    changed += primIndices[k] - first >= 0 && primIndices[k] - first < count ? 1 : 0;
                 }
-                if (changed) {
+                if (changed > 0) {
                     dirty[i] = true;
-                    BvhBuild.setEmpty(nb, o);
+                    if (changed == n) {
+                        BvhBuild.setEmpty(nb, o);
+                    }
                     for (int k = lf; k < lf + n; k++) {
-                        BvhBuild.growRounded(nb, o, primBounds, 6 * primIndices[k]);
+                        int r = primIndices[k] - first;
+                        if (r >= 0 && r < count) {
+                            BvhBuild.growRounded(nb, o, rangeBounds, 6 * r);
+                        }
                     }
                 }
             } else if (dirty[lf] || dirty[lf + 1]) {
@@ -278,21 +284,13 @@ public final class Bvh implements Accelerator {
         return new Bvh(nb, nodes, primIndices, depth, (System.nanoTime() - start) * 1e-6);
     }
 
+    /** Throws, naming the primitive and axis, when the array is short or a box is bad. */
     static void checkBounds(double[] primBounds, int primCount) {
         if (primCount < 0 || primBounds.length < 6 * (long) primCount) {
             throw new IllegalArgumentException("need 6 doubles for each of " + primCount
                     + " primitives, got an array of " + primBounds.length);
         }
-        checkBounds(primBounds, 0, primCount);
-    }
-
-    /** Throws, naming the primitive and axis, when a box of primitives {@code first..first+count-1} is bad. */
-    private static void checkBounds(double[] primBounds, int first, int count) {
-        if (primBounds.length < 6 * ((long) first + count)) {
-            throw new IllegalArgumentException("need 6 doubles for each of " + (first + count)
-                    + " primitives, got an array of " + primBounds.length);
-        }
-        for (int p = first; p < first + count; p++) {
+        for (int p = 0; p < primCount; p++) {
             for (int a = 0; a < 3; a++) {
                 double lo = primBounds[6 * p + a], hi = primBounds[6 * p + 3 + a];
                 if (!Double.isFinite(lo) || !Double.isFinite(hi) || lo > hi) {

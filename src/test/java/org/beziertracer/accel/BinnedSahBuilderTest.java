@@ -61,6 +61,31 @@ class BinnedSahBuilderTest {
         assertEquals(depth, bvh.depth(), in + ": depth");
     }
 
+    /**
+     * The conservative property alone (after a partial refit, which may leave boxes larger than
+     * needed): every primitive's box inside its leaf's, every child's inside its parent's.
+     */
+    static void checkContainment(Bvh bvh, double[] bounds, int n, String in) {
+        int[] seen = new int[n];
+        for (int node = 0; node < bvh.nodeCount(); node++) {
+            Aabb box = bvh.nodeBounds(node);
+            int first = bvh.nodeLeftFirst(node);
+            if (bvh.isLeaf(node)) {
+                for (int s = first; s < first + bvh.leafPrimCount(node); s++) {
+                    int p = bvh.primIndex(s);
+                    seen[p]++;
+                    assertTrue(contains(box, prim(bounds, p)), in + ": leaf " + node + " does not contain prim " + p);
+                }
+            } else {
+                assertTrue(contains(box, bvh.nodeBounds(first)) && contains(box, bvh.nodeBounds(first + 1)),
+                        in + ": node " + node + " does not contain its children");
+            }
+        }
+        for (int p = 0; p < n; p++) {
+            assertEquals(1, seen[p], in + ": prim " + p + " occurrences in leaves");
+        }
+    }
+
     /** The box rounded outward to floats, as the hierarchy stores it. */
     static Aabb rounded(Aabb b) {
         return new Aabb(RayBox.down(b.minX()), RayBox.down(b.minY()), RayBox.down(b.minZ()), RayBox.up(b.maxX()),
