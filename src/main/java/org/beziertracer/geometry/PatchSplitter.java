@@ -41,9 +41,10 @@ public final class PatchSplitter {
     }
 
     /**
-     * The depth-first halving with all working memory allocated once per patch: level
+     * The depth-first halving with all working memory allocated at most once per patch: level
      * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
-     * the lower half's subtree uses deeper levels.
+     * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
+     * reaches it (a patch that stays whole allocates none).
      */
     private static final class Recursion {
         final int n, m, len;
@@ -61,8 +62,8 @@ public final class PatchSplitter {
             this.minSize = minSize;
             this.out = out;
             int levels = options.maxDepth() + 1;
-            lo = new double[levels][len];
-            hi = new double[levels][len];
+            lo = new double[levels][];
+            hi = new double[levels][];
         }
 
         void run(double[] net) {
@@ -77,6 +78,10 @@ public final class PatchSplitter {
                     || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
                 out.add(net, u0, u1, v0, v1);
                 return;
+            }
+            if (lo[depth + 1] == null) {
+                lo[depth + 1] = new double[len];
+                hi[depth + 1] = new double[len];
             }
             double[] a = lo[depth + 1], b = hi[depth + 1];
             if (polygonLength(net, n, m, true) >= polygonLength(net, n, m, false)) {
@@ -113,12 +118,12 @@ public final class PatchSplitter {
     private static final class Builder {
         final int len;
         double[] nets;
-        double[] boxes = new double[64];
+        double[] boxes = new double[8];
         int count;
 
         Builder(int len) {
             this.len = len;
-            this.nets = new double[16 * len];
+            this.nets = new double[2 * len];
         }
 
         void add(double[] net, double u0, double u1, double v0, double v1) {
