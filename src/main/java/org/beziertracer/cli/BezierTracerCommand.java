@@ -44,7 +44,11 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
      * embedding); never launches the app. Returns the exit code.
      */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
-        CommandLine cl = commandLine();
+        return run(commandLine(), args, out, err);
+    }
+
+    /** As {@link #run(String[], PrintWriter, PrintWriter)} on a command tree the caller set up. */
+    static int run(CommandLine cl, String[] args, PrintWriter out, PrintWriter err) {
         cl.setOut(out);
         cl.setErr(err);
         int code = execute(cl, args);
