@@ -1,13 +1,13 @@
 package org.beziertracer.bench;
 
 import java.util.List;
-import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Mode;
@@ -33,7 +33,7 @@ import org.openjdk.jmh.infra.Blackhole;
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 public class SceneBuildBench {
 
-    @Param({"teapots3200", "teapots32000", "body100000", "soup100000"})
+    @Param({"teapots3200", "teapots32000", "body100000", "soup100000", "grid10"})
     public String model;
 
     Scene scene;
@@ -62,10 +62,24 @@ public class SceneBuildBench {
             return Fixtures.teapots(Integer.parseInt(name.substring(7)));
         }
         if (name.equals("grid10")) {
-            return new Scene(List.of(Fixtures.heightField(new Random(10), 9, 9, 3, 0.15)));
+            return new Scene(List.of(wavyGrid(10)));
         }
         String kind = name.startsWith("body") ? "body" : "soup";
         return Scene.builder().patches(BigModels.of(kind, Integer.parseInt(name.substring(4)), 1)).build();
+    }
+
+    /**
+     * The wavy grid of issue [1 of 5]: {@code flatGrid(points, points)} lifted to
+     * {@code z = 0.5 sin(2.6x + 1.2y) cos(1.7y − 0.9x) + 0.25 sin(2xy)} (the perf branch's
+     * {@code wavy10} built-in).
+     */
+    static BezierPatch wavyGrid(int points) {
+        double[] net = Models.flatGrid(points, points).copyNet();
+        for (int k = 0; k < net.length; k += 3) {
+            double x = net[k], y = net[k + 1];
+            net[k + 2] = 0.5 * Math.sin(2.6 * x + 1.2 * y) * Math.cos(1.7 * y - 0.9 * x) + 0.25 * Math.sin(2.0 * x * y);
+        }
+        return new BezierPatch(points - 1, points - 1, net);
     }
 
     /** Split + BVH of the whole scene. */
