@@ -111,25 +111,28 @@ public final class SubPatchTable {
     /** Splits every patch. */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
         double minSize = minSize(patches, options);
+        // The pieces of split patches only: a patch that stays whole is copied from itself, so a
+        // model of a million small patches holds no second copy of its nets while it is built
         PatchPieces[] pieces = new PatchPieces[patches.size()];
-        // Patches split independently; large scenes use the common fork-join pool (build time only)
         boolean parallel = pieces.length >= PARALLEL_PATCHES;
         IntStream range = IntStream.range(0, pieces.length);
-        (parallel ? range.parallel() : range)
-                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options, minSize));
+        (parallel ? range.parallel() : range).forEach(k -> {
+            PatchPieces p = PatchSplitter.split(patches.get(k), options, minSize);
+            pieces[k] = p.count() > 1 ? p : null;
+        });
         int leaves = 0;
         long doubles = 0;
-        for (PatchPieces p : pieces) {
-            leaves += p.count();
-            doubles += regionLength(p);
+        for (int k = 0; k < pieces.length; k++) {
+            leaves += leafCount(pieces[k]);
+            doubles += regionLength(patches.get(k), pieces[k]);
         }
         SubPatchTable t = new SubPatchTable(patches, options, minSize, leaves, checkedLength(doubles));
         int s = 0, off = 0;
         for (int k = 0; k < pieces.length; k++) {
             t.firstOf[k] = s;
             t.patchNetOffset[k] = off;
-            s += pieces[k].count();
-            off += regionLength(pieces[k]);
+            s += leafCount(pieces[k]);
+            off += (int) regionLength(patches.get(k), pieces[k]);
         }
         t.firstOf[pieces.length] = s;
         IntStream fill = IntStream.range(0, pieces.length);
@@ -137,9 +140,18 @@ public final class SubPatchTable {
         return t;
     }
 
-    /** Doubles a patch takes in {@link #nets}: its whole net, and its leaves' nets when split. */
-    private static long regionLength(PatchPieces p) {
-        return p.count() == 1 ? p.netLength() : (long) p.netLength() * (1 + p.count());
+    /** Leaves of a patch: its pieces, or 1 for a patch that stays whole ({@code null}). */
+    private static int leafCount(PatchPieces p) {
+        return p == null ? 1 : p.count();
+    }
+
+    /**
+     * Doubles patch {@code patch} takes in {@link #nets}: its whole net, and its leaves' nets when
+     * it is split into {@code pieces} (null or one piece: whole).
+     */
+    private static long regionLength(BezierPatch patch, PatchPieces pieces) {
+        long net = 3L * patch.pointCount();
+        return pieces == null || pieces.count() == 1 ? net : net * (1 + pieces.count());
     }
 
     private static int checkedLength(long doubles) {
@@ -150,27 +162,31 @@ public final class SubPatchTable {
         return (int) doubles;
     }
 
-    /** Writes patch {@code k}'s region (its offsets already set) from its pieces. */
+    /** The parameter box of a whole patch. */
+    private static final double[] WHOLE = {0, 1, 0, 1};
+
+    /** Writes patch {@code k}'s region (its offsets already set) from its pieces (null: whole). */
     private void fill(int k, PatchPieces p) {
         BezierPatch patch = patches.get(k);
-        int n = p.degreeU(), m = p.degreeV(), len = p.netLength(), points = len / 3;
-        int off = patchNetOffset[k], s0 = firstOf[k];
+        int n = patch.degreeU(), m = patch.degreeV(), points = patch.pointCount(), len = 3 * points;
+        int off = patchNetOffset[k], s0 = firstOf[k], leaves = leafCount(p);
         patch.copyNetInto(nets, off);
         patchDegreeU[k] = n;
         patchDegreeV[k] = m;
         patchSquaredExtent[k] = PatchNormals.squaredExtent(nets, off, n, m);
-        if (p.count() > 1) {
-            System.arraycopy(p.nets(), 0, nets, off + len, p.count() * len);
+        if (leaves > 1) {
+            System.arraycopy(p.nets(), 0, nets, off + len, leaves * len);
         }
+        double[] pieceBoxes = leaves > 1 ? p.boxes() : WHOLE;
         double[] box = new double[6];
-        for (int i = 0; i < p.count(); i++) {
-            int s = s0 + i, o = p.count() == 1 ? off : off + (i + 1) * len;
+        for (int i = 0; i < leaves; i++) {
+            int s = s0 + i, o = leaves == 1 ? off : off + (i + 1) * len;
             parent[s] = k;
             degreeU[s] = (byte) n;
             degreeV[s] = (byte) m;
             netOffset[s] = o;
             for (int c = 0; c < 4; c++) {
-                boxes[4 * s + c] = (float) p.boxes()[4 * i + c];
+                boxes[4 * s + c] = (float) pieceBoxes[4 * i + c];
             }
             Bounds.ofPoints(nets, o, points, box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
@@ -203,7 +219,7 @@ public final class SubPatchTable {
         int oldOff = patchNetOffset[index];
         int oldLen = index + 1 < patchNetOffset.length ? patchNetOffset[index + 1] - oldOff : nets.length - oldOff;
         int dLeaves = p.count() - oldCount;
-        int dNets = checkedLength(regionLength(p)) - oldLen;
+        int dNets = checkedLength(regionLength(patch, p)) - oldLen;
         var list = new java.util.ArrayList<>(patches);
         list.set(index, patch);
         SubPatchTable t = new SubPatchTable(list, options, minSize, count + dLeaves,
@@ -264,8 +280,8 @@ public final class SubPatchTable {
      *
      * @param leaves exact for up to {@value #ESTIMATE_SAMPLE} patches, else the mean of that many
      *               evenly spaced patches, split for real, times the patch count
-     * @param bytes  the table's arrays ({@link #bytes()}) plus the pieces the patches are split
-     *               into first (nets and boxes, dropped once copied)
+     * @param bytes  the table's arrays ({@link #bytes()}) plus the pieces the split patches are
+     *               split into first (nets and boxes, dropped once copied)
      */
     public record Estimate(long leaves, long bytes) {}
 
@@ -281,8 +297,8 @@ public final class SubPatchTable {
         for (int k = 0; k < samples; k++) {
             PatchPieces p = PatchSplitter.split(patches.get((int) ((long) k * n / samples)), options, minSize);
             leaves += p.count();
-            regions += regionLength(p);
-            pieceDoubles += p.nets().length + p.boxes().length;
+            regions += regionLength(patches.get((int) ((long) k * n / samples)), p);
+            pieceDoubles += p.count() > 1 ? p.nets().length + p.boxes().length : 0;
         }
         double scale = (double) n / samples;
         long leafCount = (long) Math.ceil(leaves * scale);
