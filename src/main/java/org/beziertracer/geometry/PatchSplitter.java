@@ -20,8 +20,10 @@ import org.beziertracer.model.PatchDomain;
  * surface's parameters grown by {@link #TRIM_MARGIN} on each side, so that hits a solver reports
  * slightly outside a leaf are covered): a piece wholly outside is dropped, with all its
  * descendants; a piece wholly inside needs no trim test for its hits; a piece a trim curve crosses
- * is split on to the depth cap. Run at build time only
- * (allocates a few arrays per patch, none per halving).
+ * is split on to the depth cap. A piece whose control-box diagonal is below a minimum size is not
+ * halved either (the scene-relative stop that {@link SubPatchTable} sets, so that a model of many
+ * small patches is not split many-fold). Run at build time only (allocates a few arrays per patch,
+ * none per halving).
  */
 public final class PatchSplitter {
     private PatchSplitter() {}
@@ -38,15 +40,28 @@ public final class PatchSplitter {
     static final double WEIGHT_SPREAD = 1.2;
 
     public static PatchPieces split(BezierPatch patch, SplitOptions options) {
-        return split(patch, options, patch.trim() == null ? null : TrimCurves.of(patch.trim()));
+        return split(patch, options, 0);
+    }
+
+    /**
+     * As {@link #split(BezierPatch, SplitOptions)}, and a piece whose control-box diagonal is below
+     * {@code minSize} (model units) is not halved.
+     */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, double minSize) {
+        return split(patch, options, patch.trim() == null ? null : TrimCurves.of(patch.trim()), minSize);
     }
 
     /** As {@link #split(BezierPatch, SplitOptions)}, with the patch's trim curves built by the caller (or null). */
     public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim) {
+        return split(patch, options, trim, 0);
+    }
+
+    /** With the caller's trim curves (or null) and the scene-relative stop {@code minSize}. */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim, double minSize) {
         int n = patch.degreeU(), m = patch.degreeV();
         int dim = Patches.dim(patch);
         Builder out = new Builder((n + 1) * (m + 1), dim == 4, trim != null);
-        Recursion r = new Recursion(n, m, dim, options, out, trim, patch.domain());
+        Recursion r = new Recursion(n, m, dim, options, minSize, out, trim, patch.domain());
         r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED);
         return out.pieces(n, m);
     }
@@ -54,11 +69,13 @@ public final class PatchSplitter {
     /**
      * The depth-first halving with all working memory allocated once per patch: level
      * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
-     * the lower half's subtree uses deeper levels.
+     * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
+     * reaches it (a patch that stays whole allocates none).
      */
     private static final class Recursion {
         final int n, m, dim, points;
         final SplitOptions options;
+        final double minSize;
         final Builder out;
         final TrimCurves trim;
         final PatchDomain domain;
@@ -66,18 +83,20 @@ public final class PatchSplitter {
         final double[] box = new double[6];
         final double[] euclid, weights, trimScratch;
 
-        Recursion(int n, int m, int dim, SplitOptions options, Builder out, TrimCurves trim, PatchDomain domain) {
+        Recursion(int n, int m, int dim, SplitOptions options, double minSize, Builder out, TrimCurves trim,
+                  PatchDomain domain) {
             this.n = n;
             this.m = m;
             this.dim = dim;
             this.points = (n + 1) * (m + 1);
             this.options = options;
+            this.minSize = minSize;
             this.out = out;
             this.trim = trim;
             this.domain = domain;
             int levels = options.enabled() ? options.maxDepth() + 1 : 1;
-            lo = new double[levels][points * dim];
-            hi = new double[levels][points * dim];
+            lo = new double[levels][];
+            hi = new double[levels][];
             euclid = new double[3 * points];
             weights = new double[points];
             trimScratch = trim == null ? null : new double[TrimCurves.SCRATCH_LENGTH];
@@ -98,6 +117,10 @@ public final class PatchSplitter {
             if (done(xyz, depth, trimState)) {
                 out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
                 return;
+            }
+            if (lo[depth + 1] == null) {
+                lo[depth + 1] = new double[points * dim];
+                hi[depth + 1] = new double[points * dim];
             }
             double[] a = lo[depth + 1], b = hi[depth + 1];
             if (polygonLength(xyz, n, m, true) >= polygonLength(xyz, n, m, false)) {
@@ -128,6 +151,9 @@ public final class PatchSplitter {
             Bounds.ofPoints(xyz, 0, points, box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
             double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (size < minSize) {
+                return true;
+            }
             double tolerance = options.flatnessTolerance();
             if (NetMeasures.flatness(xyz, 0, n, m) > tolerance * size) {
                 return false;
@@ -173,7 +199,7 @@ public final class PatchSplitter {
         final int points;
         final boolean rational, trimmed;
         double[] nets, weights;
-        double[] boxes = new double[64];
+        double[] boxes = new double[8];
         boolean[] trimTest;
         int count;
 
@@ -181,9 +207,10 @@ public final class PatchSplitter {
             this.points = points;
             this.rational = rational;
             this.trimmed = trimmed;
-            this.nets = new double[16 * 3 * points];
-            this.weights = rational ? new double[16 * points] : null;
-            this.trimTest = trimmed ? new boolean[16] : null;
+            // room for two pieces: most patches of a big model stay whole or split once
+            this.nets = new double[2 * 3 * points];
+            this.weights = rational ? new double[2 * points] : null;
+            this.trimTest = trimmed ? new boolean[2] : null;
         }
 
         void add(double[] net, double[] w, double u0, double u1, double v0, double v1, boolean test) {

@@ -337,7 +337,7 @@ final class BezierClipper {
             u = Math.min(1, Math.max(0, u + (fx * cy - fy * cx) / det));
             v = Math.min(1, Math.max(0, v + (ey * cx - ex * cy) / det));
         }
-        double[] bx = tab.boxes;
+        float[] bx = tab.boxes;
         double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
         if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * u, v0 + (v1 - v0) * v, NEWTON_STEPS,
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
@@ -349,10 +349,7 @@ final class BezierClipper {
 
     /** Diagonal of the leaf's control box. */
     static double leafSize(SubPatchTable tab, int s) {
-        double[] bb = tab.bounds;
-        int o = 6 * s;
-        double ex = bb[o + 3] - bb[o], ey = bb[o + 4] - bb[o + 1], ez = bb[o + 5] - bb[o + 2];
-        return Math.sqrt(ex * ex + ey * ey + ez * ez);
+        return tab.diagonal[s];
     }
 
     /**

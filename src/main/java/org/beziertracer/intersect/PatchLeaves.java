@@ -135,10 +135,19 @@ abstract class PatchLeaves implements Leaves {
     }
 
     @Override
+    public final long bytes() { return table.bytes(); }
+
+    @Override
     public final int count() { return table.count; }
 
     @Override
-    public final double[] bounds() { return table.bounds; }
+    public final double[] bounds(int first, int n) { return table.bounds(first, n); }
+
+    @Override
+    public final int firstLeaf(int k) { return table.firstOf[k]; }
+
+    @Override
+    public final int leafCount(int k) { return table.countOf(k); }
 
     @Override
     public final int subPatchCount() { return table.count; }

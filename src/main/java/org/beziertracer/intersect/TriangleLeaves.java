@@ -97,10 +97,20 @@ final class TriangleLeaves implements Leaves {
     }
 
     @Override
+    public long bytes() { return mesh.bytes(); }
+
+    @Override
     public int count() { return mesh.count; }
 
     @Override
-    public double[] bounds() { return mesh.bounds; }
+    public double[] bounds(int first, int n) { return java.util.Arrays.copyOfRange(mesh.bounds, 6 * first, 6 * (first + n)); }
+
+    /** Triangles are grouped by patch, {@code 2·K²} each ({@link TriangleMesh}). */
+    @Override
+    public int firstLeaf(int k) { return k * leafCount(k); }
+
+    @Override
+    public int leafCount(int k) { return 2 * mesh.segments * mesh.segments; }
 
     @Override
     public int subPatchCount() { return patchCount; }

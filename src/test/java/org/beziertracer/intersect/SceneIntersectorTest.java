@@ -263,6 +263,37 @@ class SceneIntersectorTest {
         assertTrue(hits > 100, "hits " + hits);
     }
 
+    /** With one leaf a patch the leaf count cannot change: the edit refits the BVH (partial refit). */
+    @Test
+    void anEditThatKeepsTheLeafCountRefitsAndAnswersLikeARebuild() {
+        Random rnd = new Random(18);
+        Scene scene = wildScene(rnd, 40, 4);
+        IntersectOptions whole = IntersectOptions.defaults().withSplit(org.beziertracer.geometry.SplitOptions.wholePatches());
+        SceneIntersector si = SceneIntersector.build(scene, whole);
+        for (int edit = 0; edit < 5; edit++) {
+            int index = rnd.nextInt(scene.patchCount());
+            BezierPatch moved = si.scene().patches().get(index).withPoint(1, 1, 6 * rnd.nextGaussian(),
+                    6 * rnd.nextGaussian(), 6 * rnd.nextGaussian());
+            SceneIntersector edited = si.withPatch(index, moved);
+            assertEquals(si.subPatchCount(), edited.subPatchCount());
+            assertEquals(si.nodeCount(), edited.nodeCount(), "refitted, not rebuilt");
+            SceneIntersector rebuilt = SceneIntersector.build(edited.scene(), whole);
+            TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
+            Hit h1 = new Hit(), h2 = new Hit();
+            for (int r = 0; r < 500; r++) {
+                double[] ray = randomRay(rnd);
+                boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
+                boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
+                assertEquals(b, a, "edit " + edit + " ray " + r);
+                if (a) {
+                    assertEquals(h2.t, h1.t, 0, "edit " + edit + " ray " + r);
+                    assertEquals(h2.index, h1.index, "edit " + edit + " ray " + r);
+                }
+            }
+            si = edited;
+        }
+    }
+
     @Test
     void tinyAndHugeDirectionsGiveTheSameHitScaled() {
         Scene scene = org.beziertracer.model.io.Models.teapot();
