@@ -112,4 +112,83 @@ class RationalTrimmedSplitTest {
             assertTrue(covered, "(" + u + ", " + v + ") is in the region but in no kept piece");
         }
     }
+
+    /** Every public array of two tables, equal. */
+    private static void assertSameTable(SubPatchTable a, SubPatchTable b, String where) {
+        assertEquals(a.count, b.count, where);
+        assertArrayEquals(a.parent, b.parent, where);
+        assertArrayEquals(a.degreeU, b.degreeU, where);
+        assertArrayEquals(a.degreeV, b.degreeV, where);
+        assertArrayEquals(a.netOffset, b.netOffset, where);
+        assertArrayEquals(a.nets, b.nets, where);
+        assertArrayEquals(a.boxes, b.boxes, where);
+        assertArrayEquals(a.diagonal, b.diagonal, where);
+        assertArrayEquals(a.firstOf, b.firstOf, where);
+        assertArrayEquals(a.patchNetOffset, b.patchNetOffset, where);
+        assertArrayEquals(a.uniqueness, b.uniqueness, where);
+        assertArrayEquals(a.patchSquaredExtent, b.patchSquaredExtent, where);
+        assertArrayEquals(a.patchDim, b.patchDim, where);
+        assertArrayEquals(a.weights, b.weights, where);
+        assertArrayEquals(a.trimTest, b.trimTest, where);
+        assertArrayEquals(a.patchDomain, b.patchDomain, where);
+        for (int k = 0; k < a.patchCount(); k++) {
+            assertEquals(a.patchTrim[k] == null, b.patchTrim[k] == null, where + ", trim of patch " + k);
+        }
+    }
+
+    @Test
+    void editingSeveralPatchesOfAMixedSceneGivesTheTableOfTheEditedScene() {
+        // Polynomial, rational and trimmed patches; each edit moves one to three of them (rational
+        // ones stay rational with new weights, trimmed ones keep their region), in any order
+        Random rnd = new Random(65);
+        TrimRegion region = new TrimRegion(List.of(TrimShapes.circle(0.5, 0.5, 0.4, true)), List.of());
+        SplitOptions options = new SplitOptions(true, 0.05, 5);
+        for (int trial = 0; trial < 40; trial++) {
+            List<BezierPatch> patches = new java.util.ArrayList<>();
+            for (int k = 0; k < 6; k++) {
+                patches.add(mixed(rnd, k % 3, region));
+            }
+            SubPatchTable table = SubPatchTable.build(patches, options);
+            int edits = 1 + rnd.nextInt(3);
+            int[] indices = new int[edits];
+            List<BezierPatch> replacements = new java.util.ArrayList<>();
+            List<BezierPatch> edited = new java.util.ArrayList<>(patches);
+            for (int e = 0; e < edits; e++) {
+                indices[e] = rnd.nextInt(patches.size());
+                BezierPatch moved = mixed(rnd, indices[e] % 3, region);
+                replacements.add(moved);
+                edited.set(indices[e], moved);
+            }
+            SubPatchTable fresh = SubPatchTable.build(edited, options);
+            // the scene-relative stop (which an edit keeps from the old scene) stopped no piece
+            double smallest = java.util.Arrays.stream(fresh.diagonal).min().orElse(1);
+            assertTrue(Math.max(fresh.minSize(), table.minSize()) < smallest, "the stop plays no part here");
+            assertSameTable(fresh, table.withPatches(indices, replacements), "trial " + trial);
+        }
+    }
+
+    /** kind 0: polynomial; 1: rational; 2: trimmed by {@code region}; of random degrees up to 3. */
+    private static BezierPatch mixed(Random rnd, int kind, TrimRegion region) {
+        int n = 1 + rnd.nextInt(3), m = 1 + rnd.nextInt(3);
+        return switch (kind) {
+            case 0 -> new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 5));
+            case 1 -> randomRational(rnd, n, m);
+            default -> new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 5), null,
+                    new PatchDomain(0, 1, 0, 1, region), null);
+        };
+    }
+
+    @Test
+    void anEditThatMakesTheFirstRationalPatchGivesTheTableOfTheEditedScene() {
+        Random rnd = new Random(66);
+        List<BezierPatch> patches = List.of(new BezierPatch(2, 2, TestNets.randomNet(rnd, 2, 2, 3, 5)),
+                new BezierPatch(3, 2, TestNets.randomNet(rnd, 3, 2, 3, 5)));
+        SubPatchTable table = SubPatchTable.build(patches, SplitOptions.defaults());
+        assertNull(table.weights);
+        BezierPatch rational = randomRational(rnd, 2, 2);
+        SubPatchTable edited = table.withPatch(1, rational);
+        assertNotNull(edited.weights);
+        assertSameTable(SubPatchTable.build(List.of(patches.get(0), rational), SplitOptions.defaults()), edited,
+                "first rational patch");
+    }
 }
