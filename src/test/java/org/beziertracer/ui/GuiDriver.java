@@ -513,7 +513,24 @@ final class GuiDriver {
                 robot.delay(20);
             }
         }
-        fail("timed out waiting for " + what);
+        fail("timed out waiting for " + what + " after three clicks on " + comp.getClass().getSimpleName()
+                + "; windows: " + onEdt(GuiDriver::describeWindows) + "; screen: " + save(robot.createScreenCapture(
+                new Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize())), "click-dropped"));
+    }
+
+    /** The showing windows, their titles, modality, focus and bounds (for a failure message). */
+    static String describeWindows() {
+        StringBuilder sb = new StringBuilder();
+        for (Window w : Window.getWindows()) {
+            if (w.isShowing()) {
+                sb.append('[').append(w.getClass().getSimpleName());
+                if (w instanceof JDialog jd) {
+                    sb.append(" \"").append(jd.getTitle()).append("\" modal=").append(jd.isModal());
+                }
+                sb.append(" active=").append(w.isActive()).append(" at ").append(w.getBounds()).append("] ");
+            }
+        }
+        return sb.toString();
     }
 
     /** Closes the window without the unsaved-edits question. */
