@@ -42,7 +42,20 @@ final class SceneWriter {
         }
         root.add("materials", materials);
 
-        // Patches: one inline model per run of equal material
+        addIfAny(root, "models", models(scene));
+        addIfAny(root, "planes", planes(scene));
+        addIfAny(root, "spheres", spheres(scene));
+        addIfAny(root, "lights", lights(scene));
+        scene.camera().ifPresent(c -> root.add("camera", camera(c)));
+        root.add("render", settings(doc.settings()));
+
+        StringBuilder out = new StringBuilder();
+        print(root, "", out);
+        return out.append('\n').toString();
+    }
+
+    /** The patches: one inline model per run of equal material. */
+    private static JsonArray models(Scene scene) {
         JsonArray models = new JsonArray();
         for (int start = 0; start < scene.patchCount(); ) {
             int material = scene.patchMaterial(start);
@@ -57,8 +70,10 @@ final class SceneWriter {
             models.add(model);
             start = end;
         }
-        addIfAny(root, "models", models);
+        return models;
+    }
 
+    private static JsonArray planes(Scene scene) {
         JsonArray planes = new JsonArray();
         for (Plane p : scene.planes()) {
             JsonObject o = new JsonObject();
@@ -68,8 +83,10 @@ final class SceneWriter {
             o.add("uvScale", number(p.uvScale()));
             planes.add(o);
         }
-        addIfAny(root, "planes", planes);
+        return planes;
+    }
 
+    private static JsonArray spheres(Scene scene) {
         JsonArray spheres = new JsonArray();
         for (Sphere s : scene.spheres()) {
             JsonObject o = new JsonObject();
@@ -78,8 +95,10 @@ final class SceneWriter {
             o.addProperty("material", "m" + s.material());
             spheres.add(o);
         }
-        addIfAny(root, "spheres", spheres);
+        return spheres;
+    }
 
+    private static JsonArray lights(Scene scene) {
         JsonArray lights = new JsonArray();
         for (PointLight l : scene.lights()) {
             JsonObject o = new JsonObject();
@@ -87,14 +106,7 @@ final class SceneWriter {
             o.add("color", numbers(l.r(), l.g(), l.b()));
             lights.add(o);
         }
-        addIfAny(root, "lights", lights);
-
-        scene.camera().ifPresent(c -> root.add("camera", camera(c)));
-        root.add("render", settings(doc.settings()));
-
-        StringBuilder out = new StringBuilder();
-        print(root, "", out);
-        return out.append('\n').toString();
+        return lights;
     }
 
     private static void addIfAny(JsonObject root, String key, JsonArray array) {
