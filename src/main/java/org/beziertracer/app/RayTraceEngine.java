@@ -6,6 +6,7 @@ import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 
 import org.beziertracer.intersect.IntersectOptions;
@@ -13,7 +14,6 @@ import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
-import org.beziertracer.render.Camera;
 import org.beziertracer.render.Failures;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.FrameStats;
@@ -29,8 +29,9 @@ import org.beziertracer.render.RenderSession;
  * that arrive while a snapshot is being prepared replace each other and only the latest is
  * rendered.
  *
- * <p><b>Snapshots.</b> {@link SnapshotCache}: the same {@link SceneIntersector} for a camera or
- * shading change, {@link SceneIntersector#withPatch} for a dragged point, a full build otherwise.
+ * <p><b>Snapshots.</b> {@link SnapshotCache}: the same {@link SceneIntersector} for a camera, light
+ * or shading change (the request's lights go into the job, not the scene),
+ * {@link SceneIntersector#withPatches} for a dragged point, a full build otherwise.
  *
  * <p><b>Sink.</b> Tiles of the newest generation are copied into the request's {@link Picture} on
  * the worker threads; nothing here touches a window.
@@ -46,14 +47,16 @@ public final class RayTraceEngine implements PictureEngine {
         t.setDaemon(true);
         return t;
     });
-    private final Coalescing<RenderRequest> requests = new Coalescing<>(prep, this::start, this::fail);
+    private final Coalescing<Numbered> requests = new Coalescing<>(prep, this::start, this::fail);
     private final SnapshotCache snapshots = new SnapshotCache();
     private volatile Consumer<RenderStatus> listener = s -> {};
     private volatile Consumer<String> errors = m -> {};
     private volatile Picture target;
-    private volatile RenderRequest current;
+    private volatile Numbered current;
     private volatile double prepMillis;
-    private volatile boolean frameDone = true;
+    // Requests numbered as submitted; busy until the newest one's frame is done (or failed)
+    private final AtomicLong submitted = new AtomicLong();
+    private final AtomicLong settled = new AtomicLong();
     // BVH speed-up measurement
     private volatile TimingKey timedKey;
     private volatile double millisBvhOn, millisBvhOff;
@@ -68,48 +71,66 @@ public final class RayTraceEngine implements PictureEngine {
     @Override
     public void onError(Consumer<String> l) { errors = l; }
 
+    /** A request and its place in the order of submission. */
+    private record Numbered(long number, RenderRequest request) {}
+
     private void fail(Throwable e) {
-        frameDone = true;
         errors.accept(Failures.describe(e));
+    }
+
+    /** Request {@code number} is done (its last pass shown) or failed: so are all before it. */
+    private void settle(long number) {
+        settled.accumulateAndGet(number, Math::max);
     }
 
     @Override
     public void submit(RenderRequest request) {
         session.cancel();
-        frameDone = false;
-        requests.submit(request);
+        requests.submit(new Numbered(submitted.incrementAndGet(), request));
     }
 
+    /**
+     * True until the newest request's frame is done or has failed. Requests are numbered, so a late
+     * outcome of an older one (its last pass, or its failure, arriving after a newer one started)
+     * cannot make the engine look idle.
+     */
     @Override
     public boolean busy() {
-        return requests.busy() || !frameDone;
+        return settled.get() < submitted.get();
     }
 
-    private void start(RenderRequest r) {
-        long t0 = System.nanoTime();
-        SceneIntersector snapshot = snapshots.prepare(r.scene(), r.light(), r.intersect());
-        prepMillis = (System.nanoTime() - t0) / 1e6;
-        RenderJob job = new RenderJob(snapshot, new Camera(r.camera()), r.settings(), r.options());
-        session.cancel();
-        target = r.target();
-        current = r;
-        if (!requests.hasPending()) {
-            session.start(job);
-            session.completion().whenComplete((result, e) -> {
-                Throwable cause = e instanceof CompletionException && e.getCause() != null ? e.getCause() : e;
-                if (cause != null && !(cause instanceof CancellationException)) {
-                    fail(cause);
-                }
-            });
+    private void start(Numbered n) {
+        try {
+            RenderRequest r = n.request();
+            long t0 = System.nanoTime();
+            SceneIntersector snapshot = snapshots.prepare(r.scene(), r.intersect());
+            prepMillis = (System.nanoTime() - t0) / 1e6;
+            RenderJob job = r.job(snapshot);
+            session.cancel();
+            target = r.target();
+            current = n;
+            if (!requests.hasPending()) {
+                session.start(job);
+                session.completion().whenComplete((result, e) -> {
+                    Throwable cause = e instanceof CompletionException && e.getCause() != null ? e.getCause() : e;
+                    if (cause != null && !(cause instanceof CancellationException)) {
+                        settle(n.number());
+                        fail(cause);
+                    }
+                });
+            }
+        } catch (RuntimeException | Error e) {
+            settle(n.number());
+            throw e; // reported by the coalescing worker (fail)
         }
     }
 
     /** What must match for two frame times to be comparable: everything but the BVH switch. */
-    private record TimingKey(Scene scene, LightPlacement light, CameraSpec camera, RenderSettings settings,
-                             IntersectOptions intersect) {
+    private record TimingKey(Scene scene, java.util.List<org.beziertracer.model.PointLight> lights, CameraSpec camera,
+                             RenderSettings settings, IntersectOptions intersect) {
         static TimingKey of(RenderRequest r) {
             RenderSettings s = r.settings();
-            return new TimingKey(r.scene(), r.light(), r.camera(), new RenderSettings(s.width(), s.height(), s.spp(),
+            return new TimingKey(r.scene(), r.lights(), r.camera(), new RenderSettings(s.width(), s.height(), s.spp(),
                     s.sampler(), s.method(), true, s.shading(), s.checker(), s.shadows(), s.maxDepth()),
                     r.intersect().withBvh(true));
         }
@@ -126,10 +147,11 @@ public final class RayTraceEngine implements PictureEngine {
 
         @Override
         public void passDone(int generation, int pass, int passCount, FrameStats stats) {
-            RenderRequest r = current;
-            if (generation != session.generation() || r == null) {
+            Numbered n = current;
+            if (generation != session.generation() || n == null) {
                 return;
             }
+            RenderRequest r = n.request();
             boolean bvh = r.intersect().bvh();
             if (pass == passCount - 1) {
                 TimingKey key = TimingKey.of(r);
@@ -143,12 +165,14 @@ public final class RayTraceEngine implements PictureEngine {
                 } else {
                     millisBvhOff = stats.millis();
                 }
-                frameDone = !requests.hasPending();
             }
             double speedUp = Objects.equals(TimingKey.of(r), timedKey) && millisBvhOn > 0 && millisBvhOff > 0
                     ? millisBvhOff / millisBvhOn : 0;
             listener.accept(new RenderStatus(pass + 1, passCount, stats.millis(), stats.mraysPerSecond(),
                     r.settings().spp(), r.intersect().method(), bvh, speedUp, prepMillis, r.intersect().tessellate()));
+            if (pass == passCount - 1) {
+                settle(n.number()); // after the status, so a listener hears the last pass before the engine is idle
+            }
         }
     }
 

@@ -3,7 +3,6 @@ package org.beziertracer.intersect;
 import java.util.Locale;
 
 import org.beziertracer.accel.Bvh;
-import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
 
@@ -35,12 +34,13 @@ public final class HeapBudget {
         var patches = scene.patches();
         if (options.tessellated()) {
             long triangles = 2L * options.tessellate() * options.tessellate() * patches.size();
-            return TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + Bvh.estimateBytes(triangles);
+            return TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + 6 * 8 * triangles
+                    + Bvh.estimateBytes(triangles);
         }
-        SplitOptions split = options.effectiveSplit();
-        long subPatches = SubPatchTable.estimateCount(patches, split);
-        long solverBytes = options.method() == Method.NEWTON ? 4L * NewtonLeafRecords.STRIDE * subPatches : 0;
-        return SubPatchTable.estimateBytes(patches, subPatches) + Bvh.estimateBytes(subPatches) + solverBytes;
+        SubPatchTable.Estimate table = SubPatchTable.estimate(patches, options.effectiveSplit());
+        long solverBytes = options.method() == Method.NEWTON ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
+        // The table, the leaves' boxes handed to the BVH build, the build itself and a solver's per-leaf records
+        return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + solverBytes;
     }
 
     /**

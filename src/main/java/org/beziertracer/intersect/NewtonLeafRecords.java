@@ -44,7 +44,7 @@ final class NewtonLeafRecords {
         double[] frame = new double[STRIDE];
         for (int s = 0; s < table.count; s++) {
             frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s], frame, 0);
-            double[] box = table.boxes;
+            float[] box = table.boxes;
             store(frame, box[4 * s], box[4 * s + 1] - box[4 * s], box[4 * s + 2], box[4 * s + 3] - box[4 * s + 2],
                     rec, STRIDE * s);
         }

@@ -1,6 +1,6 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
@@ -184,7 +184,7 @@ final class NewtonSolver {
             }
             w[TMIN] = tMin;
             w[TMAX] = bestT;
-            if (iterate(ctx, tab.patchNets, tab.patchNetOffset[k], tab.patchDegreeU[k], tab.patchDegreeV[k],
+            if (iterate(ctx, tab.patchNets, tab.patchNetOffset[k], tab.patchDegreeU[k], tab.patchDegreeV[k], tab.patchDim[k],
                     u0 + su * du, v0 + sv * dv, w, tolerance) == CONVERGED) {
                 double u = ctx.rootU, v = ctx.rootV;
                 if (u >= uLo && u <= uHi && v >= vLo && v <= vHi && ctx.rootT > tMin && ctx.rootT < bestT) {
@@ -238,12 +238,12 @@ final class NewtonSolver {
      */
 
 
-    static int iterate(TraceContext ctx, double[] net, int off, int n, int m, double u, double v, double[] w,
-                       double tolerance) {
+    static int iterate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v,
+                       double[] w, double tolerance) {
         double[] e = ctx.eval;
         double previous = Double.POSITIVE_INFINITY;
         for (int step = 0; step <= MAX_STEPS; step++) {
-            DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
+            RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
             double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
             double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz, f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
             ctx.rootU = u;

@@ -200,8 +200,9 @@ public final class RenderSession implements AutoCloseable {
     private void work(RenderState st, PassPlan.Pass pass, List<int[]> tiles, AtomicInteger next, boolean display,
                       CountDownLatch latch) {
         activeWorkers.incrementAndGet();
+        RenderWorker w = null;
         try {
-            RenderWorker w = ((WorkerThread) Thread.currentThread()).worker(st.job);
+            w = ((WorkerThread) Thread.currentThread()).worker(st.job);
             for (int t = next.getAndIncrement(); t < tiles.size() && !st.isStale(); t = next.getAndIncrement()) {
                 int[] tile = tiles.get(t);
                 if (!w.renderTile(st, pass, tile[0], tile[1], tile[2], tile[3], display)) {
@@ -212,6 +213,9 @@ public final class RenderSession implements AutoCloseable {
         } catch (Throwable e) {
             st.failure = e;
         } finally {
+            if (w != null) {
+                w.release();
+            }
             activeWorkers.decrementAndGet();
             latch.countDown();
         }

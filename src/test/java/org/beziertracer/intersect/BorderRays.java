@@ -1,5 +1,8 @@
 package org.beziertracer.intersect;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import java.util.Random;
 
 import org.beziertracer.geometry.DeCasteljau;
@@ -13,9 +16,11 @@ import org.beziertracer.model.Scene;
  * The dense border ("crack") test of any model: rays aimed at points of every border two patches
  * share, along the normal tilted at random, from twice the model's size away (so from the side
  * the normal points away from: the outside of the teapot, whose normals point inward). A ray may hit something nearer; it must not fall through, and it must not hit beyond
- * the border point it was aimed at.
+ * the border point it was aimed at. {@link BorderCrackTest} runs it for every method; editing
+ * tests run {@link #assertNoneFallThrough} on edited models (a welded point dragged must leave no
+ * crack).
  */
-final class BorderRays {
+public final class BorderRays {
 
     /** Counts of one run, and the first failure for the message. */
     static final class Result {
@@ -30,6 +35,17 @@ final class BorderRays {
     }
 
     private BorderRays() {}
+
+    /**
+     * Three rays at each of 39 points of every border {@code scene}'s patches share: none may fall
+     * through or hit beyond the border point aimed at, and most must reach it.
+     */
+    public static void assertNoneFallThrough(Scene scene, Method method) {
+        Result r = shoot(scene, IntersectOptions.defaults().withMethod(method), 3, 4);
+        assertTrue(r.sharedBorders > 0, "no shared borders found");
+        assertEquals(0, r.misses + r.beyond, method + ": " + r);
+        assertTrue(r.onBorder > r.rays / 2, "most rays should reach the border point itself: " + r.onBorder + " of " + r.rays);
+    }
 
     /** Shoots {@code perPoint} rays at each of 39 points of every shared border of {@code scene}. */
     static Result shoot(Scene scene, IntersectOptions options, int perPoint, long seed) {

@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 
 import org.beziertracer.app.AppModel;
 import org.beziertracer.app.AppPreferences;
+import org.beziertracer.app.MemoryPreferences;
 import org.beziertracer.model.BezierPatch;
 
 /**
@@ -154,6 +155,11 @@ final class GuiDriver {
         robot.waitForIdle();
     }
 
+    /** Clicks {@code field} (again, if a click is dropped) until it has the keyboard focus. */
+    void focus(Component field) {
+        clickUntil(field, "the keyboard focus in " + field.getName(), field::isFocusOwner);
+    }
+
     /** Clicks the tool {@code tool.<id>} in the toolbox. */
     void tool(String id) {
         click(find("tool." + id));
@@ -161,11 +167,18 @@ final class GuiDriver {
 
     /** Opens the menu called {@code title} in the menu bar and clicks its item {@code menu.<id>}, with the mouse. */
     void menu(String title, String id) {
+        menuPath(title, id.startsWith("menu.") ? id.substring("menu.".length()) : id);
+    }
+
+    /**
+     * Opens menu {@code title}, then each submenu {@code menu.<id>} of {@code path} in turn, and clicks
+     * the last item, with the mouse.
+     */
+    void menuPath(String title, String... path) {
         JMenu m = onEdt(() -> {
             for (int k = 0; k < frame.getJMenuBar().getMenuCount(); k++) {
-                JMenu c = frame.getJMenuBar().getMenu(k);
-                if (title.equals(c.getText())) {
-                    return c;
+                if (title.equals(frame.getJMenuBar().getMenu(k).getText())) {
+                    return frame.getJMenuBar().getMenu(k);
                 }
             }
             return null;
@@ -173,21 +186,34 @@ final class GuiDriver {
         if (m == null) {
             fail("no menu " + title);
         }
-        click(m);
-        String name = id.startsWith("menu.") ? id : "menu." + id;
-        JMenuItem item = onEdt(() -> {
-            for (Component c : m.getMenuComponents()) {
-                if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
-                    return mi;
+        JMenu current = m;
+        for (int p = 0; p < path.length; p++) {
+            String name = "menu." + path[p];
+            JMenu in = current;
+            JMenuItem item = onEdt(() -> {
+                for (Component c : in.getMenuComponents()) {
+                    if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
+                        return mi;
+                    }
                 }
+                return null;
+            });
+            if (item == null) {
+                fail("no item " + name + " in " + onEdt(in::getText));
             }
-            return null;
-        });
-        if (item == null) {
-            fail("no item " + name + " in menu " + title);
+            if (p == 0) {
+                clickUntil(m, title + " → " + name + " showing", item::isShowing);
+            } else {
+                waitFor(name + " showing", item::isShowing);
+            }
+            if (item instanceof JMenu sub) {
+                click(item);
+                waitFor(name + " open", sub::isPopupMenuVisible);
+                current = sub;
+            } else {
+                clickUntil(item, name + " chosen", () -> !item.isShowing());
+            }
         }
-        waitFor(title + " → " + name + " showing", item::isShowing);
-        click(item);
     }
 
     /** The visible dialog that holds a {@code type} (a file chooser, an option pane), waiting up to 10 s. */
@@ -233,11 +259,11 @@ final class GuiDriver {
     void chooseFile(Path file) {
         JDialog dialog = dialogWith(JFileChooser.class);
         JTextField name = onEdt(() -> descendant(dialog, JTextField.class));
-        click(name);
+        focus(name);
         key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
         key(KeyEvent.VK_DELETE);
         type(file.toString());
-        assertEquals(file.toString(), onEdt(() -> name.getText()), "the path was typed");
+        waitFor("the path typed into the file chooser", () -> file.toString().equals(name.getText()));
         key(KeyEvent.VK_ENTER);
         waitFor("the file chooser to close", () -> !dialog.isShowing());
     }
@@ -270,11 +296,7 @@ final class GuiDriver {
                     default -> throw new IllegalArgumentException("cannot type '" + c + "'");
                 };
             }
-            if (shift) {
-                key(code, KeyEvent.VK_SHIFT);
-            } else {
-                key(code);
-            }
+            press(code, shift ? new int[] {KeyEvent.VK_SHIFT} : new int[0]);
         }
     }
 
@@ -317,7 +339,68 @@ final class GuiDriver {
         robot.waitForIdle();
     }
 
+    /** {@link #drag} with {@code keys} (e.g. {@code VK_SHIFT}) held down from before the press to after the release. */
+    void dragHolding(Point a, Point b, int steps, int... keys) {
+        for (int k : keys) {
+            robot.keyPress(k);
+        }
+        try {
+            drag(a, b, steps);
+        } finally {
+            for (int k = keys.length - 1; k >= 0; k--) {
+                robot.keyRelease(keys[k]);
+            }
+            robot.waitForIdle();
+        }
+    }
+
+    /** Clicks the left button at {@code p} (screen) with {@code keys} held. */
+    void clickAt(Point p, int... keys) {
+        robot.mouseMove(p.x, p.y);
+        robot.waitForIdle();
+        for (int k : keys) {
+            robot.keyPress(k);
+        }
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        for (int k = keys.length - 1; k >= 0; k--) {
+            robot.keyRelease(keys[k]);
+        }
+        robot.waitForIdle();
+    }
+
+    /** Clicks the text field, replaces its text by {@code text} with the keyboard and presses Enter. */
+    void typeInto(JTextField field, String text) {
+        focus(field);
+        key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
+        type(text);
+        waitFor("the text typed into " + field.getName(), () -> text.equals(field.getText()));
+        key(KeyEvent.VK_ENTER);
+    }
+
+    /** Moves the mouse out of the way (to a corner of the picture), so no handle is hovered. */
+    void mouseAway() {
+        Point away = screenOf(3, 3);
+        robot.mouseMove(away.x, away.y);
+        robot.waitForIdle();
+    }
+
+    /** Gives the picture the keyboard focus (arrow keys, X/Y/Z, Escape go to it). */
+    void focusPicture() {
+        onEdt(() -> frame.renderPanel().requestFocusInWindow());
+        waitFor("the picture to have the focus", () -> frame.renderPanel().isFocusOwner());
+    }
+
     void key(int code, int... modifiers) {
+        press(code, modifiers);
+        robot.waitForIdle();
+    }
+
+    /**
+     * Presses and releases a key without waiting for the event thread: typing waits once for the
+     * text instead (Robot.waitForIdle after each key cost seconds a key in a file chooser on Xvfb).
+     */
+    private void press(int code, int... modifiers) {
         for (int m : modifiers) {
             robot.keyPress(m);
         }
@@ -326,7 +409,6 @@ final class GuiDriver {
         for (int k = modifiers.length - 1; k >= 0; k--) {
             robot.keyRelease(modifiers[k]);
         }
-        robot.waitForIdle();
     }
 
     void ctrl(int code) { key(code, KeyEvent.VK_CONTROL); }
@@ -401,6 +483,59 @@ final class GuiDriver {
             m[k] /= n;
         }
         return m;
+    }
+
+    /**
+     * Set-up plumbing: closes any dialog or menu a failed test left open (a modal dialog would
+     * otherwise swallow every later test's input) and brings the main window to the front.
+     */
+    void dismissStrayWindows() {
+        onEdt(() -> {
+            javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath();
+            for (Window w : Window.getWindows()) {
+                if (w != frame && w.isShowing() && w.getOwner() != null) {
+                    w.dispose();
+                }
+            }
+            frame.toFront();
+        });
+        robot.waitForIdle();
+    }
+
+    /**
+     * Clicks {@code comp} until {@code done} holds: a real X server may drop a click that lands
+     * while a new window is still being mapped (seen on a loaded CI machine), so the click is
+     * repeated, up to three times, 5 s apart.
+     */
+    void clickUntil(Component comp, String what, BooleanSupplier done) {
+        for (int attempt = 0; attempt < 3; attempt++) {
+            click(comp);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (System.nanoTime() < end) {
+                if (onEdt(done::getAsBoolean)) {
+                    return;
+                }
+                robot.delay(20);
+            }
+        }
+        fail("timed out waiting for " + what + " after three clicks on " + comp.getClass().getSimpleName()
+                + "; windows: " + onEdt(GuiDriver::describeWindows) + "; screen: " + save(robot.createScreenCapture(
+                new Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize())), "click-dropped"));
+    }
+
+    /** The showing windows, their titles, modality, focus and bounds (for a failure message). */
+    static String describeWindows() {
+        StringBuilder sb = new StringBuilder();
+        for (Window w : Window.getWindows()) {
+            if (w.isShowing()) {
+                sb.append('[').append(w.getClass().getSimpleName());
+                if (w instanceof JDialog jd) {
+                    sb.append(" \"").append(jd.getTitle()).append("\" modal=").append(jd.isModal());
+                }
+                sb.append(" active=").append(w.isActive()).append(" at ").append(w.getBounds()).append("] ");
+            }
+        }
+        return sb.toString();
     }
 
     /** Closes the window without the unsaved-edits question. */

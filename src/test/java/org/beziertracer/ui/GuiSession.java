@@ -24,6 +24,7 @@ abstract class GuiSession {
     @AfterAll
     static void stop() {
         if (d != null) {
+            d.dismissStrayWindows();
             d.close();
             d = null;
         }
@@ -31,6 +32,7 @@ abstract class GuiSession {
 
     @BeforeEach
     void reset() {
+        d.dismissStrayWindows();
         defaultPatch();
     }
 
@@ -43,6 +45,18 @@ abstract class GuiSession {
             d.app.files().openBuiltIn("patch");
         });
         d.settle();
+    }
+
+    /** The main window's title. */
+    static String title() {
+        return GuiDriver.onEdt(() -> d.frame.getTitle());
+    }
+
+    /** The picture once settled, with the mouse out of the way (no hovered handle). */
+    static java.awt.image.BufferedImage shot() {
+        d.mouseAway();
+        d.settle();
+        return d.capturePanel();
     }
 
     /** A box in the middle of the default patch, relative to the panel (screen pixels). */

@@ -40,6 +40,12 @@ public final class BuiltIns {
     public static final List<BuiltIn> ALL = List.of(
             model("patch", "the default bicubic patch", Models::patch),
             resource("teapot", "the Utah teapot (32 bicubic patches)", "models/teapot.bpt"),
+            resource("teacup", "Newell's teacup (26 bicubic patches)", "models/teacup.bpt"),
+            resource("teaspoon", "Newell's teaspoon (16 bicubic patches)", "models/teaspoon.bpt"),
+            model("sphere", "the unit sphere, one rational biquadratic B-spline (8 rational pieces)", Models::sphere),
+            model("torus", "a torus, one rational biquadratic B-spline (16 rational pieces)", Models::torus),
+            model("trimmed-plate", "a curved plate trimmed by a rounded square, with three holes",
+                    Models::trimmedPlate),
             resource("teapot-room", "the teapot on a checkered floor, with a mirror and a glass sphere",
                     "scenes/teapot-room.json"));
 

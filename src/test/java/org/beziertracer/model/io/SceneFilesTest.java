@@ -31,8 +31,8 @@ class SceneFilesTest {
     }
 
     @Test
-    void theBuiltInNamesArePatchTeapotAndTeapotRoom() {
-        assertEquals(List.of("patch", "teapot", "teapot-room"), BuiltIns.names());
+    void theBuiltInNamesAreTheModelsThenTheTeapotRoom() {
+        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "teapot-room"), BuiltIns.names());
     }
 
     @Test
