@@ -197,14 +197,16 @@ final class NewtonSolver {
                 }
             }
         }
-        if (!found) {
-            return false;
-        }
+        return found && root(ctx, k, bestT, bestU, bestV);
+    }
+
+    /** The nearest root found on patch {@code k} into {@code ctx} (parameters clamped to the patch); true. */
+    private static boolean root(TraceContext ctx, int k, double t, double u, double v) {
         // ctx.eval holds the last attempt's last evaluation: reusable only if it is at the root
-        ctx.evalPatch = ctx.evalU == bestU && ctx.evalV == bestV ? k : -1;
-        ctx.rootT = bestT;
-        ctx.rootU = Math.min(1, Math.max(0, bestU));
-        ctx.rootV = Math.min(1, Math.max(0, bestV));
+        ctx.evalPatch = ctx.evalU == u && ctx.evalV == v ? k : -1;
+        ctx.rootT = t;
+        ctx.rootU = Math.min(1, Math.max(0, u));
+        ctx.rootV = Math.min(1, Math.max(0, v));
         return true;
     }
 
