@@ -1,6 +1,5 @@
 package org.beziertracer.app;
 
-import java.util.Objects;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -104,7 +103,7 @@ public final class DifferenceModel {
                 () -> n.number() != newest.get());
         if (mask != null) {
             deliver(() -> {
-                if (n.number() == newest.get() && Objects.equals(wanted, r)) {
+                if (n.number() == newest.get()) {
                     current = mask;
                     onChange.run();
                 }
