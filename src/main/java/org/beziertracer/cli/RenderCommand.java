@@ -139,22 +139,7 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        if (output == null && pixel == null) {
-            throw new IllegalArgumentException("missing -o OUT.png");
-        }
-        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
-            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
-        }
-        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new IllegalArgumentException(output + ": the output must be a .png file");
-        }
-        if (repeat < 1 || repeat > MAX_REPEAT) {
-            throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
-        }
-        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
-            throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
-                    + ", got " + tessellate);
-        }
+        checkArguments();
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
@@ -204,6 +189,26 @@ final class RenderCommand implements Callable<Integer> {
             out.flush();
         }
         return 0;
+    }
+
+    /** The options' own checks, before anything is read: one line each. */
+    private void checkArguments() {
+        if (output == null && pixel == null) {
+            throw new IllegalArgumentException("missing -o OUT.png");
+        }
+        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
+            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
+        }
+        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+            throw new IllegalArgumentException(output + ": the output must be a .png file");
+        }
+        if (repeat < 1 || repeat > MAX_REPEAT) {
+            throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
+        }
+        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
+                    + ", got " + tessellate);
+        }
     }
 
     /** The same view rendered with the method of {@code --difference-to}. */

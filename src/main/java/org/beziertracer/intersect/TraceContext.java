@@ -93,6 +93,8 @@ public final class TraceContext {
     boolean leafRational;
     /** The iterate with which the last diverged Newton solve left its box. */
     double escapeU, escapeV;
+    /** Newton: the residuals (distances to the ray's two planes) at the last evaluated iterate. */
+    double residual1, residual2;
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
