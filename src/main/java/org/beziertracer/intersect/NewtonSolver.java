@@ -150,6 +150,9 @@ final class NewtonSolver {
         double v0 = rec[o + NewtonLeafRecords.V0], dv = rec[o + NewtonLeafRecords.DV];
         double[] w = ctx.newton;
         setDomain(w, u0, du, v0, dv);
+        // the overlapped domain itself: quarter iterates stay in it (not clipped to the patch,
+        // so that one heading for a root near the patch's border may step across it on its way)
+        double cuLo = w[ULO], cuHi = w[UHI], cvLo = w[VLO], cvHi = w[VHI];
         double uLo = Math.max(-PATCH_SLACK, w[ULO]), uHi = Math.min(1 + PATCH_SLACK, w[UHI]);
         double vLo = Math.max(-PATCH_SLACK, w[VLO]), vHi = Math.min(1 + PATCH_SLACK, w[VHI]);
         // roots are accepted in the leaf's overlapped domain; iterates may also roam the patch
@@ -173,7 +176,7 @@ final class NewtonSolver {
             } else if (attempt > 1 && !found && quarter < QUARTERS.length) {
                 su = QUARTERS[quarter++];
                 sv = QUARTERS[quarter++];
-                confine(w, uLo, uHi, vLo, vHi); // a quarter start that leaves the leaf fails fast
+                confine(w, cuLo, cuHi, cvLo, cvHi); // a quarter start that leaves the overlap fails fast
             } else if (attempt > 1 && found && reflection < 2) {
                 double ru = (bestU - u0) / du, rv = (bestV - v0) / dv;
                 su = Math.min(1, Math.max(0, reflection == 0 ? 2 * s0 - ru : 1 - ru));
