@@ -27,7 +27,8 @@ import org.beziertracer.geometry.SubPatchTable;
  * {@link RootUniqueness}, with the record's balls) fails: the ray grazes it. There the leaf's
  * centre is tried as a second start and, while no root is found, its four quarter points
  * ({@link #QUARTERS}; a grazing ray can leave the parallelogram's start outside the basin of every
- * root), their iterates confined to the overlapped domain so that a start with no root nearby
+ * root), their iterates confined to the overlapped domain (not clipped to the patch: an iterate
+ * heading for a root near the patch's border may overshoot it by a little) so that a start with no root nearby
  * fails fast; a root found may be the farther of a fold's two, so the found root's reflections
  * through the first start and through the centre are tried as well, and the nearest root is kept
  * (an attempt stops early once its t passes the nearest root so far). Nothing but
