@@ -65,7 +65,7 @@ class InfoCommandTest {
     void aMissingFileIsOneLineWithExitCodeOne() {
         Run r = run("info", "no-such-model.obj");
         assertEquals(1, r.code());
-        assertEquals("beziertracer info: no-such-model.obj: no such file (and not a built-in model: patch, teapot)",
+        assertEquals("beziertracer info: no-such-model.obj: no such file (and not a built-in model: patch, teapot, wavy2..wavy16, curved)",
                 r.err().strip());
     }
 

@@ -25,6 +25,8 @@ import org.beziertracer.model.Scene;
  *   <li>{@code teapot} — the 32-patch Utah teapot as built into Sunflow (z-up, bounding box
  *       {@code x[-120,141] y[-80,80] z[0,120]}), read from the classpath resource
  *       {@value #TEAPOT_RESOURCE}; see {@code shared/models/README.md} for its provenance.</li>
+ *   <li>{@code wavy2} … {@code wavy16}, {@code curved} — generated benchmark surfaces
+ *       ({@link GeneratedModels}).</li>
  * </ul>
  * Otherwise {@link #load(String)} takes a path and picks the reader by extension
  * ({@code .bpt} or {@code .obj}, any case). All failures are one-line
@@ -37,7 +39,7 @@ public final class Models {
     public static final String TEAPOT_RESOURCE = "/org/beziertracer/models/teapot.bpt";
 
     /** Names accepted by {@link #builtIn(String)}, in the order shown to users. */
-    public static final List<String> NAMES = List.of("patch", "teapot");
+    public static final List<String> NAMES = List.of("patch", "teapot", "wavy2..wavy16", "curved");
 
     /** Half the side of the square spanned by {@link #flatGrid(int, int)}. */
     public static final double GRID_HALF_SIZE = 1.5;
@@ -105,7 +107,7 @@ public final class Models {
         return switch (name.toLowerCase(Locale.ROOT)) {
             case "patch" -> patch();
             case "teapot" -> teapot();
-            default -> null;
+            default -> GeneratedModels.builtIn(name.toLowerCase(Locale.ROOT));
         };
     }
 
