@@ -5,8 +5,10 @@
  * accel → intersect → render → ui / cli}. See {@code docs/architecture.md}.
  *
  * <p>The hot path, in reading order (one ray):
- * {@code RenderWorker.renderTile → Camera.generateRay → SceneIntersector.closestHit →
- * Bvh.traverse → BezierClipper.intersect → SurfacePoint.evaluate → PhongShader.shade →
+ * {@code RenderWorker.renderTile → PixelSampler.offset → Camera.generateRay →
+ * WhittedTracer.trace → SceneIntersector.closestHit → Bvh.closestHit → PatchLeaves.intersect →
+ * ClippingLeaves.solve → BezierClipper.intersect → SceneIntersector.surfacePoint →
+ * PatchLeaves.surfacePoint → WhittedTracer.shade (→ SceneIntersector.occluded per light) →
  * Film.addSample}
  */
 package org.beziertracer;

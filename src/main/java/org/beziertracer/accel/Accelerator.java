@@ -8,7 +8,8 @@ import org.beziertracer.math.Aabb;
  * <p>Implementations: {@link Bvh} (binned-SAH hierarchy) and {@link FlatList} (every box tested,
  * for the "sub-patch BVH off" switch and for measuring the speed-up). Both are immutable once
  * built and may be shared by any number of render threads; each thread passes its own stack
- * ({@code int[stackSize()]}, see {@link #newStack()}) and its own callback objects.
+ * ({@code int[stackSize()]}, see {@link #newStack()}) and its own per-query state {@code query},
+ * which the leaf callback receives with every primitive (the callback itself may be shared).
  *
  * <p>Rays are {@code origin + t * direction}, given as origin and reciprocal direction
  * {@code invD = 1 / d} per axis; zero components ({@code invD = ±Infinity}) are allowed and handled
@@ -17,31 +18,25 @@ import org.beziertracer.math.Aabb;
 public interface Accelerator {
 
     /**
-     * The accelerator for the sub-patch BVH switch: a {@link Bvh} built with {@code opts} when
-     * {@code useBvh}, else a {@link FlatList} ({@code opts} ignored).
-     */
-    static Accelerator of(double[] primBounds, int primCount, BvhOptions opts, boolean useBvh) {
-        return useBvh ? Bvh.build(primBounds, primCount, opts) : FlatList.build(primBounds, primCount);
-    }
-
-    /**
      * Closest hit: visits primitives whose boxes the ray enters before the current {@code tMax},
      * near boxes first, feeding each callback result back as the new {@code tMax}.
      *
+     * @param query per-query state passed to every {@code leaf} call
      * @param stack caller-owned scratch of length {@code >= stackSize()}, overwritten
      * @return the final {@code tMax}; smaller than the argument exactly when the callback reported
      *     a closer hit
      */
-    double closestHit(double ox, double oy, double oz, double invDx, double invDy, double invDz,
-            double tMin, double tMax, LeafIntersector leaf, int[] stack);
+    <Q> double closestHit(double ox, double oy, double oz, double invDx, double invDy, double invDz,
+            double tMin, double tMax, LeafIntersector<Q> leaf, Q query, int[] stack);
 
     /**
      * Any hit: true as soon as the callback says a primitive occludes; false when none does.
      *
+     * @param query per-query state passed to every {@code leaf} call
      * @param stack caller-owned scratch of length {@code >= stackSize()}, overwritten
      */
-    boolean occluded(double ox, double oy, double oz, double invDx, double invDy, double invDz,
-            double tMin, double tMax, LeafOccluder leaf, int[] stack);
+    <Q> boolean occluded(double ox, double oy, double oz, double invDx, double invDy, double invDz,
+            double tMin, double tMax, LeafOccluder<Q> leaf, Q query, int[] stack);
 
     /** Minimum length of the traversal stack a caller must pass. */
     int stackSize();

@@ -53,6 +53,19 @@ public final class Bvh implements Accelerator {
     }
 
     /**
+     * About the most heap {@link #build} holds at once for {@code primCount} primitives, in bytes:
+     * the builder's arrays (centroids, primitive order, room for {@code 2n-1} nodes, work stack)
+     * while the final node arrays are copied out of them. Keep this in step with
+     * {@link BinnedSahBuilder} and the fields above when the layout changes.
+     */
+    public static long estimateBytes(long primCount) {
+        long nodes = Math.max(1, 2 * primCount - 1);
+        long nodeBytes = 6 * 8 + 4 + 4;                       // nodeBounds, leftFirst, count
+        long builder = primCount * (3 * 8 + 4 + 2 * 4) + nodes * nodeBytes;
+        return builder + nodes * nodeBytes;                   // + the final copy of the node arrays
+    }
+
+    /**
      * Builds a hierarchy over {@code primCount} boxes.
      *
      * @param primBounds six doubles per primitive ({@code minX, minY, minZ, maxX, maxY, maxZ}),
@@ -69,8 +82,8 @@ public final class Bvh implements Accelerator {
     }
 
     @Override
-    public double closestHit(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafIntersector leaf, int[] stack) {
+    public <Q> double closestHit(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query, int[] stack) {
         final double[] b = nodeBounds;
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
@@ -84,7 +97,7 @@ public final class Bvh implements Accelerator {
             if (n > 0) {
                 // Leaf: every primitive may shrink tMax
                 for (int i = leftFirst[node], end = i + n; i < end; i++) {
-                    tMax = leaf.intersect(primIndices[i], tMax);
+                    tMax = leaf.intersect(query, primIndices[i], tMax);
                 }
                 node = -1;
             } else {
@@ -127,8 +140,8 @@ public final class Bvh implements Accelerator {
     }
 
     @Override
-    public boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafOccluder leaf, int[] stack) {
+    public <Q> boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query, int[] stack) {
         final double[] b = nodeBounds;
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
@@ -141,7 +154,7 @@ public final class Bvh implements Accelerator {
             int n = count[node];
             if (n > 0) {
                 for (int i = leftFirst[node], end = i + n; i < end; i++) {
-                    if (leaf.occludes(primIndices[i], tMax)) {
+                    if (leaf.occludes(query, primIndices[i], tMax)) {
                         return true;
                     }
                 }

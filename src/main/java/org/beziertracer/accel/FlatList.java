@@ -38,27 +38,27 @@ public final class FlatList implements Accelerator {
     }
 
     @Override
-    public double closestHit(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafIntersector leaf, int[] stack) {
+    public <Q> double closestHit(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query, int[] stack) {
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
         for (int p = 0; p < primCount; p++) {
             if (RayBox.slab(primBounds, 6 * p, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz,
                     tMin, tMax) != MISS) {
-                tMax = leaf.intersect(p, tMax);
+                tMax = leaf.intersect(query, p, tMax);
             }
         }
         return tMax;
     }
 
     @Override
-    public boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
-            double invDz, double tMin, double tMax, LeafOccluder leaf, int[] stack) {
+    public <Q> boolean occluded(double ox, double oy, double oz, double invDx, double invDy,
+            double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query, int[] stack) {
         final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
                 sz = RayBox.nearOffset(invDz);
         for (int p = 0; p < primCount; p++) {
             if (RayBox.slab(primBounds, 6 * p, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz,
-                    tMin, tMax) != MISS && leaf.occludes(p, tMax)) {
+                    tMin, tMax) != MISS && leaf.occludes(query, p, tMax)) {
                 return true;
             }
         }

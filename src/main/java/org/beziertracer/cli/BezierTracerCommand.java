@@ -36,7 +36,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp(desktopApp);
         }
-        return commandLine().execute(args);
+        CommandLine cl = commandLine();
+        return execute(cl, args);
     }
 
     /**
@@ -47,15 +48,29 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         CommandLine cl = commandLine();
         cl.setOut(out);
         cl.setErr(err);
-        int code = cl.execute(args);
+        int code = execute(cl, args);
         out.flush();
         err.flush();
         return code;
     }
 
+    /**
+     * Runs the command; an {@link Error} (out of memory, stack overflow), which picocli lets
+     * through, becomes one line too ({@link CliErrors}).
+     */
+    private static int execute(CommandLine cl, String[] args) {
+        try {
+            return cl.execute(args);
+        } catch (Error e) {
+            boolean sub = args.length > 0 && cl.getSubcommands().containsKey(args[0]);
+            return CliErrors.report(e, sub ? args[0] : cl.getCommandName(), cl.getErr());
+        }
+    }
+
     /** The configured command tree: sub-commands plus the one-line error handler. */
     static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
+        cl.setResourceBundle(new CliText());
         cl.setExecutionExceptionHandler(CliErrors::handle);
         return cl;
     }

@@ -7,8 +7,9 @@ import java.util.concurrent.Callable;
 
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
+import org.beziertracer.model.io.SceneFiles;
 
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.SceneIntersector;
 
@@ -18,21 +19,25 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code info MODEL}: prints patch count, the degree histogram and the control-point bounding box.
+ * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the control-point bounding
+ * box and, for a scene, its planes, spheres and lights.
  * <pre>
- * model: teapot
+ * model: teapot-room
  * patches: 32
- * degrees: 3x3 x32
+ * degrees: 3x3 (32)
  * control-point bounds: x[-120,141] y[-80,80] z[0,120]
+ * objects: 1 plane, 2 spheres, 1 light
  * </pre>
- * Degrees are listed as {@code nxm (count)}, sorted by u then v degree. A model that cannot be read
- * ends the command with one error line and exit code 1 (see {@link CliErrors}).
+ * Degrees are listed as {@code nxm (count)}, sorted by u then v degree; the objects line appears
+ * when there are any. Anything {@link SceneFiles#load} opens is accepted. A file that cannot be
+ * read ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
-        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a model.")
+        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a "
+                + "model or scene.")
 final class InfoCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
     @Spec
@@ -40,18 +45,27 @@ final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Scene scene = Models.load(model);
+        Scene scene = SceneFiles.load(model).scene();
         PrintWriter out = spec.commandLine().getOut();
         out.println("model: " + model);
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
-        out.println("control-point bounds: " + scene.controlBounds());
+        out.println("control-point bounds: " + (scene.patchCount() == 0 ? "none" : scene.controlBounds()));
+        if (!scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.lights().isEmpty()) {
+            out.println("objects: " + count(scene.planes().size(), "plane") + ", "
+                    + count(scene.spheres().size(), "sphere") + ", " + count(scene.lights().size(), "light"));
+        }
+        HeapBudget.require(model, scene, IntersectOptions.defaults());
         SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
         out.println("sub-patches: " + si.subPatchCount());
         out.println("bvh: " + si.nodeCount() + " nodes, depth " + si.depth());
         out.println(String.format(java.util.Locale.ROOT, "build: %.1f ms (split + BVH)", si.buildMillis()));
         out.flush();
         return 0;
+    }
+
+    private static String count(int n, String what) {
+        return n + " " + what + (n == 1 ? "" : "s");
     }
 
     /** {@code "3x3 (30), 1x2 (2)"}-style histogram, sorted by u degree then v degree. */

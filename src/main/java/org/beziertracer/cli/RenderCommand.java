@@ -2,6 +2,7 @@ package org.beziertracer.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -12,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -50,8 +52,7 @@ final class RenderCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE",
-            description = "a .bpt/.obj model, a built-in model (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically)")
@@ -119,20 +120,15 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
     String pixel;
 
-    /**
-     * Reads a model or scene. Until {@code SceneFiles} is merged this wraps a bare model with
-     * default settings; at the merge, replace the body with {@code SceneFiles.load(nameOrPath)}.
-     */
-    static SceneDocument load(String nameOrPath) {
-        return SceneFiles.load(nameOrPath);
-    }
-
     @Override
     public Integer call() throws IOException, InterruptedException {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
-        if (output != null && !output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png")) {
+        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
+            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
+        }
+        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new IllegalArgumentException(output + ": the output must be a .png file");
         }
         if (repeat < 1 || repeat > MAX_REPEAT) {
@@ -145,7 +141,7 @@ final class RenderCommand implements Callable<Integer> {
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
-        SceneDocument doc = load(model);
+        SceneDocument doc = SceneFiles.load(model);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
         Scene scene = doc.scene();
@@ -156,7 +152,7 @@ final class RenderCommand implements Callable<Integer> {
             }
             scene = scene.toBuilder().lights(list).build();
         }
-        checkMeshMemory(tessellate, scene.patchCount());
+        HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
         RenderJob job = RenderJob.prepare(scene, settings, options);
         job = job.withCamera(camera(job.camera()));
         PrintWriter out = spec.commandLine().getOut();
@@ -240,33 +236,8 @@ final class RenderCommand implements Callable<Integer> {
 
     /** Refuses an image whose buffers would not fit in the heap (instead of an OutOfMemoryError). */
     static void checkMemory(RenderSettings s) {
-        long need = Film.bytesFor(s.width(), s.height()) + 12L * s.width() * s.height();
-        Runtime rt = Runtime.getRuntime();
-        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        if (need > free * 0.8) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "image of %dx%d pixels needs about %d MB but only %d MB of heap is free; use a smaller --size or a larger -Xmx",
-                    s.width(), s.height(), need >> 20, free >> 20));
-        }
-    }
-
-    /** About the bytes per triangle of a tessellated scene: corners, normals, (u,v), boxes and BVH nodes. */
-    static final long BYTES_PER_TRIANGLE = 320;
-
-    /** Refuses a tessellation whose triangles would not fit in the heap. */
-    static void checkMeshMemory(int k, int patches) {
-        if (k == 0) {
-            return;
-        }
-        long triangles = 2L * k * k * patches;
-        long need = triangles * BYTES_PER_TRIANGLE;
-        Runtime rt = Runtime.getRuntime();
-        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        if (need > free * 0.8) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "--tessellate %d makes %d triangles, about %d MB, but only %d MB of heap is free; use a smaller K or a larger -Xmx",
-                    k, triangles, need >> 20, free >> 20));
-        }
+        HeapBudget.require(null, s.width() + "x" + s.height() + " pixels",
+                Film.bytesFor(s.width(), s.height()) + 12L * s.width() * s.height());
     }
 
     static Vec3 vec(String option, String text) {

@@ -1,10 +1,8 @@
 package org.beziertracer.cli;
 
-import java.io.BufferedReader;
 import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.Reader;
+import java.io.InputStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -13,6 +11,7 @@ import java.util.Locale;
 import java.util.Random;
 import java.util.concurrent.Callable;
 
+import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
@@ -20,8 +19,13 @@ import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.intersect.SurfacePoint;
 import org.beziertracer.intersect.TraceContext;
 import org.beziertracer.math.Aabb;
+import org.beziertracer.math.Vec3;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
+import org.beziertracer.model.Sphere;
+import org.beziertracer.model.io.Echo;
+import org.beziertracer.model.io.IoReasons;
+import org.beziertracer.model.io.SceneFiles;
+import org.beziertracer.model.io.TextSource;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -30,21 +34,25 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code trace MODEL}: intersects rays with a model and prints one CSV line a ray:
- * {@code index,hit,t,patch,u,v,x,y,z,nx,ny,nz}. Rays are read one a line as
+ * {@code trace MODEL_OR_SCENE}: intersects rays with a model or scene and prints one CSV line a
+ * ray: {@code index,hit,t,patch,u,v,x,y,z,nx,ny,nz}. When the scene has planes or spheres, a last
+ * column {@code object} says what was hit ({@code patch 3}, {@code plane 0}, {@code sphere 1}),
+ * and {@code patch} is empty for planes and spheres. Rays are read one a line as
  * {@code ox oy oz dx dy dz} ({@code #} comments and blank lines skipped), or generated with
  * {@code --random N}.
  */
 @Command(name = "trace", mixinStandardHelpOptions = true,
-        description = "Intersects rays (ox oy oz dx dy dz, one a line) with a model; prints CSV hits.")
+        description = "Intersects rays (ox oy oz dx dy dz, one a line) with a model or scene; prints CSV hits.")
 final class TraceCommand implements Callable<Integer> {
 
     static final String HEADER = "index,hit,t,patch,u,v,x,y,z,nx,ny,nz";
 
+    private static final String[] KINDS = {"patch", "plane", "sphere"};
+
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "a .bpt or .obj file, or a built-in name (patch, teapot)")
+    @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
     @Option(names = "--method", paramLabel = "clipping|newton|subdivision", defaultValue = "clipping",
@@ -81,20 +89,22 @@ final class TraceCommand implements Callable<Integer> {
         if (random != null && (random < 0 || random > 100_000_000)) {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
-        Scene scene = Models.load(model);
-        SceneIntersector si = SceneIntersector.build(scene,
-                IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate));
+        Scene scene = SceneFiles.load(model).scene();
+        boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty();
+        IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
+        HeapBudget.require(model, scene, io);
+        SceneIntersector si = SceneIntersector.build(scene, io);
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
         long rays = 0, hits = 0;
         long traceNanos = 0;
         try (Writer out = openOutput()) {
-            out.write(HEADER);
+            out.write(objects ? HEADER + ",object" : HEADER);
             out.write('\n');
             StringBuilder line = new StringBuilder(256);
             double[] ray = new double[6];
-            RaySource source = random != null ? new RandomRays(scene.controlBounds(), random, seed)
+            RaySource source = random != null ? new RandomRays(aimBox(scene), random, seed)
                     : new RayFile(openInput(), input == null ? "stdin" : input.toString());
             try (source) {
                 while (source.next(ray)) {
@@ -109,12 +119,22 @@ final class TraceCommand implements Callable<Integer> {
                     line.append(rays).append(',');
                     if (found) {
                         hits++;
-                        line.append("1,").append(hit.t).append(',').append(hit.index).append(',')
+                        line.append("1,").append(hit.t).append(',');
+                        if (hit.kind == Hit.PATCH) {
+                            line.append(hit.index);
+                        }
+                        line.append(',')
                                 .append(hit.u).append(',').append(hit.v).append(',')
                                 .append(sp.px).append(',').append(sp.py).append(',').append(sp.pz).append(',')
                                 .append(sp.nx).append(',').append(sp.ny).append(',').append(sp.nz);
                     } else {
                         line.append("0,,,,,,,,,,");
+                    }
+                    if (objects) {
+                        line.append(',');
+                        if (found) {
+                            line.append(KINDS[hit.kind]).append(' ').append(hit.index);
+                        }
                     }
                     line.append('\n');
                     out.append(line);
@@ -145,19 +165,37 @@ final class TraceCommand implements Callable<Integer> {
             };
         }
         if (output.getParent() != null && !Files.isDirectory(output.getParent())) {
-            throw new IOException(output + ": the folder does not exist");
+            throw new IOException(output + ": cannot write: the folder " + output.getParent() + " does not exist");
         }
-        return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
+        try {
+            return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new IOException(output + ": cannot write: " + IoReasons.of(e));
+        }
     }
 
-    private Reader openInput() throws IOException {
+    private InputStream openInput() throws IOException {
         if (input == null) {
-            return new InputStreamReader(System.in, StandardCharsets.UTF_8);
+            return System.in;
         }
         if (!Files.isRegularFile(input)) {
             throw new IOException(input + ": no such ray file");
         }
-        return Files.newBufferedReader(input, StandardCharsets.UTF_8);
+        return Files.newInputStream(input);
+    }
+
+    /** The box random rays aim into: the patches' control points and the spheres. */
+    static Aabb aimBox(Scene scene) {
+        Aabb box = scene.controlBounds();
+        for (Sphere s : scene.spheres()) {
+            double r = s.radius();
+            box = box.union(s.center().add(new Vec3(-r, -r, -r))).union(s.center().add(new Vec3(r, r, r)));
+        }
+        if (box.isEmpty()) {
+            throw new IllegalArgumentException("--random needs patches or spheres to aim at; this scene has"
+                    + " only planes");
+        }
+        return box;
     }
 
     /** A stream of rays. */
@@ -170,20 +208,22 @@ final class TraceCommand implements Callable<Integer> {
 
     /** Rays from text, one a line; errors name the source and line. */
     static final class RayFile implements RaySource {
-        private final BufferedReader reader;
+        private final InputStream in;
+        private final TextSource text;
         private final String name;
-        private int lineNumber;
 
-        RayFile(Reader reader, String name) {
-            this.reader = new BufferedReader(reader);
+        /** Rays of {@code in} (closed by {@link #close()} unless it is standard input). */
+        RayFile(InputStream in, String name) {
+            this.in = in;
+            this.text = new TextSource(in, name);
             this.name = name;
         }
 
         @Override
         public boolean next(double[] ray) throws IOException {
             String line;
-            while ((line = reader.readLine()) != null) {
-                lineNumber++;
+            while ((line = text.readLine()) != null) {
+                int lineNumber = text.lineNumber();
                 int hash = line.indexOf('#');
                 String text = (hash >= 0 ? line.substring(0, hash) : line).trim();
                 if (text.isEmpty()) {
@@ -199,11 +239,12 @@ final class TraceCommand implements Callable<Integer> {
                         ray[k] = Double.parseDouble(parts[k]);
                     } catch (NumberFormatException e) {
                         throw new IllegalArgumentException(name + ":" + lineNumber + ": expected a number for "
-                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + ", found \"" + parts[k] + "\"");
+                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + ", found " + Echo.quote(parts[k]));
                     }
                     if (!Double.isFinite(ray[k])) {
                         throw new IllegalArgumentException(name + ":" + lineNumber + ": "
-                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + " must be finite, found " + parts[k]);
+                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + " must be finite, found "
+                                + Echo.quote(parts[k]));
                     }
                 }
                 if (ray[3] == 0 && ray[4] == 0 && ray[5] == 0) {
@@ -221,7 +262,9 @@ final class TraceCommand implements Callable<Integer> {
 
         @Override
         public void close() throws IOException {
-            reader.close();
+            if (in != System.in) {
+                in.close();
+            }
         }
     }
 

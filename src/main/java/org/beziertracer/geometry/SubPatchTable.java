@@ -125,6 +125,53 @@ public final class SubPatchTable {
         return new SubPatchTable(patches, pieces, options);
     }
 
+    /** Patches split for real by {@link #estimateCount}; more are sampled evenly. */
+    static final int ESTIMATE_SAMPLE = 64;
+
+    /**
+     * About how many sub-patches {@link #build} would make: exact for up to
+     * {@value #ESTIMATE_SAMPLE} patches, else the mean of that many evenly spaced patches, split
+     * for real, times the patch count. Cheap (allocates only the sample's pieces).
+     */
+    public static long estimateCount(List<BezierPatch> patches, SplitOptions options) {
+        int n = patches.size();
+        if (n == 0) {
+            return 0;
+        }
+        if (!options.enabled() || options.maxDepth() == 0) {
+            return n;
+        }
+        int samples = Math.min(n, ESTIMATE_SAMPLE);
+        long pieces = 0;
+        for (int k = 0; k < samples; k++) {
+            pieces += PatchSplitter.split(patches.get((int) ((long) k * n / samples)), options).count();
+        }
+        return (long) Math.ceil((double) pieces * n / samples);
+    }
+
+    /**
+     * About the most heap {@link #build} holds at once for {@code subPatchCount} sub-patches (from
+     * {@link #estimateCount}), in bytes: every array of the table (which keeps the patches'
+     * {@link PatchPieces} too, so each sub-patch net is held twice) plus the patches' own nets.
+     * Keep this in step with the fields above when the layout changes.
+     */
+    public static long estimateBytes(List<BezierPatch> patches, long subPatchCount) {
+        if (patches.isEmpty()) {
+            return 0;
+        }
+        long netDoubles = 0;
+        for (BezierPatch p : patches) {
+            netDoubles += 3L * p.pointCount();
+        }
+        double meanNet = (double) netDoubles / patches.size();
+        long perSubPatch = (long) Math.ceil(2 * 8 * meanNet)      // nets, in the table and in the pieces
+                + 2 * 4 * 8                                         // boxes, in the table and in the pieces
+                + 6 * 8 + HodographBounds.STRIDE * 8               // bounds, uniqueness
+                + 4 * 4;                                            // parent, degreeU, degreeV, netOffset
+        long perPatch = 8 * 3 * 4 + 8 + 4 + 96;                    // patch arrays, extent, firstOf, pieces objects
+        return subPatchCount * perSubPatch + 8 * netDoubles + patches.size() * perPatch;
+    }
+
     /** A new table with patch {@code index} replaced and re-split; the others are reused. */
     public SubPatchTable withPatch(int index, BezierPatch patch) {
         PatchPieces[] copy = pieces.clone();

@@ -46,6 +46,10 @@ public final class Tessellator {
         if (patches.isEmpty()) {
             throw new IllegalArgumentException("nothing to tessellate: no patches");
         }
+        if (3L * patches.size() * 2L * k * k > Integer.MAX_VALUE) {
+            throw new IllegalArgumentException(patches.size() + " patches of " + k + "x" + k + " cells make "
+                    + 2L * k * k * patches.size() + " triangles, more than a mesh can index");
+        }
         int perPatchVertices = (k + 1) * (k + 1), perPatchTriangles = 2 * k * k;
         int vertexCount = patches.size() * perPatchVertices;
         double[] positions = new double[3 * vertexCount], normals = new double[3 * vertexCount];

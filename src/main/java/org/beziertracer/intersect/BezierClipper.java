@@ -54,159 +54,205 @@ final class BezierClipper {
     /** ... or whose parameter box (local to the leaf) is this narrow in both directions. */
     static final double CONVERGED_WIDTH = 1e-12;
 
+    /** {@link #clipWholeLeaf} found the leaf's only root: the search is over. */
+    private static final int SOLVED = -1;
+
     /**
      * Nearest root of sub-patch {@code s} with {@code tMin < t < tMax}; on success stores it in
      * {@code ctx.rootT/rootU/rootV} (parent-patch parameters) and returns true.
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax,
                              double tolerance) {
-        int n = tab.degreeU[s], m = tab.degreeV[s];
-        int points = (n + 1) * (m + 1), len = 3 * points;
-        double[] arena = ctx.arena;
-        double[] boxes = ctx.entryBoxes;
-        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
-        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
-        int k = tab.parent[s];
-        double leafSize = leafSize(tab, s);
-        double extentEps = CONVERGED_EXTENT * leafSize;
-
         boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
-        if (unique && newtonFromCorners(ctx, tab, s, k, tolerance)) {
+        if (unique && newtonFromCorners(ctx, tab, s, tab.parent[s], tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
-        ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
-        boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
-        int sp = 1;
-        double best = tMax;
-        boolean found = false;
-        double bestU = 0, bestV = 0;
-        int steps = 0, newtonTries = 0;
-        double invLength = ctx.invLength;
+        return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
+    }
 
+    /**
+     * The clipping search over leaf {@code s}: its projected net and then its pieces on the
+     * context's stack (top = next), the nearest candidate so far in {@code ctx.pieceBest*}.
+     * {@code unique}: the precomputed test proved the leaf single-root for this ray.
+     */
+    private static boolean clipLeaf(TraceContext ctx, SubPatchTable tab, int s, boolean unique, double tMin,
+                                    double tMax, double tolerance) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        int points = (n + 1) * (m + 1), len = 3 * points;
+        double extentEps = CONVERGED_EXTENT * leafSize(tab, s);
+        double[] boxes = ctx.entryBoxes;
+        ctx.project(tab.nets, tab.netOffset[s], points, ctx.arena, 0);
+        boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
+        ctx.pieceBestT = tMax;
+        ctx.pieceFound = false;
+        ctx.clipNewtonTries = 0;
+        int sp = 1, steps = 0;
         while (sp > 0) {
             int w = sp - 1, base = w * len, b4 = 4 * w;
             if (++steps > MAX_STEPS) {
                 break;
             }
-            // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
-            double[] rb = ctx.rayBounds;
-            Bounds.ofPoints(arena, base, points, rb);
-            double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
-            double slack = tolerance;
-            if (min1 > slack || max1 < -slack || min2 > slack || max2 < -slack
-                    || min3 * invLength >= best || max3 * invLength <= tMin) {
+            if (missesRay(ctx, base, points, tolerance, tMin)) {
                 sp--;
                 continue;
             }
-            double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
-            if (Math.max(max1 - min1, max2 - min2) <= extentEps
-                    || (u1 - u0 <= CONVERGED_WIDTH && v1 - v0 <= CONVERGED_WIDTH)) {
-                // Root candidate: polish on the parent patch
-                double uc = leafU0 + leafDu * 0.5 * (u0 + u1);
-                double vc = leafV0 + leafDv * 0.5 * (v0 + v1);
-                if (polish(ctx, tab, k, uc, vc, leafDu * (u1 - u0), leafDv * (v1 - v0), tolerance)
-                        && ctx.rootT > tMin && ctx.rootT < best) {
-                    best = ctx.rootT;
-                    bestU = ctx.rootU;
-                    bestV = ctx.rootV;
-                    found = true;
-                }
+            double[] rb = ctx.rayBounds;
+            if (Math.max(rb[3] - rb[0], rb[4] - rb[1]) <= extentEps
+                    || (boxes[b4 + 1] - boxes[b4] <= CONVERGED_WIDTH && boxes[b4 + 3] - boxes[b4 + 2] <= CONVERGED_WIDTH)) {
+                polishCandidate(ctx, tab, s, b4, tMin, tolerance);
                 sp--;
                 continue;
             }
             ctx.clipIterations++;
             if (steps == 1) {
-                // The whole leaf: clip both directions on the unrestricted net (both
-                // intervals hold every root of the leaf)
-                if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
-                    sp--;
-                    continue;
+                sp = clipWholeLeaf(ctx, tab, s, unique, tolerance);
+                if (sp == SOLVED) {
+                    return ctx.rootT > tMin && ctx.rootT < tMax;
                 }
-                double a = ctx.clip[0], b = ctx.clip[1];
-                if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
-                    sp--;
-                    continue;
-                }
-                double c = ctx.clip[0], d = ctx.clip[1];
-                // (the precomputed test of the leaf, else the box test on its projected net)
-                if (unique || RootUniqueness.atMostOneRoot(arena, base, n, m)) {
-                    // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there,
-                    // no restriction needed
-                    newtonTries++;
-                    if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * a, leafU0 + leafDu * b,
-                            leafV0 + leafDv * c, leafV0 + leafDv * d, tolerance)) {
-                        return ctx.rootT > tMin && ctx.rootT < tMax;
-                    }
-                }
-                if (b - a < 1) {
-                    DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
-                }
-                if (d - c < 1) {
-                    DeCasteljau.restrictV(arena, base, n, m, 3, c, d);
-                }
-                boxes[b4] = a; boxes[b4 + 1] = b; boxes[b4 + 2] = c; boxes[b4 + 3] = d;
-                continue;
-            }
-            // Clip in u
-            if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
-                sp--;
-                continue;
-            }
-            double a = ctx.clip[0], b = ctx.clip[1];
-            double keptU = b - a;
-            if (keptU < 1) {
-                DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
-                double du = u1 - u0;
-                u1 = u0 + du * b;
-                u0 = u0 + du * a;
-            }
-            // Clip in v
-            if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
-                sp--;
-                continue;
-            }
-            a = ctx.clip[0];
-            b = ctx.clip[1];
-            double keptV = b - a;
-            if (keptV < 1) {
-                DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
-                double dv = v1 - v0;
-                v1 = v0 + dv * b;
-                v0 = v0 + dv * a;
-            }
-            boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
-            boolean stalled = keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD;
-            if (!stalled && newtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
-                // At most one root in this piece: Newton on the parent, confined to the piece, finds it
-                newtonTries++;
-                if (newtonInPiece(ctx, tab, k, leafU0 + leafDu * u0, leafU0 + leafDu * u1,
-                        leafV0 + leafDv * v0, leafV0 + leafDv * v1, tolerance)) {
-                    if (ctx.rootT > tMin && ctx.rootT < best) {
-                        best = ctx.rootT;
-                        bestU = ctx.rootU;
-                        bestV = ctx.rootV;
-                        found = true;
-                    }
-                    sp--; // the piece's only root is known, whatever its t
-                    continue;
-                }
-            }
-            if (stalled) {
-                if (sp == TraceContext.MAX_ENTRIES) {
-                    sp--; // stack full: drop this piece (bounded work)
-                    continue;
-                }
-                split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
-                sp++;
+            } else {
+                sp = clipPiece(ctx, tab, s, sp, tMin, tolerance);
             }
         }
-        if (found) {
-            ctx.rootT = best;
-            ctx.rootU = bestU;
-            ctx.rootV = bestV;
+        if (ctx.pieceFound) {
+            ctx.rootT = ctx.pieceBestT;
+            ctx.rootU = ctx.pieceBestU;
+            ctx.rootV = ctx.pieceBestV;
         }
-        return found;
+        return ctx.pieceFound;
+    }
+
+    /**
+     * Ray-space bounds of the piece at {@code ctx.arena[base..]} into {@code ctx.rayBounds}; true
+     * when the ray cannot pass through it within {@code (tMin, ctx.pieceBestT)}.
+     */
+    private static boolean missesRay(TraceContext ctx, int base, int points, double slack, double tMin) {
+        double[] rb = ctx.rayBounds;
+        Bounds.ofPoints(ctx.arena, base, points, rb);
+        double invLength = ctx.invLength;
+        return rb[0] > slack || rb[3] < -slack || rb[1] > slack || rb[4] < -slack
+                || rb[2] * invLength >= ctx.pieceBestT || rb[5] * invLength <= tMin;
+    }
+
+    /** Keeps {@code ctx.root*} as the search's best when it is nearer than the best so far. */
+    private static void offerRoot(TraceContext ctx, double tMin) {
+        if (ctx.rootT > tMin && ctx.rootT < ctx.pieceBestT) {
+            ctx.pieceBestT = ctx.rootT;
+            ctx.pieceBestU = ctx.rootU;
+            ctx.pieceBestV = ctx.rootV;
+            ctx.pieceFound = true;
+        }
+    }
+
+    /** A piece small enough to be a root candidate (box {@code ctx.entryBoxes[b4..]}): polish on the parent patch. */
+    private static void polishCandidate(TraceContext ctx, SubPatchTable tab, int s, int b4, double tMin,
+                                        double tolerance) {
+        double[] boxes = ctx.entryBoxes;
+        double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+        double uc = leafU0 + leafDu * 0.5 * (u0 + u1);
+        double vc = leafV0 + leafDv * 0.5 * (v0 + v1);
+        if (polish(ctx, tab, tab.parent[s], uc, vc, leafDu * (u1 - u0), leafDv * (v1 - v0), tolerance)) {
+            offerRoot(ctx, tMin);
+        }
+    }
+
+    /**
+     * The leaf's first visit (stack slot 0): clips both directions on the unrestricted net (both
+     * intervals hold every root of the leaf); when the leaf holds at most one root, Newton in
+     * the clipped box settles it ({@link #SOLVED}), no restriction needed. Otherwise restricts
+     * the net to the clipped box. Returns the new stack size (0: no root in the leaf).
+     */
+    private static int clipWholeLeaf(TraceContext ctx, SubPatchTable tab, int s, boolean unique, double slack) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        double[] arena = ctx.arena, boxes = ctx.entryBoxes;
+        if (!clipInterval(ctx, arena, 0, n, m, true, slack)) {
+            return 0;
+        }
+        double a = ctx.clip[0], b = ctx.clip[1];
+        if (!clipInterval(ctx, arena, 0, n, m, false, slack)) {
+            return 0;
+        }
+        double c = ctx.clip[0], d = ctx.clip[1];
+        // (the precomputed test of the leaf, else the box test on its projected net)
+        if (unique || RootUniqueness.atMostOneRoot(arena, 0, n, m)) {
+            // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there
+            ctx.clipNewtonTries++;
+            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * a, leafU0 + leafDu * b,
+                    leafV0 + leafDv * c, leafV0 + leafDv * d, slack)) {
+                return SOLVED;
+            }
+        }
+        if (b - a < 1) {
+            DeCasteljau.restrictU(arena, 0, n, m, 3, a, b);
+        }
+        if (d - c < 1) {
+            DeCasteljau.restrictV(arena, 0, n, m, 3, c, d);
+        }
+        boxes[0] = a; boxes[1] = b; boxes[2] = c; boxes[3] = d;
+        return 1;
+    }
+
+    /**
+     * One clipping step on the piece on top of the stack (size {@code sp}): clip in u, then in
+     * v; a piece proven single-root is settled by Newton; a piece that shrank by less than
+     * {@link #SPLIT_THRESHOLD} in both directions is split, nearer half on top. Returns the new
+     * stack size.
+     */
+    private static int clipPiece(TraceContext ctx, SubPatchTable tab, int s, int sp, double tMin, double slack) {
+        int n = tab.degreeU[s], m = tab.degreeV[s];
+        int len = 3 * (n + 1) * (m + 1), w = sp - 1, base = w * len, b4 = 4 * w;
+        double[] arena = ctx.arena, boxes = ctx.entryBoxes;
+        double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+        // Clip in u
+        if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
+            return sp - 1;
+        }
+        double a = ctx.clip[0], b = ctx.clip[1];
+        double keptU = b - a;
+        if (keptU < 1) {
+            DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+            double du = u1 - u0;
+            u1 = u0 + du * b;
+            u0 = u0 + du * a;
+        }
+        // Clip in v
+        if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
+            return sp - 1;
+        }
+        a = ctx.clip[0];
+        b = ctx.clip[1];
+        double keptV = b - a;
+        if (keptV < 1) {
+            DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
+            double dv = v1 - v0;
+            v1 = v0 + dv * b;
+            v0 = v0 + dv * a;
+        }
+        boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
+        boolean stalled = keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD;
+        if (!stalled && ctx.clipNewtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
+            // At most one root in this piece: Newton on the parent, confined to the piece, finds it
+            ctx.clipNewtonTries++;
+            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * u0, leafU0 + leafDu * u1,
+                    leafV0 + leafDv * v0, leafV0 + leafDv * v1, slack)) {
+                offerRoot(ctx, tMin);
+                return sp - 1; // the piece's only root is known, whatever its t
+            }
+        }
+        if (!stalled) {
+            return sp;
+        }
+        if (sp == TraceContext.MAX_ENTRIES) {
+            return sp - 1; // stack full: drop this piece (bounded work)
+        }
+        split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
+        return sp + 1;
     }
 
     /**
@@ -289,14 +335,34 @@ final class BezierClipper {
      * counts as touching zero, so a root exactly on the border of the piece survives rounding.
      */
     static boolean clipInterval(TraceContext ctx, double[] net, int base, int n, int m, boolean alongU, double eps) {
-        // Directions of the net in ray space (first two coordinates)
+        double[] line = ctx.clip;
+        clipLine(net, base, n, m, alongU, line);
+        double[] lo = ctx.columnMin, hi = ctx.columnMax;
+        columnDistances(net, base, n, m, alongU, line[0], line[1], lo, hi);
+        // Where the convex hull of the points (c/deg, distance) meets zero
+        if (!HullClip.zeroInterval(lo, hi, alongU ? n : m, eps, ctx.clip)) {
+            return false;
+        }
+        double a = ctx.clip[0], b = ctx.clip[1];
+        ctx.clip[0] = Math.max(0, a - WIDEN);
+        ctx.clip[1] = Math.min(1, b + WIDEN);
+        return true;
+    }
+
+    /**
+     * Unit direction {@code (lx, ly)} into {@code out[0..1]} of the line through the ray (the
+     * ray-space origin) along which distances are measured: parallel to the net's mean
+     * v-direction (first two ray-space coordinates) when clipping in u, to its mean u-direction
+     * when clipping in v, so distances vary along the clipped direction; the perpendicular of
+     * the clipped direction when the other one vanishes.
+     */
+    static void clipLine(double[] net, int base, int n, int m, boolean alongU, double[] out) {
         int row = 3 * (n + 1);
         int p00 = base, pn0 = base + 3 * n, p0m = base + row * m, pnm = p0m + 3 * n;
         double ux = (net[pn0] - net[p00]) + (net[pnm] - net[p0m]);
         double uy = (net[pn0 + 1] - net[p00 + 1]) + (net[pnm + 1] - net[p0m + 1]);
         double vx = (net[p0m] - net[p00]) + (net[pnm] - net[pn0]);
         double vy = (net[p0m + 1] - net[p00 + 1]) + (net[pnm + 1] - net[pn0 + 1]);
-        // The line through the ray runs along the other direction, so distances vary along this one
         double lx, ly;
         double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
         if (alongU) {
@@ -317,15 +383,22 @@ final class BezierClipper {
             }
         }
         double invL = 1 / Math.sqrt(lx * lx + ly * ly);
-        lx *= invL;
-        ly *= invL;
-        int deg = alongU ? n : m;
-        double[] lo = ctx.columnMin, hi = ctx.columnMax;
-        for (int c = 0; c <= deg; c++) {
-            lo[c] = Double.POSITIVE_INFINITY;
-            hi[c] = Double.NEGATIVE_INFINITY;
-        }
+        out[0] = lx * invL;
+        out[1] = ly * invL;
+    }
+
+    /**
+     * Signed distances of the net's points from the line {@code (lx, ly)} through the origin,
+     * their range per column of the clipped direction (index {@code i} along u when
+     * {@code alongU}, else {@code j} along v) into {@code lo[0..deg]}, {@code hi[0..deg]}.
+     */
+    private static void columnDistances(double[] net, int base, int n, int m, boolean alongU, double lx, double ly,
+                                        double[] lo, double[] hi) {
         if (alongU) {
+            for (int c = 0; c <= n; c++) {
+                lo[c] = Double.POSITIVE_INFINITY;
+                hi[c] = Double.NEGATIVE_INFINITY;
+            }
             for (int j = 0, p = base; j <= m; j++) {
                 for (int i = 0; i <= n; i++, p += 3) {
                     double dist = lx * net[p + 1] - ly * net[p];
@@ -345,14 +418,6 @@ final class BezierClipper {
                 hi[j] = rowHi;
             }
         }
-        // Where the convex hull of the points (c/deg, distance) meets zero
-        if (!HullClip.zeroInterval(lo, hi, deg, eps, ctx.clip)) {
-            return false;
-        }
-        double a = ctx.clip[0], b = ctx.clip[1];
-        ctx.clip[0] = Math.max(0, a - WIDEN);
-        ctx.clip[1] = Math.min(1, b + WIDEN);
-        return true;
     }
 
     /**

@@ -2,14 +2,21 @@ package org.beziertracer.intersect;
 
 import java.util.Locale;
 
-/** The ray–patch solvers. */
+/** The ray–patch solvers, each with the {@link PatchLeaves} that run it at the BVH leaves. */
 public enum Method {
     /** Bézier clipping (Nishita, Sederberg, Kakimoto 1990): exact, the default. */
-    CLIPPING,
+    CLIPPING(ClippingLeaves::new),
     /** Newton iteration from the leaf's parameter-box centre (memoir ch. I 3.3.3.3). */
-    NEWTON,
+    NEWTON(NewtonLeaves::new),
     /** Recursive subdivision, then the control mesh as triangles (memoir ch. I 3.3.3.1): approximate. */
-    SUBDIVISION;
+    SUBDIVISION(SubdivisionLeaves::new);
+
+    /** Makes this method's leaves over a sub-patch table. */
+    final PatchLeaves.Factory leaves;
+
+    Method(PatchLeaves.Factory leaves) {
+        this.leaves = leaves;
+    }
 
     /** Parses {@code clipping|newton|subdivision} (case-insensitive) with a one-line error. */
     public static Method parse(String s) {

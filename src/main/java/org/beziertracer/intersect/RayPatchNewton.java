@@ -19,7 +19,7 @@ final class RayPatchNewton {
     /**
      * Iterates from {@code (u,v)} on patch {@code k}; on return {@code ctx.rootU/rootV/rootT}
      * hold the last iterate and its ray parameter, and {@code ctx.eval} the surface point and
-     * first derivatives there ({@code ctx.evalPatch = k}; {@link TraceContext#intersect} keeps
+     * first derivatives there ({@code ctx.evalPatch = k}; {@link PatchLeaves#intersect} keeps
      * them for {@link SceneIntersector#surfacePoint}).
      *
      * @param maxSteps      iteration cap

@@ -3,16 +3,12 @@ package org.beziertracer.intersect;
 import org.beziertracer.accel.Accelerator;
 import org.beziertracer.accel.Bvh;
 import org.beziertracer.accel.FlatList;
-import org.beziertracer.geometry.DeCasteljau;
-import org.beziertracer.geometry.PatchNormals;
-import org.beziertracer.geometry.SplitOptions;
-import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 
 /**
  * The whole-scene ray queries: {@link #closestHit} and {@link #occluded} over Bézier patches
- * (sub-patch BVH, then the chosen solver at the leaves), planes and spheres.
+ * (sub-patch BVH, then the chosen solver at the leaves: {@link Leaves}), planes and spheres.
  *
  * <p>Immutable snapshot: build once per scene, share between render threads, each with its own
  * {@link TraceContext}. An edit of one patch makes a new snapshot with {@link #withPatch}, which
@@ -27,73 +23,67 @@ import org.beziertracer.model.Scene;
 public final class SceneIntersector {
 
     final Scene scene;
-    final SubPatchTable table;
-    /** The triangles in tessellated mode; null in exact mode. */
-    final TriangleMesh mesh;
+    /** The primitives in the accelerator and their solver, chosen once by {@link Leaves#of}. */
+    final Leaves leaves;
     final Accelerator accel;
     final IntersectOptions options;
-    final Method method;
     final AnalyticShapes shapes;
-    /** Residual tolerance of the root polish, in scene units. */
-    final double tolerance;
     final double sceneSize;
     final double buildMillis;
 
-    private SceneIntersector(Scene scene, SubPatchTable table, TriangleMesh mesh, Accelerator accel,
-                             IntersectOptions options, double buildMillis) {
+    private SceneIntersector(Scene scene, Leaves leaves, Accelerator accel, IntersectOptions options,
+                             double sceneSize, double buildMillis) {
         this.scene = scene;
-        this.table = table;
-        this.mesh = mesh;
+        this.leaves = leaves;
         this.accel = accel;
         this.options = options;
-        this.method = options.method();
         this.shapes = new AnalyticShapes(scene.planes(), scene.spheres());
-        double size = scene.patches().isEmpty() ? 1 : scene.controlBounds().diagonal();
-        this.sceneSize = size > 0 ? size : 1;
-        this.tolerance = 1e-12 * sceneSize;
+        this.sceneSize = sceneSize;
         this.buildMillis = buildMillis;
     }
 
-    /** Splits the patches and builds the acceleration structure. */
+    /**
+     * Makes the leaves (splitting the patches, or tessellating them) and builds the acceleration structure.
+     *
+     * @throws IllegalArgumentException (one line, {@link HeapBudget}) when it would not fit in the heap
+     */
     public static SceneIntersector build(Scene scene, IntersectOptions options) {
+        HeapBudget.require(null, scene, options);
         long t0 = System.nanoTime();
-        if (options.tessellated()) {
-            SubPatchTable whole = SubPatchTable.build(scene.patches(), SplitOptions.wholePatches());
-            TriangleMesh mesh = scene.patches().isEmpty() ? null
-                    : TriangleMesh.build(scene.patches(), options.tessellate());
-            Accelerator accel = mesh == null ? FlatList.build(new double[0], 0)
-                    : options.bvh() ? Bvh.build(mesh.bounds, mesh.count, options.bvhOptions())
-                    : FlatList.build(mesh.bounds, mesh.count);
-            return new SceneIntersector(scene, whole, mesh, accel, options, (System.nanoTime() - t0) / 1e6);
-        }
-        SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit());
-        Accelerator accel = buildAccel(table, options);
-        return new SceneIntersector(scene, table, null, accel, options, (System.nanoTime() - t0) / 1e6);
+        double size = sizeOf(scene);
+        Leaves leaves = Leaves.of(scene, options, size);
+        Accelerator accel = buildAccel(leaves, options);
+        return new SceneIntersector(scene, leaves, accel, options, size, (System.nanoTime() - t0) / 1e6);
     }
 
-    private static Accelerator buildAccel(SubPatchTable table, IntersectOptions options) {
-        return options.bvh() ? Bvh.build(table.bounds, table.count, options.bvhOptions())
-                : FlatList.build(table.bounds, table.count);
+    /** The scene's size: the diagonal of its patches' control box, 1 when there is none. */
+    private static double sizeOf(Scene scene) {
+        double size = scene.patches().isEmpty() ? 1 : scene.controlBounds().diagonal();
+        return size > 0 ? size : 1;
+    }
+
+    private static Accelerator buildAccel(Leaves leaves, IntersectOptions options) {
+        return options.bvh() ? Bvh.build(leaves.bounds(), leaves.count(), options.bvhOptions())
+                : FlatList.build(leaves.bounds(), leaves.count());
     }
 
     /**
-     * A new snapshot with patch {@code index} replaced: only that patch is re-split; the BVH is
-     * refitted when its sub-patch count is unchanged, else rebuilt.
+     * A new snapshot with patch {@code index} replaced: the leaves are remade for that patch only
+     * where their kind allows it (sub-patches: only that patch is re-split); the BVH is refitted
+     * when the number of leaves is unchanged, else rebuilt.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
-        if (options.tessellated()) {
-            return build(scene.withPatch(index, patch), options); // the mesh is rebuilt whole
-        }
         long t0 = System.nanoTime();
-        SubPatchTable newTable = table.withPatch(index, patch);
+        Scene edited = scene.withPatch(index, patch);
+        double size = sizeOf(edited);
+        Leaves newLeaves = leaves.withPatch(edited, index, size);
         Accelerator newAccel;
-        if (newTable.count == table.count && accel instanceof Bvh bvh) {
-            newAccel = bvh.refit(newTable.bounds);
+        if (newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
+            newAccel = bvh.refit(newLeaves.bounds());
         } else {
-            newAccel = buildAccel(newTable, options);
+            newAccel = buildAccel(newLeaves, options);
         }
-        return new SceneIntersector(scene.withPatch(index, patch), newTable, null, newAccel, options,
-                (System.nanoTime() - t0) / 1e6);
+        return new SceneIntersector(edited, newLeaves, newAccel, options, size, (System.nanoTime() - t0) / 1e6);
     }
 
     /** A fresh per-thread context. */
@@ -105,27 +95,18 @@ public final class SceneIntersector {
      */
     public boolean closestHit(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                               double tMin, double tMax, Hit hit) {
-        bind(ctx);
+        ctx.ensureStack(accel.stackSize());
         ctx.setRay(ox, oy, oz, dx, dy, dz);
-        ctx.tMin = tMin;
-        ctx.found = false;
-        ctx.hitEvalPatch = -1;
+        ctx.beginClosestHit(tMin);
+        leaves.beginRay(ctx);
         double best = tMax;
-        if (mesh != null) {
-            TriangleMesh.setRay(ctx);
-        }
         if (accel.primCount() > 0) {
-            best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
+            best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
         }
         boolean any = ctx.found;
         if (any) {
-            if (mesh != null) {
-                // Tessellated: the patch parameters, interpolated over the winning triangle only
-                Hit b = ctx.best;
-                b.u = mesh.uv(b.subPatch, b.b1, b.b2, 0);
-                b.v = mesh.uv(b.subPatch, b.b1, b.b2, 1);
-            }
             hit.set(ctx.best);
+            leaves.completeHit(hit);
             best = hit.t;
         }
         for (int k = 0; k < shapes.planeCount; k++) {
@@ -164,7 +145,7 @@ public final class SceneIntersector {
     /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */
     public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMin, double tMax) {
-        bind(ctx);
+        ctx.ensureStack(accel.stackSize());
         ctx.setRay(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
         for (int k = 0; k < shapes.sphereCount; k++) {
@@ -178,63 +159,24 @@ public final class SceneIntersector {
                 return true;
             }
         }
-        if (mesh != null) {
-            TriangleMesh.setRay(ctx);
-        }
+        leaves.beginRay(ctx);
         return accel.primCount() > 0
-                && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, ctx, ctx.stack);
-    }
-
-    private void bind(TraceContext ctx) {
-        ctx.scene = this;
-        if (ctx.stack.length < accel.stackSize()) {
-            ctx.stack = new int[accel.stackSize()];
-        }
-    }
-
-    /** Runs the selected solver on sub-patch {@code s}; the root goes to {@code ctx.root*}. */
-    boolean solvePatch(TraceContext ctx, int s, double tMin, double tMax) {
-        ctx.solverCalls++;
-        switch (method) {
-            case CLIPPING:
-                return BezierClipper.intersect(ctx, table, s, tMin, tMax, tolerance);
-            case NEWTON:
-                return NewtonSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
-            default:
-                return SubdivisionSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
-        }
+                && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
     }
 
     /**
-     * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal), on the parent patch
-     * for patch hits; when the solver's last evaluation was at exactly the hit's (u,v) of that
-     * patch (Newton ends there), it is reused instead of evaluated again (bit-identical). Call
-     * right after {@link #closestHit} with the same context (it uses the context's ray).
+     * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal): for patch hits by the
+     * leaves that found it ({@link Leaves#surfacePoint}: on the parent patch, or on the triangle
+     * in tessellated mode). Call right after {@link #closestHit} with the same context (it uses
+     * the context's ray and the solver's last evaluation).
      */
     public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
         sp.u = hit.u;
         sp.v = hit.v;
         sp.kind = hit.kind;
         sp.index = hit.index;
-        if (hit.kind == Hit.PATCH && mesh != null) {
-            mesh.surfacePoint(hit.subPatch, hit.b1, hit.b2, sp);
-        } else if (hit.kind == Hit.PATCH) {
-            int k = hit.index;
-            int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
-            double[] e = ctx.hitEval;
-            if (ctx.hitEvalPatch != k || ctx.hitEvalU != hit.u || ctx.hitEvalV != hit.v) {
-                // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
-                e = ctx.eval;
-                ctx.evalPatch = -1;
-                DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
-            }
-            sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
-            sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
-            sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
-            double[] nrm = ctx.normal;
-            PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, table.patchSquaredExtent[k], nrm, 0,
-                    ctx.scratch);
-            sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
+        if (hit.kind == Hit.PATCH) {
+            leaves.surfacePoint(ctx, hit, sp);
         } else if (hit.kind == Hit.PLANE) {
             shapes.planePoint(hit.index, hit, ctx, sp);
         } else {
@@ -244,15 +186,13 @@ public final class SceneIntersector {
 
     public Scene scene() { return scene; }
 
-    public SubPatchTable table() { return table; }
-
     public IntersectOptions options() { return options; }
 
     /** Sub-patches in exact mode (whole patches with the BVH off). */
-    public int subPatchCount() { return table.count; }
+    public int subPatchCount() { return leaves.subPatchCount(); }
 
     /** Triangles in tessellated mode, 0 in exact mode. */
-    public int triangleCount() { return mesh == null ? 0 : mesh.count; }
+    public int triangleCount() { return leaves.triangleCount(); }
 
     /** Primitives in the acceleration structure: sub-patches, or triangles in tessellated mode. */
     public int primitiveCount() { return accel.primCount(); }

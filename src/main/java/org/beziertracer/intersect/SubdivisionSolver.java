@@ -35,8 +35,8 @@ final class SubdivisionSolver {
         ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         int sp = 1, steps = 0;
-        double best = tMax, bestU = 0, bestV = 0;
-        boolean found = false;
+        ctx.pieceBestT = tMax;
+        ctx.pieceFound = false;
         double invLength = ctx.invLength;
         while (sp > 0 && ++steps <= MAX_STEPS) {
             int w = sp - 1, base = w * len, b4 = 4 * w;
@@ -45,36 +45,12 @@ final class SubdivisionSolver {
             Bounds.ofPoints(arena, base, points, rb);
             double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > tolerance || max1 < -tolerance || min2 > tolerance || max2 < -tolerance
-                    || min3 * invLength >= best || max3 * invLength <= tMin) {
+                    || min3 * invLength >= ctx.pieceBestT || max3 * invLength <= tMin) {
                 sp--;
                 continue;
             }
-            double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
             if (Math.max(max1 - min1, max2 - min2) <= tiny || sp == TraceContext.MAX_ENTRIES) {
-                // Intersect the control mesh as triangles
-                for (int j = 0; j < m; j++) {
-                    for (int i = 0; i < n; i++) {
-                        int p00 = base + 3 * (j * (n + 1) + i), p10 = p00 + 3;
-                        int p01 = p00 + 3 * (n + 1), p11 = p01 + 3;
-                        double ua = u0 + (u1 - u0) * i / n, ub = u0 + (u1 - u0) * (i + 1) / n;
-                        double va = v0 + (v1 - v0) * j / m, vb = v0 + (v1 - v0) * (j + 1) / m;
-                        for (int tri = 0; tri < 2; tri++) {
-                            int pb = tri == 0 ? p10 : p11, pc = tri == 0 ? p11 : p01;
-                            double ubb = ub, vbb = tri == 0 ? va : vb;
-                            double ucc = tri == 0 ? ub : ua, vcc = vb;
-                            if (triangle(arena, p00, pb, pc, ctx.clip)) {
-                                double wb = ctx.clip[0], wc = ctx.clip[1], wa = 1 - wb - wc;
-                                double t = (wa * arena[p00 + 2] + wb * arena[pb + 2] + wc * arena[pc + 2]) * invLength;
-                                if (t > tMin && t < best) {
-                                    best = t;
-                                    bestU = wa * ua + wb * ubb + wc * ucc;
-                                    bestV = wa * va + wb * vbb + wc * vcc;
-                                    found = true;
-                                }
-                            }
-                        }
-                    }
-                }
+                intersectControlMesh(ctx, base, n, m, b4, tMin);
                 sp--;
                 continue;
             }
@@ -83,13 +59,47 @@ final class SubdivisionSolver {
             BezierClipper.split(ctx, arena, base, len, n, m, boxes, b4, inU);
             sp++;
         }
-        if (found) {
-            ctx.rootT = best;
+        if (ctx.pieceFound) {
+            ctx.rootT = ctx.pieceBestT;
             // the triangle test's slack may reach slightly past the patch border
-            ctx.rootU = Math.min(1, Math.max(0, leafU0 + leafDu * bestU));
-            ctx.rootV = Math.min(1, Math.max(0, leafV0 + leafDv * bestV));
+            ctx.rootU = Math.min(1, Math.max(0, leafU0 + leafDu * ctx.pieceBestU));
+            ctx.rootV = Math.min(1, Math.max(0, leafV0 + leafDv * ctx.pieceBestV));
         }
-        return found;
+        return ctx.pieceFound;
+    }
+
+    /**
+     * Intersects the control mesh of the piece at {@code ctx.arena[base..]} (parameter box
+     * {@code ctx.entryBoxes[b4..]}, local to the leaf) as triangles, two per quad, interpolating
+     * t and (u,v); a hit nearer than {@code ctx.pieceBestT} becomes the best.
+     */
+    private static void intersectControlMesh(TraceContext ctx, int base, int n, int m, int b4, double tMin) {
+        double[] arena = ctx.arena, boxes = ctx.entryBoxes;
+        double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
+        double invLength = ctx.invLength;
+        for (int j = 0; j < m; j++) {
+            for (int i = 0; i < n; i++) {
+                int p00 = base + 3 * (j * (n + 1) + i), p10 = p00 + 3;
+                int p01 = p00 + 3 * (n + 1), p11 = p01 + 3;
+                double ua = u0 + (u1 - u0) * i / n, ub = u0 + (u1 - u0) * (i + 1) / n;
+                double va = v0 + (v1 - v0) * j / m, vb = v0 + (v1 - v0) * (j + 1) / m;
+                for (int tri = 0; tri < 2; tri++) {
+                    int pb = tri == 0 ? p10 : p11, pc = tri == 0 ? p11 : p01;
+                    double ubb = ub, vbb = tri == 0 ? va : vb;
+                    double ucc = tri == 0 ? ub : ua, vcc = vb;
+                    if (triangle(arena, p00, pb, pc, ctx.clip)) {
+                        double wb = ctx.clip[0], wc = ctx.clip[1], wa = 1 - wb - wc;
+                        double t = (wa * arena[p00 + 2] + wb * arena[pb + 2] + wc * arena[pc + 2]) * invLength;
+                        if (t > tMin && t < ctx.pieceBestT) {
+                            ctx.pieceBestT = t;
+                            ctx.pieceBestU = wa * ua + wb * ubb + wc * ucc;
+                            ctx.pieceBestV = wa * va + wb * vbb + wc * vcc;
+                            ctx.pieceFound = true;
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /**

@@ -1,14 +1,14 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.accel.LeafIntersector;
-import org.beziertracer.accel.LeafOccluder;
 import org.beziertracer.geometry.DeCasteljau;
 
 /**
  * Per-thread scratch for ray queries: the current ray and its ray-space frame, the BVH stack,
- * the arena of clipping sub-nets and the solver's result. Create one per render thread with
- * {@link SceneIntersector#newContext()}; never share one between threads. Nothing here is
- * allocated per ray.
+ * the arena of clipping sub-nets, the solver's result and the best hit so far. It belongs to no
+ * scene: one context serves any {@link SceneIntersector} (a render thread keeps its context
+ * across edits), and the scene's {@link Leaves} receive it as the accelerator's query state.
+ * Create one per render thread with {@link SceneIntersector#newContext()}; never share one
+ * between threads. Nothing here is allocated per ray.
  *
  * <h2>Ray space</h2>
  * The ray {@code o + t d} is written as the intersection of two planes through {@code o} with
@@ -18,7 +18,7 @@ import org.beziertracer.geometry.DeCasteljau;
  * coordinates vanish. The map is affine, so a control net maps to the control net of the
  * transformed surface.
  */
-public final class TraceContext implements LeafIntersector, LeafOccluder {
+public final class TraceContext {
 
     /** Most sub-nets the clipping and subdivision stacks hold. */
     static final int MAX_ENTRIES = 64;
@@ -52,7 +52,7 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     /**
      * S, Su, Sv of the best patch hit so far, at {@code (hitEvalU, hitEvalV)} of patch
      * {@code hitEvalPatch} (-1: none), copied from the solver's last evaluation so that
-     * {@link SceneIntersector#surfacePoint} need not evaluate the same point again.
+     * {@link PatchLeaves#surfacePoint} need not evaluate the same point again.
      */
     final double[] hitEval = new double[9];
     int hitEvalPatch = -1;
@@ -66,7 +66,6 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     final double[] corners = new double[8];
 
     // The query in flight (set by SceneIntersector)
-    SceneIntersector scene;
     double tMin;
     /** Best patch hit of the current closest-hit query. */
     final Hit best = new Hit();
@@ -76,6 +75,13 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
     double rootT, rootU, rootV;
     /** Tessellated mode: barycentric weights of the hit triangle's second and third corner. */
     double rootB1, rootB2;
+
+    // A solver's search over the pieces of one leaf (BezierClipper, SubdivisionSolver): the
+    // nearest root so far, in the solver's own parameters
+    double pieceBestT, pieceBestU, pieceBestV;
+    boolean pieceFound;
+    /** Bézier clipping: Newton attempts on single-root pieces of the leaf so far. */
+    int clipNewtonTries;
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
@@ -111,6 +117,31 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
         n2z = n3x * n1y - n3y * n1x;
     }
 
+    /** Grows the traversal stack to at least {@code size} (a deeper BVH than any before). */
+    void ensureStack(int size) {
+        if (stack.length < size) {
+            stack = new int[size];
+        }
+    }
+
+    /** Starts a closest-hit query: no hit yet. */
+    void beginClosestHit(double tMin) {
+        this.tMin = tMin;
+        found = false;
+        hitEvalPatch = -1;
+    }
+
+    /**
+     * Keeps the solver's last evaluation ({@link #eval}, at {@code (evalU, evalV)} of patch
+     * {@code evalPatch}) as the evaluation at the best hit.
+     */
+    void keepEvaluationForHit() {
+        System.arraycopy(eval, 0, hitEval, 0, 9);
+        hitEvalPatch = evalPatch;
+        hitEvalU = evalU;
+        hitEvalV = evalV;
+    }
+
     /** Maps {@code count} points from {@code src[srcOff..]} into ray space at {@code dest[destOff..]}. */
     void project(double[] src, int srcOff, int count, double[] dest, int destOff) {
         for (int k = 0, s = srcOff, d = destOff; k < count; k++, s += 3, d += 3) {
@@ -138,50 +169,5 @@ public final class TraceContext implements LeafIntersector, LeafOccluder {
         double qx = src[s] - ox, qy = src[s + 1] - oy, qz = src[s + 2] - oz;
         out[o] = n1x * qx + n1y * qy + n1z * qz;
         out[o + 1] = n2x * qx + n2y * qy + n2z * qz;
-    }
-
-    @Override
-    public double intersect(int prim, double tMax) {
-        TriangleMesh mesh = scene.mesh;
-        if (mesh != null) {
-            if (mesh.intersect(this, prim, tMin, tMax)) {
-                found = true;
-                best.t = rootT;
-                best.b1 = rootB1;
-                best.b2 = rootB2;
-                best.kind = Hit.PATCH;
-                best.index = mesh.patchOf[prim];
-                best.subPatch = prim;
-                return rootT;
-            }
-            return tMax;
-        }
-        if (scene.solvePatch(this, prim, tMin, tMax)) {
-            found = true;
-            best.t = rootT;
-            best.u = rootU;
-            best.v = rootV;
-            best.kind = Hit.PATCH;
-            int k = scene.table.parent[prim];
-            best.index = k;
-            best.subPatch = prim;
-            if (evalPatch == k && evalU == rootU && evalV == rootV) {
-                System.arraycopy(eval, 0, hitEval, 0, 9);
-                hitEvalPatch = k;
-                hitEvalU = rootU;
-                hitEvalV = rootV;
-            }
-            return rootT;
-        }
-        return tMax;
-    }
-
-    @Override
-    public boolean occludes(int prim, double tMax) {
-        TriangleMesh mesh = scene.mesh;
-        if (mesh != null) {
-            return mesh.intersect(this, prim, tMin, tMax);
-        }
-        return scene.solvePatch(this, prim, tMin, tMax);
     }
 }

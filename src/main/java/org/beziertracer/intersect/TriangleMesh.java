@@ -59,6 +59,21 @@ final class TriangleMesh {
         }
     }
 
+    /**
+     * About the most heap {@link #build} holds at once for {@code patchCount} patches of
+     * {@code k×k} cells, in bytes: the indexed {@link Mesh} (vertex positions, normals and uvs,
+     * triangle indices and patch tags, which the mesh copies once when it is made) and this
+     * class's corner, box and patch arrays. The BVH over the triangles is estimated by
+     * {@link org.beziertracer.accel.Bvh#estimateBytes}. Keep this in step with the fields above.
+     */
+    static long estimateBytes(long patchCount, int k) {
+        long vertices = patchCount * (k + 1L) * (k + 1L);
+        long triangles = patchCount * 2L * k * k;
+        long mesh = vertices * (3 * 8 + 3 * 8 + 2 * 8) + triangles * (3 * 4 + 4);
+        long own = triangles * (9 * 8 + 6 * 8 + 4);
+        return 2 * mesh + own;                                 // the mesh's arrays exist twice while it copies them
+    }
+
     /** Tessellates every patch with {@code k×k} cells (build time; allocates). */
     static TriangleMesh build(List<BezierPatch> patches, int k) {
         return new TriangleMesh(k, Tessellator.tessellate(patches, k));

@@ -40,13 +40,17 @@ public record Aabb(double minX, double minY, double minZ, double maxX, double ma
 
     public Vec3 center() { return new Vec3(0.5 * (minX + maxX), 0.5 * (minY + maxY), 0.5 * (minZ + maxZ)); }
 
-    /** Length of the diagonal; 0 for an empty box. */
+    /**
+     * Length of the diagonal; 0 for an empty box. Without intermediate overflow: infinite only
+     * when the length itself is beyond the largest double.
+     */
     public double diagonal() {
         if (isEmpty()) {
             return 0;
         }
         double dx = maxX - minX, dy = maxY - minY, dz = maxZ - minZ;
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return Double.isFinite(d) ? d : Math.hypot(Math.hypot(dx, dy), dz);
     }
 
     @Override

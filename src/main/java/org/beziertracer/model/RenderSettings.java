@@ -64,8 +64,4 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
     public static RenderSettings defaults() {
         return new RenderSettings(800, 600, 1, "regular", "clipping", true, "phong", 0, true, 5);
     }
-
-    public RenderSettings withSize(int w, int h) {
-        return new RenderSettings(w, h, spp, sampler, method, bvh, shading, checker, shadows, maxDepth);
-    }
 }

@@ -18,7 +18,7 @@ import org.beziertracer.model.Sphere;
  * <p>The intersector must have been built with the method and BVH switch the settings ask for
  * (and the tessellation the options ask for);
  * {@link #prepare} does that. An edit of one patch can reuse the old snapshot via
- * {@link SceneIntersector#withPatch} and {@link #withIntersector}.
+ * {@link SceneIntersector#withPatch} in a new job.
  */
 public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options) {
 
@@ -34,12 +34,16 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
      * own, else {@link #defaultCamera}.
      */
     public static RenderJob prepare(Scene scene, RenderSettings settings, RenderOptions options) {
-        IntersectOptions io = IntersectOptions.defaults().withMethod(Method.parse(settings.method()))
-                .withBvh(settings.bvh()).withTessellate(options.tessellate());
-        SceneIntersector si = SceneIntersector.build(scene, io);
+        SceneIntersector si = SceneIntersector.build(scene, intersectOptions(settings, options));
         Camera camera = scene.camera().map(Camera::new)
                 .orElseGet(() -> defaultCamera(scene, (double) settings.width() / settings.height()));
         return new RenderJob(si, camera, settings, options);
+    }
+
+    /** The intersection options {@link #prepare} builds with: method and BVH from the settings, K from the options. */
+    public static IntersectOptions intersectOptions(RenderSettings settings, RenderOptions options) {
+        return IntersectOptions.defaults().withMethod(Method.parse(settings.method())).withBvh(settings.bvh())
+                .withTessellate(options.tessellate());
     }
 
     /** {@link Camera#fit} of {@link #bounds(Scene)} with the default 40° field of view. */
@@ -76,11 +80,6 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
 
     public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options); }
 
-    /** Same intersector: only for settings with the same method and BVH switch. */
-    public RenderJob withSettings(RenderSettings s) { return new RenderJob(intersector, camera, s, options); }
-
     /** Same intersector: only for options with the same {@link RenderOptions#tessellate()}. */
     public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o); }
-
-    public RenderJob withIntersector(SceneIntersector si) { return new RenderJob(si, camera, settings, options); }
 }

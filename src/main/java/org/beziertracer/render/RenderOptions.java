@@ -78,18 +78,6 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
         return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
     }
 
-    public RenderOptions withMinAttenuation(double a) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, a, seed, tessellate);
-    }
-
-    public RenderOptions withAdaptiveThreshold(double t) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, t, minAttenuation, seed, tessellate);
-    }
-
-    public RenderOptions withSeed(long s) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, s, tessellate);
-    }
-
     /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
     public RenderOptions withTessellate(int k) {
         return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k);

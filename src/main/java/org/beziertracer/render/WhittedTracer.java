@@ -1,7 +1,5 @@
 package org.beziertracer.render;
 
-import java.util.Locale;
-
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.intersect.SurfacePoint;
@@ -49,9 +47,12 @@ public final class WhittedTracer {
     private final double[] stackWeight = new double[STACK];
     private final int[] stackDepth = new int[STACK];
     private final double[] local = new double[3];
+    // The hit being shaded: unit ray direction, unit normal facing the viewer, front or back face
+    private double ux, uy, uz, nx, ny, nz;
+    private boolean entering;
     private ShadingScene s;
     private SceneIntersector si;
-    private TraceLog log;
+    private ShadingEvents events = ShadingEvents.NONE;
 
     /** Ray counters, cumulative; the worker reads and resets them. */
     long primaryRays, shadowRays, secondaryRays;
@@ -73,7 +74,7 @@ public final class WhittedTracer {
     }
 
     /** Sends a line per ray, hit and term to {@code log} (null: off, the default). */
-    public void setLog(TraceLog log) { this.log = log; }
+    public void setLog(TraceLog log) { this.events = log == null ? ShadingEvents.NONE : new LoggedShading(log); }
 
     public long primaryRays() { return primaryRays; }
 
@@ -108,49 +109,54 @@ public final class WhittedTracer {
     /** Shades one ray, adds {@code w ×} its local colour to {@code rgb}, pushes its children; returns the new top. */
     private int shade(double ox, double oy, double oz, double dx, double dy, double dz, double w, int depth,
                       int top, double[] rgb) {
-        if (log != null) {
-            log.line(String.format(Locale.ROOT, "%sray depth=%d weight=%.4f o=(%.6g, %.6g, %.6g) d=(%.6g, %.6g, %.6g)",
-                    indent(depth), depth, w, ox, oy, oz, dx, dy, dz));
-        }
+        events.ray(depth, w, ox, oy, oz, dx, dy, dz);
         if (!si.closestHit(ctx, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
             rgb[0] += w * ShadingScene.BG_R; rgb[1] += w * ShadingScene.BG_G; rgb[2] += w * ShadingScene.BG_B;
-            if (log != null) {
-                log.line(indent(depth) + "  miss -> background");
-            }
+            events.miss(depth);
             return top;
         }
         si.surfacePoint(ctx, hit, sp);
-        // Unit direction and the normal facing the viewer
+        faceViewer(dx, dy, dz);
+        int m = s.materialOffset(hit.kind, hit.index);
+        baseColour(m, local);
+        events.hit(depth, hit, sp, nx, ny, nz, entering, local);
+        if (s.mode != ShadingMode.PHONG) {
+            debugColour(nx, ny, nz);
+        } else {
+            phong(m, depth, ox, oy, oz, local);
+        }
+        rgb[0] += w * local[0]; rgb[1] += w * local[1]; rgb[2] += w * local[2];
+        return s.mode != ShadingMode.PHONG ? top : spawn(m, w, depth, top);
+    }
+
+    /**
+     * The unit ray direction {@code u} and the unit normal {@code n} at the hit, flipped toward
+     * the viewer (two-sided surfaces; a degenerate normal faces the ray); {@code entering} when
+     * the ray met the surface's own normal head-on.
+     */
+    private void faceViewer(double dx, double dy, double dz) {
         double dl = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double ux = dx * dl, uy = dy * dl, uz = dz * dl;
-        double nx = sp.nx, ny = sp.ny, nz = sp.nz;
+        ux = dx * dl; uy = dy * dl; uz = dz * dl;
+        nx = sp.nx; ny = sp.ny; nz = sp.nz;
         if (!(nx * nx + ny * ny + nz * nz > 0.5)) { // degenerate normal: face the ray
             nx = -ux; ny = -uy; nz = -uz;
         }
-        boolean entering = nx * ux + ny * uy + nz * uz < 0;
+        entering = nx * ux + ny * uy + nz * uz < 0;
         if (!entering) {
             nx = -nx; ny = -ny; nz = -nz;
         }
-        int m = s.materialOffset(hit.kind, hit.index);
+    }
+
+    /**
+     * Local Phong illumination at the hit (material at {@code m}) with a shadow ray per light:
+     * replaces the base colour in {@code c} by the local colour. {@code o} is the ray's origin.
+     */
+    private void phong(int m, int depth, double ox, double oy, double oz, double[] c) {
         double[] mat = s.materials;
-        baseColour(m, local);
-        if (log != null) {
-            log.line(String.format(Locale.ROOT, "%s  hit %s %d t=%.9g u=%.6f v=%.6f p=(%.6g, %.6g, %.6g) n=(%.5f, %.5f, %.5f)%s"
-                            + " base=(%.4f, %.4f, %.4f)", indent(depth), kindName(hit.kind), hit.index, hit.t, hit.u, hit.v,
-                    sp.px, sp.py, sp.pz, nx, ny, nz, entering ? "" : " (back face, normal flipped)",
-                    local[0], local[1], local[2]));
-        }
-        if (s.mode != ShadingMode.PHONG) {
-            debugColour(nx, ny, nz);
-            rgb[0] += w * local[0]; rgb[1] += w * local[1]; rgb[2] += w * local[2];
-            return top;
-        }
-        // Local Phong illumination with shadow rays
-        double cr = local[0], cg = local[1], cb = local[2];
+        double cr = c[0], cg = c[1], cb = c[2];
         double ka = mat[m + ShadingScene.KA], kd = mat[m + ShadingScene.KD], ks = mat[m + ShadingScene.KS];
         double shin = mat[m + ShadingScene.SHININESS];
         double sumR = ka * cr, sumG = ka * cg, sumB = ka * cb;
-        double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
         double[] lights = s.lights;
         for (int k = 0, lo = 0; k < s.lightCount; k++, lo += 6) {
             double lx = lights[lo] - sp.px, ly = lights[lo + 1] - sp.py, lz = lights[lo + 2] - sp.pz;
@@ -161,24 +167,13 @@ public final class WhittedTracer {
             lx /= dist; ly /= dist; lz /= dist;
             double ndl = nx * lx + ny * ly + nz * lz;
             if (ndl <= 0) {
-                if (log != null) {
-                    log.line(String.format(Locale.ROOT, "%s  light %d behind the surface (n.l=%.4f)", indent(depth), k, ndl));
-                }
+                events.lightBehind(depth, k, ndl);
                 continue;
             }
             // A light at the origin of a camera ray sees everything that ray sees: no shadow ray needed
             boolean atEye = depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
-            if (s.shadows && !atEye) {
-                shadowRays++;
-                boolean blocked = si.occluded(ctx, px, py, pz, lights[lo] - px, lights[lo + 1] - py,
-                        lights[lo + 2] - pz, 0, 1 - 1e-9);
-                if (log != null) {
-                    log.line(String.format(Locale.ROOT, "%s  shadow ray to light %d: %s", indent(depth), k,
-                            blocked ? "blocked" : "clear"));
-                }
-                if (blocked) {
-                    continue;
-                }
+            if (s.shadows && !atEye && blocked(lo, k, depth)) {
+                continue;
             }
             // Phong specular: reflect l about n, compare with the view direction v = -u
             double rdv = 2 * ndl * (nx * -ux + ny * -uy + nz * -uz) - (lx * -ux + ly * -uy + lz * -uz);
@@ -187,22 +182,25 @@ public final class WhittedTracer {
             sumR += lights[lo + 3] * (diff * cr + spec);
             sumG += lights[lo + 4] * (diff * cg + spec);
             sumB += lights[lo + 5] * (diff * cb + spec);
-            if (log != null) {
-                log.line(String.format(Locale.ROOT, "%s  light %d: n.l=%.4f diffuse=%.4f r.v=%.4f specular=%.4f",
-                        indent(depth), k, ndl, diff, rdv, spec));
-            }
+            events.lightTerms(depth, k, ndl, diff, rdv, spec);
         }
-        rgb[0] += w * sumR; rgb[1] += w * sumG; rgb[2] += w * sumB;
-        if (log != null) {
-            log.line(String.format(Locale.ROOT, "%s  local=(%.4f, %.4f, %.4f) ambient=%.3f x base", indent(depth),
-                    sumR, sumG, sumB, ka));
-        }
-        return spawn(ux, uy, uz, nx, ny, nz, entering, m, w, depth, top);
+        events.localColour(depth, sumR, sumG, sumB, ka);
+        c[0] = sumR; c[1] = sumG; c[2] = sumB;
+    }
+
+    /** True when the shadow ray from the hit (offset along n) to the light at {@code lights[lo..]} is blocked. */
+    private boolean blocked(int lo, int k, int depth) {
+        double[] lights = s.lights;
+        double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
+        shadowRays++;
+        boolean blocked = si.occluded(ctx, px, py, pz, lights[lo] - px, lights[lo + 1] - py,
+                lights[lo + 2] - pz, 0, 1 - 1e-9);
+        events.shadowRay(depth, k, blocked);
+        return blocked;
     }
 
     /** Pushes the reflected and refracted rays that pass the adaptive depth control. */
-    private int spawn(double ux, double uy, double uz, double nx, double ny, double nz, boolean entering, int m,
-                      double w, int depth, int top) {
+    private int spawn(int m, double w, int depth, int top) {
         double[] mat = s.materials;
         double kr = mat[m + ShadingScene.KR], kt = mat[m + ShadingScene.KT];
         if (kr <= 0 && kt <= 0 || depth >= s.maxDepth) {
@@ -217,9 +215,7 @@ public final class WhittedTracer {
             double k = 1 - eta * eta * (1 - cosI * cosI);
             if (k < 0) {
                 wr += kt; // total internal reflection
-                if (log != null) {
-                    log.line(indent(depth) + "  total internal reflection");
-                }
+                events.totalInternalReflection(depth);
             } else {
                 double cosT = Math.sqrt(k);
                 double r0 = (1 - ior) / (1 + ior);
@@ -232,10 +228,7 @@ public final class WhittedTracer {
                 tx = eta * ux + a * nx; ty = eta * uy + a * ny; tz = eta * uz + a * nz;
             }
         }
-        if (log != null) {
-            log.line(String.format(Locale.ROOT, "%s  reflect weight=%.4f refract weight=%.4f (path %.4f, cut-off %.5f)",
-                    indent(depth), wr, wt, w, s.minAttenuation));
-        }
+        events.secondaryWeights(depth, wr, wt, w, s.minAttenuation);
         if (wt > 0 && w * wt >= s.minAttenuation) {
             secondaryRays++;
             top = push(top, sp.px - s.eps * nx, sp.py - s.eps * ny, sp.pz - s.eps * nz, tx, ty, tz, w * wt, depth + 1);
@@ -294,13 +287,5 @@ public final class WhittedTracer {
             case 4 -> { out[0] = up; out[1] = lo; out[2] = hi; }
             default -> { out[0] = hi; out[1] = lo; out[2] = down; }
         }
-    }
-
-    private static String kindName(int kind) {
-        return kind == Hit.PATCH ? "patch" : kind == Hit.PLANE ? "plane" : "sphere";
-    }
-
-    private static String indent(int depth) {
-        return "  ".repeat(depth);
     }
 }

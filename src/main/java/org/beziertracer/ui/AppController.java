@@ -339,16 +339,13 @@ public final class AppController {
         SceneDocument doc;
         try {
             doc = loader.get();
-        } catch (RuntimeException e) {
-            dialogs.error("Cannot open " + name, e.getMessage());
-            return false;
-        } catch (OutOfMemoryError e) {
-            dialogs.error("Cannot open " + name, name + ": not enough memory to load this model");
+        } catch (RuntimeException | OutOfMemoryError e) {
+            dialogs.error("Cannot open " + name, oneLine(e));
             return false;
         }
         history.reset(doc.scene());
         documentName = name;
-        file = source != null && !source.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? source : null;
+        file = source != null && ModelLoader.savesInPlace(source) ? source : null;
         hover = null;
         tools.apply(doc.settings());
         tools.light = LightPlacement.SCENE;
@@ -379,7 +376,7 @@ public final class AppController {
     }
 
     public boolean saveAs() {
-        Path p = dialogs.chooseSave("Save surface", "bpt", "obj");
+        Path p = dialogs.chooseSave("Save surface", ModelLoader.saveExtensions());
         return p != null && saveTo(p);
     }
 
@@ -436,9 +433,8 @@ public final class AppController {
         }
     }
 
-    private static String oneLine(Exception e) {
-        String m = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-        return m.replace('\n', ' ');
+    private static String oneLine(Throwable e) {
+        return org.beziertracer.render.Failures.describe(e);
     }
 
     /** Window closing: true when it may close (edits saved or discarded); stops the engine. */

@@ -3,16 +3,17 @@ package org.beziertracer.ui;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.Locale;
 
 import javax.imageio.ImageIO;
 
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.AtomicFiles;
-import org.beziertracer.model.io.Models;
+import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.MeshObjWriter;
+import org.beziertracer.model.io.SceneDocument;
 
 /**
  * File → Save, Export PNG and Export Mesh. Every write is atomic (temporary file in the target
@@ -24,13 +25,12 @@ public final class DocumentFiles {
     /** Cells per patch side of an exported mesh. */
     public static final int MESH_SEGMENTS = 16;
 
-    /** Saves the patches of {@code scene} as BPT or OBJ by the file's extension. */
+    /** Saves the surfaces of {@code scene} in the model format its extension names ({@link ModelLoader#SAVE_FORMATS}). */
     public static void saveModel(Path file, Scene scene) throws IOException {
-        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (!name.endsWith(".bpt") && !name.endsWith(".obj")) {
-            throw new IllegalArgumentException(file + ": save as .bpt or .obj");
-        }
-        Models.save(file, scene.patches());
+        FileFormat format = ModelLoader.SAVE_FORMATS.stream().filter(f -> f.matches(file.toString())).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException(file + ": save as "
+                        + org.beziertracer.model.io.FileFormats.extensionList(ModelLoader.SAVE_FORMATS)));
+        format.write(file, new SceneDocument(scene, RenderSettings.defaults()));
     }
 
     /** Writes the picture as PNG. */

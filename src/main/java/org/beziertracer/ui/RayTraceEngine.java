@@ -15,6 +15,7 @@ import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.render.Camera;
+import org.beziertracer.render.Failures;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.FrameStats;
 import org.beziertracer.render.RenderJob;
@@ -74,8 +75,7 @@ public final class RayTraceEngine implements PictureEngine {
 
     private void fail(Throwable e) {
         frameDone = true;
-        String msg = e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
-        errors.accept(msg.replace('\n', ' '));
+        errors.accept(Failures.describe(e));
     }
 
     @Override

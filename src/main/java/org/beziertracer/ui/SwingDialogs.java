@@ -9,6 +9,9 @@ import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import org.beziertracer.model.io.FileFormat;
+import org.beziertracer.model.io.FileFormats;
+
 /** {@link UserDialogs} with {@link JFileChooser} and {@link JOptionPane}, remembering the last folder. */
 final class SwingDialogs implements UserDialogs {
 
@@ -23,8 +26,13 @@ final class SwingDialogs implements UserDialogs {
     public Path chooseOpen() {
         JFileChooser fc = new JFileChooser(folder);
         fc.setDialogTitle("Open model or scene");
-        fc.setFileFilter(new FileNameExtensionFilter("Models and scenes (*.bpt, *.obj, *.json)",
-                ModelLoader.EXTENSIONS.toArray(String[]::new)));
+        for (FileFormat f : ModelLoader.OPEN_FORMATS) {
+            fc.addChoosableFileFilter(new FileNameExtensionFilter(f.filterLabel(),
+                    f.extensions().toArray(String[]::new)));
+        }
+        fc.setFileFilter(new FileNameExtensionFilter("Models and scenes ("
+                + FileFormats.patterns(ModelLoader.OPEN_FORMATS) + ")",
+                FileFormats.extensions(ModelLoader.OPEN_FORMATS).toArray(String[]::new)));
         if (fc.showOpenDialog(parent) != JFileChooser.APPROVE_OPTION) {
             return null;
         }

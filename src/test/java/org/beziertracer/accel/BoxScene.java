@@ -5,9 +5,10 @@ import java.util.Random;
 
 /**
  * Test fixture: seeded random boxes and rays, a leaf callback whose "primitive" is the box itself
- * (hit distance = ray–box entry distance), and the brute-force answer to compare with.
+ * (hit distance = ray–box entry distance), and the brute-force answer to compare with. The scene
+ * is its own per-query state: a callback that receives any other query object fails.
  */
-final class BoxScene implements LeafIntersector, LeafOccluder {
+final class BoxScene implements LeafIntersector<BoxScene>, LeafOccluder<BoxScene> {
 
     final double[] bounds;
     final int primCount;
@@ -115,7 +116,8 @@ final class BoxScene implements LeafIntersector, LeafOccluder {
     }
 
     @Override
-    public double intersect(int prim, double tMax) {
+    public double intersect(BoxScene query, int prim, double tMax) {
+        checkQuery(query);
         if (calls[prim]++ == 0) {
             called[calledCount++] = prim;
         } else {
@@ -130,8 +132,15 @@ final class BoxScene implements LeafIntersector, LeafOccluder {
     }
 
     @Override
-    public boolean occludes(int prim, double tMax) {
+    public boolean occludes(BoxScene query, int prim, double tMax) {
+        checkQuery(query);
         return entry(prim, tMax) < tMax;
+    }
+
+    private void checkQuery(BoxScene query) {
+        if (query != this) {
+            throw new AssertionError("the accelerator passed another query object: " + query);
+        }
     }
 
     /** Brute-force closest hit over every primitive. */

@@ -1,8 +1,8 @@
 package org.beziertracer.accel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import org.beziertracer.UserMessages;
 import org.junit.jupiter.api.Test;
 
 class BvhOptionsTest {
@@ -14,8 +14,8 @@ class BvhOptionsTest {
 
     @Test
     void nonsensicalSettingsAreRejected() {
-        assertThrows(IllegalArgumentException.class, () -> new BvhOptions(0, 16));
-        assertThrows(IllegalArgumentException.class, () -> new BvhOptions(4, 1));
-        assertThrows(IllegalArgumentException.class, () -> new BvhOptions(4, BvhOptions.MAX_BIN_COUNT + 1));
+        UserMessages.of(IllegalArgumentException.class, () -> new BvhOptions(0, 16));
+        UserMessages.of(IllegalArgumentException.class, () -> new BvhOptions(4, 1));
+        UserMessages.of(IllegalArgumentException.class, () -> new BvhOptions(4, BvhOptions.MAX_BIN_COUNT + 1));
     }
 }

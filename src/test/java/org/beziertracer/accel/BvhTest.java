@@ -32,7 +32,7 @@ class BvhTest {
             double expected = scene.bruteForce(tMax);
             scene.resetCalls();
             double got = acc.closestHit(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
-                    scene.invDz, scene.tMin, tMax, scene, stack);
+                    scene.invDz, scene.tMin, tMax, scene, scene, stack);
             assertEquals(expected, got, 0, ray);
             assertEquals(-1, scene.calledTwice, () -> ray.get() + ": a prim was called twice");
             if (got < tMax) {
@@ -40,7 +40,7 @@ class BvhTest {
                 assertEquals(got, scene.entry(scene.closestPrim, tMax), 0, () -> ray.get() + ": recorded prim");
             }
             boolean occluded = acc.occluded(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
-                    scene.invDz, scene.tMin, tMax, scene, stack);
+                    scene.invDz, scene.tMin, tMax, scene, scene, stack);
             assertEquals(got < tMax, occluded, () -> ray.get() + ": occluded vs closestHit " + got);
         }
         if (scene.primCount >= 100) {
@@ -84,18 +84,11 @@ class BvhTest {
     }
 
     @Test
-    void theFactoryPicksBvhOrFlatList() {
-        double[] bounds = BoxScene.randomBoxes(new Random(14), 20);
-        assertTrue(Accelerator.of(bounds, 20, BvhOptions.defaults(), true) instanceof Bvh);
-        assertTrue(Accelerator.of(bounds, 20, BvhOptions.defaults(), false) instanceof FlatList);
-    }
-
-    @Test
     void anEmptyTreeMissesEveryRay() {
         Bvh bvh = Bvh.build(new double[0], 0);
-        LeafIntersector never = (p, t) -> { throw new AssertionError("called for " + p); };
-        assertEquals(7.0, bvh.closestHit(0, 0, 0, 1, 1, 1, 0, 7.0, never, bvh.newStack()), 0);
-        assertFalse(bvh.occluded(0, 0, 0, 1, 1, 1, 0, 7.0, (p, t) -> true, bvh.newStack()));
+        LeafIntersector<Object> never = (q, p, t) -> { throw new AssertionError("called for " + p); };
+        assertEquals(7.0, bvh.closestHit(0, 0, 0, 1, 1, 1, 0, 7.0, never, null, bvh.newStack()), 0);
+        assertFalse(bvh.occluded(0, 0, 0, 1, 1, 1, 0, 7.0, (q, p, t) -> true, null, bvh.newStack()));
     }
 
     @Test
@@ -111,7 +104,7 @@ class BvhTest {
         scene.setRay(-1, 0.5, 0.5, 1, 0, 0, 0);
         Bvh bvh = Bvh.build(bounds, n);
         double t = bvh.closestHit(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
-                scene.invDz, 0, Double.POSITIVE_INFINITY, scene, bvh.newStack());
+                scene.invDz, 0, Double.POSITIVE_INFINITY, scene, scene, bvh.newStack());
         assertEquals(1.0, t, 0);
         assertTrue(scene.calledCount <= 2 * BvhOptions.defaults().maxLeafSize(),
                 "callbacks: " + scene.calledCount);

@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.beziertracer.geometry.TestNets.degrees;
 import static org.beziertracer.geometry.TestNets.eval;
 import static org.beziertracer.geometry.TestNets.maxDiff;
@@ -17,8 +18,6 @@ import org.junit.jupiter.api.Test;
 
 class DeCasteljauTest {
 
-    /** Split/sub-patch reproduction, relative to the largest absolute control coordinate. */
-    private static final double REPRODUCTION_REL = 1e-12;
     /** de Casteljau against the independent Bernstein sum (the sum itself loses a few digits). */
     private static final double BERNSTEIN_REL = 1e-11;
     /**
@@ -87,7 +86,7 @@ class DeCasteljauTest {
             } else {
                 DeCasteljau.splitV(net, 0, n, m, dim, t, lo, 0, hi, 0);
             }
-            double tol = REPRODUCTION_REL * size(net, 0, net.length);
+            double tol = ROUNDING * size(net, 0, net.length);
             for (int s = 0; s < SAMPLES; s++) {
                 double a = rnd.nextDouble(), b = rnd.nextDouble();
                 double[] pLo = inU ? eval(net, 0, n, m, dim, a * t, b) : eval(net, 0, n, m, dim, b, a * t);
@@ -164,7 +163,7 @@ class DeCasteljauTest {
             } else {
                 DeCasteljau.restrictV(r, 0, n, m, dim, a, b);
             }
-            double tol = REPRODUCTION_REL * size(net, 0, net.length);
+            double tol = ROUNDING * size(net, 0, net.length);
             for (int s = 0; s < SAMPLES; s++) {
                 double p = rnd.nextDouble(), q = rnd.nextDouble(), mapped = a + p * (b - a);
                 double[] expected = inU ? eval(net, 0, n, m, dim, mapped, q) : eval(net, 0, n, m, dim, q, mapped);
@@ -195,7 +194,7 @@ class DeCasteljauTest {
             double[] inPlace = net.clone();
             DeCasteljau.subPatch(inPlace, 0, n, m, dim, box[0], box[1], box[2], box[3], inPlace, 0);
             assertArrayEquals(Arrays.copyOfRange(dest, pad, dest.length), inPlace, 0, "in place differs");
-            double tol = REPRODUCTION_REL * size(net, 0, net.length);
+            double tol = ROUNDING * size(net, 0, net.length);
             for (int s = 0; s < SAMPLES; s++) {
                 double p = rnd.nextDouble(), q = rnd.nextDouble();
                 double[] expected = eval(net, 0, n, m, dim, box[0] + p * (box[1] - box[0]), box[2] + q * (box[3] - box[2]));
@@ -222,7 +221,7 @@ class DeCasteljauTest {
             // Higher degrees have larger third derivatives (~deg³): scale the tolerance
             double tol = (FD_REL * Math.pow(Math.max(n, m), 3) + FD_ROUNDING_REL) * size(net, 0, net.length);
             String what = degrees(n, m, dim) + " at (" + u + "," + v + ")";
-            assertTrue(maxDiff(s, Arrays.copyOfRange(d, 0, dim)) <= REPRODUCTION_REL, what + ": position");
+            assertTrue(maxDiff(s, Arrays.copyOfRange(d, 0, dim)) <= ROUNDING, what + ": position");
             double eu = maxDiff(su, Arrays.copyOfRange(d, dim, 2 * dim));
             double ev = maxDiff(sv, Arrays.copyOfRange(d, 2 * dim, 3 * dim));
             assertTrue(eu <= tol, () -> what + ": dS/du error " + eu);

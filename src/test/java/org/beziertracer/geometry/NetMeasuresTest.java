@@ -1,5 +1,7 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.DERIVED;
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -91,7 +93,7 @@ class NetMeasuresTest {
                 double f = NetMeasures.flatness(moved, 0, n, m);
                 String what = n + "x" + m + ", P(" + i + "," + j + ") moved by " + d + " along axis " + c;
                 // Only that point deviates, by exactly d (the corners, hence the bilinear patch, are unchanged)
-                assertEquals(d, f, 1e-9 * (1 + d), what);
+                assertEquals(d, f, DERIVED * (1 + d), what);
                 assertTrue(f > previous, what + ": flatness " + f + " not above " + previous);
                 previous = f;
             }
@@ -114,7 +116,7 @@ class NetMeasuresTest {
                 double u = rnd.nextDouble(), v = rnd.nextDouble();
                 double[] p = TestNets.eval(net, 0, n, m, 3, u, v), b = TestNets.eval(corners, 0, 1, 1, 3, u, v);
                 double dist = Math.sqrt(Math.pow(p[0] - b[0], 2) + Math.pow(p[1] - b[1], 2) + Math.pow(p[2] - b[2], 2));
-                assertTrue(dist <= f * (1 + 1e-12), n + "x" + m + " at (" + u + "," + v + "): distance " + dist
+                assertTrue(dist <= f * (1 + ROUNDING), n + "x" + m + " at (" + u + "," + v + "): distance " + dist
                         + " exceeds flatness " + f);
             }
         }

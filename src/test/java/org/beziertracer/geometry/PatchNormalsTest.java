@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -12,8 +13,6 @@ import org.junit.jupiter.api.Test;
 
 class PatchNormalsTest {
 
-    /** |N| − 1. */
-    private static final double UNIT_TOL = 1e-12;
     /** Minimum cosine between a normal and those of its regular neighbours. */
     private static final double NEIGHBOUR_COS = 0.9;
     /** Parameter distance of the "neighbouring regular points". */
@@ -49,7 +48,7 @@ class PatchNormalsTest {
     private static void assertFiniteUnit(double[] nrm, String where) {
         assertTrue(Double.isFinite(nrm[0]) && Double.isFinite(nrm[1]) && Double.isFinite(nrm[2]),
                 where + ": not finite " + Arrays.toString(nrm));
-        assertEquals(1, Math.sqrt(dot(nrm, nrm)), UNIT_TOL, where + ": not unit " + Arrays.toString(nrm));
+        assertEquals(1, Math.sqrt(dot(nrm, nrm)), ROUNDING, where + ": not unit " + Arrays.toString(nrm));
     }
 
     /**
@@ -94,13 +93,13 @@ class PatchNormalsTest {
     @Test
     void aFlatSquareHasNormalPlusZOrientedAsDpduCrossDpdv() {
         double[] net = flatSquare(3, 2);
-        assertEquals(1, normal(net, 3, 2, 0.3, 0.6)[2], UNIT_TOL);
+        assertEquals(1, normal(net, 3, 2, 0.3, 0.6)[2], ROUNDING);
         // Reversing u reverses dS/du and so the normal
         double[] mirrored = net.clone();
         for (int k = 0; k < mirrored.length; k += 3) {
             mirrored[k] = 1 - mirrored[k];
         }
-        assertEquals(-1, normal(mirrored, 3, 2, 0.3, 0.6)[2], UNIT_TOL);
+        assertEquals(-1, normal(mirrored, 3, 2, 0.3, 0.6)[2], ROUNDING);
     }
 
     @Test
@@ -267,7 +266,7 @@ class PatchNormalsTest {
             PatchNormals.unitNormal(net, 0, n, m, u, v, a, 0, scratch);
             PatchNormals.unitNormal(net, 0, n, m, u, v, e, b, 0, scratch);
             for (int c = 0; c < 3; c++) {
-                assertEquals(a[c], b[c], 1e-12, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
+                assertEquals(a[c], b[c], ROUNDING, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
             }
         }
     }

@@ -1,5 +1,6 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Random;
@@ -10,12 +11,11 @@ import org.junit.jupiter.api.Test;
 
 class PatchesTest {
 
-    private static final double TOL = 1e-12;
 
     private static void assertVec(double[] expected, Vec3 actual, String what) {
-        assertEquals(expected[0], actual.x(), TOL, what + " x");
-        assertEquals(expected[1], actual.y(), TOL, what + " y");
-        assertEquals(expected[2], actual.z(), TOL, what + " z");
+        assertEquals(expected[0], actual.x(), ROUNDING, what + " x");
+        assertEquals(expected[1], actual.y(), ROUNDING, what + " y");
+        assertEquals(expected[2], actual.z(), ROUNDING, what + " z");
     }
 
     @Test

@@ -1,18 +1,18 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
 import org.junit.jupiter.api.Test;
 
 class TessellatorTest {
 
-    private static final double TOL = 1e-12;
     /** Triangles with a smaller area (relative to the squared teapot size) count as degenerate. */
     private static final double DEGENERATE_AREA = 1e-9;
 
@@ -44,10 +44,10 @@ class TessellatorTest {
                     double[] s = TestNets.eval(net, 0, 3, 3, 3, u, v);
                     double len = 0;
                     for (int c = 0; c < 3; c++) {
-                        assertEquals(s[c], mesh.position(vert, c), TOL * 100, where + " position");
+                        assertEquals(s[c], mesh.position(vert, c), ROUNDING * 100, where + " position");
                         len += mesh.normal(vert, c) * mesh.normal(vert, c);
                     }
-                    assertEquals(1, Math.sqrt(len), TOL, where + " normal length");
+                    assertEquals(1, Math.sqrt(len), ROUNDING, where + " normal length");
                 }
             }
         }
@@ -80,8 +80,8 @@ class TessellatorTest {
     @Test
     void aSegmentCountOutOfRangeIsRejected() {
         List<BezierPatch> teapot = TestNets.teapot();
-        var e = assertThrows(IllegalArgumentException.class, () -> Tessellator.tessellate(teapot, 0));
-        assertTrue(e.getMessage().contains("got 0"), e.getMessage());
-        assertThrows(IllegalArgumentException.class, () -> Tessellator.tessellate(List.of(), 4));
+        String e = UserMessages.of(IllegalArgumentException.class, () -> Tessellator.tessellate(teapot, 0));
+        assertTrue(e.contains("got 0"), e);
+        UserMessages.of(IllegalArgumentException.class, () -> Tessellator.tessellate(List.of(), 4));
     }
 }

@@ -1,5 +1,8 @@
 package org.beziertracer.intersect;
 
+import static org.beziertracer.Tolerances.ON_SURFACE;
+import static org.beziertracer.Tolerances.ROOT_T;
+import static org.beziertracer.Tolerances.ROOT_UV;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
@@ -15,9 +18,6 @@ import org.junit.jupiter.params.provider.EnumSource;
 
 /** Accuracy of the three solvers: a ray aimed at S(u*,v*) comes back with t*, u*, v*. */
 class BezierClipperTest {
-
-    /** |Δt| allowed, as a fraction of the scene size (the bound). */
-    static final double T_TOLERANCE = 1e-9;
 
     @ParameterizedTest
     @EnumSource(value = Method.class, names = {"CLIPPING", "NEWTON"})
@@ -56,9 +56,9 @@ class BezierClipperTest {
                         }
                         continue;
                     }
-                    if (Math.abs(hit.t - tStar) <= T_TOLERANCE * size * scale) {
-                        assertEquals(us, hit.u, 1e-6, "u " + where);
-                        assertEquals(vs, hit.v, 1e-6, "v " + where);
+                    if (Math.abs(hit.t - tStar) <= ROOT_T * size * scale) {
+                        assertEquals(us, hit.u, ROOT_UV, "u " + where);
+                        assertEquals(vs, hit.v, ROOT_UV, "v " + where);
                     } else if (method == Method.NEWTON && hit.t > tStar) {
                         misses++; // Newton missed the nearer root and converged to a farther one
                     } else {
@@ -83,7 +83,7 @@ class BezierClipperTest {
                 new double[DeCasteljau.SCRATCH_LENGTH]);
         double ex = ox + hit.t * dx - s[0], ey = oy + hit.t * dy - s[1], ez = oz + hit.t * dz - s[2];
         double err = Math.sqrt(ex * ex + ey * ey + ez * ez);
-        assertTrue(err <= 1e-8 * size, "hit point off the surface by " + err + ": " + where);
+        assertTrue(err <= ON_SURFACE * size, "hit point off the surface by " + err + ": " + where);
     }
 
     /** Near-tangent rays: whatever is returned must be a genuine root, and nothing may be NaN. */

@@ -1,5 +1,9 @@
 package org.beziertracer.intersect;
 
+import static org.beziertracer.Tolerances.ROOT_T;
+import static org.beziertracer.Tolerances.ROUNDING;
+import static org.beziertracer.Tolerances.SAME_ROOT_UV;
+import static org.beziertracer.Tolerances.SUBDIVISION_T;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -18,6 +22,9 @@ import org.junit.jupiter.api.Test;
 
 /** Whole-scene queries: BVH against brute force, occluded against closestHit, solvers against a reference. */
 class SceneIntersectorTest {
+
+    /** Size of {@link #wildScene}s: patches of size 2 placed in [0,6]³, about 10 across. */
+    static final double SCENE_SIZE = 10;
 
     static Scene wildScene(Random rnd, int patches, int maxDegree) {
         List<BezierPatch> list = new ArrayList<>();
@@ -59,7 +66,7 @@ class SceneIntersectorTest {
             assertEquals(b, a, "hit/miss differs: " + where);
             if (a) {
                 hits++;
-                assertEquals(h2.t, h1.t, 1e-9 * 10, "t differs: " + where);
+                assertEquals(h2.t, h1.t, ROOT_T * SCENE_SIZE, "t differs: " + where);
                 assertEquals(h2.index, h1.index, "patch differs: " + where);
             }
         }
@@ -107,10 +114,10 @@ class SceneIntersectorTest {
                 assertEquals(ref != null, a, "clipping hit/miss differs from the reference: " + where);
                 if (ref != null) {
                     compared++;
-                    assertEquals(ref[0], hc.t, 1e-9, "clipping t: " + where);
-                    assertEquals(ref[1], hc.u, 1e-7, "clipping u: " + where);
-                    assertEquals(ref[2], hc.v, 1e-7, "clipping v: " + where);
-                    if (b && Math.abs(hn.t - ref[0]) < 1e-9) {
+                    assertEquals(ref[0], hc.t, ROOT_T, "clipping t: " + where); // stricter than ROOT_T × size 4
+                    assertEquals(ref[1], hc.u, SAME_ROOT_UV, "clipping u: " + where);
+                    assertEquals(ref[2], hc.v, SAME_ROOT_UV, "clipping v: " + where);
+                    if (b && Math.abs(hn.t - ref[0]) < ROOT_T) {
                         newtonAgrees++;
                     }
                 }
@@ -137,7 +144,7 @@ class SceneIntersectorTest {
             assertEquals(a, b, "ray " + r);
             if (a) {
                 both++;
-                assertEquals(he.t, hs.t, 1e-3 * 4, "subdivision t close to exact, ray " + r);
+                assertEquals(he.t, hs.t, SUBDIVISION_T * 4, "subdivision t close to exact, ray " + r);
             }
         }
         assertTrue(both > 300);
@@ -152,20 +159,20 @@ class SceneIntersectorTest {
         Hit hit = new Hit();
         assertTrue(si.closestHit(ctx, 0, 0, 10, 0, 0, -2, 0, Double.POSITIVE_INFINITY, hit));
         assertEquals(Hit.SPHERE, hit.kind);
-        assertEquals(3.5, hit.t, 1e-12);
+        assertEquals(3.5, hit.t, ROUNDING);
         assertTrue(si.closestHit(ctx, 5, 0, 10, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
         assertEquals(Hit.PLANE, hit.kind);
-        assertEquals(10, hit.t, 1e-12);
+        assertEquals(10, hit.t, ROUNDING);
         // from inside the sphere, the far side
         assertTrue(si.closestHit(ctx, 0, 0, 2, 0, 0, 1, 0, Double.POSITIVE_INFINITY, hit));
-        assertEquals(1, hit.t, 1e-12);
+        assertEquals(1, hit.t, ROUNDING);
         assertFalse(si.occluded(ctx, 5, 0, 10, 0, 0, -1, 0, 9.9));
         assertTrue(si.occluded(ctx, 5, 0, 10, 0, 0, -1, 0, 10.1));
         SurfacePoint sp = new SurfacePoint();
         si.closestHit(ctx, 0, 0, 10, 0, 0, -2, 0, Double.POSITIVE_INFINITY, hit);
         si.surfacePoint(ctx, hit, sp);
-        assertEquals(3, sp.pz, 1e-12);
-        assertEquals(1, sp.nz, 1e-12);
+        assertEquals(3, sp.pz, ROUNDING);
+        assertEquals(1, sp.nz, ROUNDING);
     }
 
     @Test
@@ -220,7 +227,7 @@ class SceneIntersectorTest {
             boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
             assertEquals(b, a, "ray " + r);
             if (a) {
-                assertEquals(h2.t, h1.t, 1e-9, "ray " + r);
+                assertEquals(h2.t, h1.t, ROOT_T, "ray " + r);
             }
         }
     }
@@ -235,7 +242,7 @@ class SceneIntersectorTest {
         double t = hit.t;
         for (double scale : new double[] {1e-200, 1e-100, 1e100, 1e200}) {
             assertTrue(si.closestHit(ctx, 0, 0, 220, 0, 0, -scale, 0, Double.POSITIVE_INFINITY, hit), "scale " + scale);
-            assertEquals(t, hit.t * scale, 1e-9 * t, "t scales with 1/|d|, scale " + scale);
+            assertEquals(t, hit.t * scale, ROOT_T * t, "t scales with 1/|d|, scale " + scale);
             assertTrue(si.closestHit(ctx, 0, 0, 220, scale * 1e-3, scale * 2e-3, -scale, 0, Double.POSITIVE_INFINITY, hit),
                     "oblique, scale " + scale);
             assertTrue(Double.isFinite(hit.u) && Double.isFinite(hit.v), "finite (u,v) at scale " + scale);

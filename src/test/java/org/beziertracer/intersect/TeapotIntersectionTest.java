@@ -1,5 +1,8 @@
 package org.beziertracer.intersect;
 
+import static org.beziertracer.Tolerances.NORMAL;
+import static org.beziertracer.Tolerances.ROOT_T;
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -16,10 +19,12 @@ import org.junit.jupiter.params.provider.EnumSource;
 class TeapotIntersectionTest {
 
     static final Scene TEAPOT = Models.load("teapot");
+    /** The diagonal of the teapot's control box, the scale of its tolerances. */
+    static final double TEAPOT_SIZE = TEAPOT.controlBounds().diagonal();
 
     static void assertUnitNormal(SurfacePoint sp, String where) {
         double len = Math.sqrt(sp.nx * sp.nx + sp.ny * sp.ny + sp.nz * sp.nz);
-        assertTrue(Double.isFinite(len) && Math.abs(len - 1) < 1e-9, "normal " + sp.nx + "," + sp.ny + "," + sp.nz + " at " + where);
+        assertTrue(Double.isFinite(len) && Math.abs(len - 1) < ROUNDING, "normal " + sp.nx + "," + sp.ny + "," + sp.nz + " at " + where);
     }
 
     @ParameterizedTest
@@ -39,8 +44,8 @@ class TeapotIntersectionTest {
             si.surfacePoint(ctx, hit, sp);
             assertUnitNormal(sp, where);
             if (method == Method.CLIPPING) {
-                assertEquals(100, hit.t, 1e-6, "the lid top is at t=100: " + where);
-                assertEquals(1, Math.abs(sp.nz), 1e-6, "lid-top normal is vertical: " + where);
+                assertEquals(100, hit.t, ROOT_T * TEAPOT_SIZE, "the lid top is at t=100: " + where);
+                assertEquals(1, Math.abs(sp.nz), NORMAL, "lid-top normal is vertical: " + where);
             }
         }
     }

@@ -1,8 +1,9 @@
 package org.beziertracer.intersect;
 
+import static org.beziertracer.Tolerances.DERIVED;
+import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -10,6 +11,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
@@ -105,15 +107,15 @@ class TessellatedModeTest {
                     continue;
                 }
                 hits++;
-                assertEquals(ref[0], hit.t, 1e-9, "t: " + where);
+                assertEquals(ref[0], hit.t, DERIVED, "t: " + where);
                 assertEquals(mesh.patchOfTriangle((int) ref[1]), hit.index, "patch: " + where);
                 si.surfacePoint(ctx, hit, sp);
                 // The point lies on the ray and on the triangle; the normal is unit length
-                assertEquals(ray[0] + hit.t * ray[3], sp.px, 1e-9, "x on the ray: " + where);
-                assertEquals(ray[1] + hit.t * ray[4], sp.py, 1e-9, "y on the ray: " + where);
-                assertEquals(ray[2] + hit.t * ray[5], sp.pz, 1e-9, "z on the ray: " + where);
-                assertEquals(1, Math.sqrt(sp.nx * sp.nx + sp.ny * sp.ny + sp.nz * sp.nz), 1e-12, "unit normal: " + where);
-                assertTrue(hit.u >= -1e-12 && hit.u <= 1 + 1e-12 && hit.v >= -1e-12 && hit.v <= 1 + 1e-12,
+                assertEquals(ray[0] + hit.t * ray[3], sp.px, DERIVED, "x on the ray: " + where);
+                assertEquals(ray[1] + hit.t * ray[4], sp.py, DERIVED, "y on the ray: " + where);
+                assertEquals(ray[2] + hit.t * ray[5], sp.pz, DERIVED, "z on the ray: " + where);
+                assertEquals(1, Math.sqrt(sp.nx * sp.nx + sp.ny * sp.ny + sp.nz * sp.nz), ROUNDING, "unit normal: " + where);
+                assertTrue(hit.u >= -ROUNDING && hit.u <= 1 + ROUNDING && hit.v >= -ROUNDING && hit.v <= 1 + ROUNDING,
                         "uv inside the patch: " + where);
             }
             assertTrue(hits > 300, "rays should hit often, hit " + hits);
@@ -199,7 +201,7 @@ class TessellatedModeTest {
 
     @Test
     void optionsRejectANegativeTessellation() {
-        assertThrows(IllegalArgumentException.class, () -> IntersectOptions.defaults().withTessellate(-1));
+        UserMessages.of(IllegalArgumentException.class, () -> IntersectOptions.defaults().withTessellate(-1));
         assertFalse(IntersectOptions.defaults().tessellated());
         assertTrue(IntersectOptions.defaults().withTessellate(3).tessellated());
     }

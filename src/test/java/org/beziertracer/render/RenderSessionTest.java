@@ -1,5 +1,6 @@
 package org.beziertracer.render;
 
+import static org.beziertracer.Tolerances.FLOAT;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -176,7 +177,7 @@ class RenderSessionTest {
         float[] px = new float[3];
         r.film().pixel(30, 20, px);
         for (int c = 0; c < 3; c++) {
-            assertEquals(px[c], rgb[c], 1e-5);
+            assertEquals(px[c], rgb[c], FLOAT);
         }
         assertTrue(lines.stream().anyMatch(l -> l.contains("hit ")), String.join("\n", lines));
     }

@@ -1,5 +1,6 @@
 package org.beziertracer.render;
 
+import static org.beziertracer.Tolerances.COLOUR;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.beziertracer.math.Vec3;
@@ -11,7 +12,6 @@ import org.beziertracer.model.Scene;
 import org.junit.jupiter.api.Test;
 
 class ShadingTest {
-    static final double EPS = 1e-6;
 
     private static RenderJob job(Scene scene, Camera camera, int w, int h, int depth) {
         RenderSettings s = new RenderSettings(w, h, 1, "regular", "clipping", true, "phong", 0, true, depth);
@@ -27,9 +27,9 @@ class ShadingTest {
         double[] rgb = new double[3];
         WhittedTracer.forJob(job(scene, camera, 9, 9, 5)).trace(0, 0, 10, 0, 0, -1, rgb);
         // n·l = 1 and r·v = 1 at the foot of the eye: (ka + kd)·C + ks
-        assertEquals(0.85 * 0.5 + 0.4, rgb[0], EPS);
-        assertEquals(0.85 * 0.25 + 0.4, rgb[1], EPS);
-        assertEquals(0.85 * 0.125 + 0.4, rgb[2], EPS);
+        assertEquals(0.85 * 0.5 + 0.4, rgb[0], COLOUR);
+        assertEquals(0.85 * 0.25 + 0.4, rgb[1], COLOUR);
+        assertEquals(0.85 * 0.125 + 0.4, rgb[2], COLOUR);
     }
 
     @Test
@@ -41,7 +41,7 @@ class ShadingTest {
         Camera camera = Camera.lookAt(new Vec3(0, 0, 10), Vec3.ZERO, Vec3.Y, 40);
         double[] rgb = new double[3];
         WhittedTracer.forJob(job(scene, camera, 9, 9, 5)).trace(0, 0, 10, 0, 0, -1, rgb);
-        assertEquals(Math.cos(Math.toRadians(45)), rgb[0], EPS);
+        assertEquals(Math.cos(Math.toRadians(45)), rgb[0], COLOUR);
     }
 
     @Test
@@ -54,7 +54,7 @@ class ShadingTest {
         double[] rgb = new double[3];
         WhittedTracer t = WhittedTracer.forJob(job(scene, camera, 9, 9, 5));
         t.trace(3, 0, 10, -3, 0.001, -10, rgb); // hits the plane near the origin, under the sphere
-        assertEquals(0.1, rgb[0], EPS, "only ambient in the shadow");
+        assertEquals(0.1, rgb[0], COLOUR, "only ambient in the shadow");
         assertEquals(1, t.shadowRays());
     }
 
@@ -100,8 +100,8 @@ class ShadingTest {
         double[] rgb = new double[3];
         WhittedTracer.forJob(RenderJob.prepare(scene, s, RenderOptions.defaults()).withCamera(camera))
                 .trace(0, 0, 10, 0, 0, -1, rgb);
-        assertEquals(0.5, rgb[0], EPS);
-        assertEquals(0.5, rgb[1], EPS);
-        assertEquals(1, rgb[2], EPS);
+        assertEquals(0.5, rgb[0], COLOUR);
+        assertEquals(0.5, rgb[1], COLOUR);
+        assertEquals(1, rgb[2], COLOUR);
     }
 }

@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.BeforeEach;
@@ -166,7 +167,7 @@ class AppControllerTest {
         c.setTessellated(false);
         assertEquals(0, engine.requests.get(engine.requests.size() - 1).tessellate());
         assertEquals(8, c.tools().tessellation, "K is kept for the next time the mode is on");
-        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.setTessellation(0));
+        UserMessages.of(IllegalArgumentException.class, () -> c.setTessellation(0));
     }
 
     @Test

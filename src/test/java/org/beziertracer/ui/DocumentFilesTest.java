@@ -1,7 +1,6 @@
 package org.beziertracer.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
@@ -11,6 +10,7 @@ import java.nio.file.Path;
 
 import javax.imageio.ImageIO;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
@@ -29,7 +29,7 @@ class DocumentFilesTest {
             DocumentFiles.saveModel(f, s);
             assertEquals(s.patches(), Models.load(f.toString()).patches(), name);
         }
-        assertThrows(IllegalArgumentException.class, () -> DocumentFiles.saveModel(dir.resolve("s.txt"), s));
+        UserMessages.of(IllegalArgumentException.class, () -> DocumentFiles.saveModel(dir.resolve("s.txt"), s));
         try (var files = Files.list(dir)) {
             assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".tmp")), "no temporary file left");
         }

@@ -4,6 +4,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.beziertracer.UserMessages;
+
 /** Scripted {@link UserDialogs} for controller tests: records errors, answers prompts as told. */
 final class FakeDialogs implements UserDialogs {
     final List<String> errors = new ArrayList<>();
@@ -25,5 +27,5 @@ final class FakeDialogs implements UserDialogs {
     }
 
     @Override
-    public void error(String title, String message) { errors.add(message); }
+    public void error(String title, String message) { errors.add(UserMessages.check(message)); }
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.intersect.SceneIntersector;
@@ -81,7 +82,8 @@ class RayTraceEngineTest {
             // a request without a camera cannot be prepared
             engine.submit(new RenderRequest(Models.patch(), null, t.renderSettings(32, 24), 1, fb));
             String msg = errors.poll(20, java.util.concurrent.TimeUnit.SECONDS);
-            assertTrue(msg != null && !msg.contains("\n"), "one error line, got " + msg);
+            assertTrue(msg != null, "an error line");
+            UserMessages.check(msg);
             long deadline = System.nanoTime() + 20_000_000_000L;
             while (engine.busy() && System.nanoTime() < deadline) {
                 Thread.sleep(10);

@@ -6,6 +6,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.GeneratedModels;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.render.Camera;
@@ -15,7 +16,7 @@ import org.beziertracer.render.RenderOptions;
 /**
  * The reference frames of the speed issues, as {@link RenderJob}s (setup-time only; the
  * rendering itself is {@code Renderer.renderOnce}). Every case is 800×600, 1 spp, Phong, shadow
- * rays on, the model's default method and BVH; each equals a CLI command
+ * rays on, the model's default method and BVH; each built-in case equals a CLI command
  * ({@code render NAME -o out.png --size 800x600 [camera and light flags] --stats --repeat N}):
  * <ul>
  * <li>{@code teapot}: eye (-150,-420,260), target (10,0,55), up (0,0,1), horizontal fov 40°, one
@@ -24,7 +25,8 @@ import org.beziertracer.render.RenderOptions;
  * <li>{@code patch}: the default bicubic patch, its "fit model" camera, light at the eye (no
  * flags);</li>
  * <li>{@code wavyN} ({@code N = 2..16}; {@code wavy10} is degree 9×9, {@code wavy6} degree
- * 5×5): the generated wavy grid of N×N points, fit camera, light at the eye (no flags);</li>
+ * 5×5, both built-ins): the generated wavy grid of N×N points, fit camera, light at the eye (no
+ * flags);</li>
  * <li>{@code curved}: the strongly curved bicubic arch seen from the side, eye (-4.5,-5,2.5),
  * target (0,0,0.6), light (-2,-4,5), so the arch shadows its own inside — {@code --eye
  * -4.5,-5,2.5 --target 0,0,0.6 --light -2,-4,5}.</li>
@@ -75,10 +77,17 @@ public final class FrameScenes {
         return points;
     }
 
+    /** The document of case {@code name}: a built-in, or a generated wavy grid of any size. */
+    static SceneDocument document(String name) {
+        if (name.startsWith("wavy")) {
+            return new SceneDocument(GeneratedModels.wavy(points(name)), RenderSettings.defaults());
+        }
+        return SceneFiles.load(name);
+    }
+
     /** The scene (lights placed) of case {@code name}. */
     public static Scene scene(String name) {
-        SceneDocument doc = SceneFiles.load(name);
-        Scene scene = doc.scene();
+        Scene scene = document(name).scene();
         Vec3 light = switch (name) {
             case "teapot" -> new Vec3(-200, -350, 450);
             case "curved" -> new Vec3(-2, -4, 5);
@@ -98,8 +107,7 @@ public final class FrameScenes {
         if (!name.equals("teapot") && !name.equals("patch") && !name.equals("curved")) {
             points(name); // validates
         }
-        SceneDocument doc = SceneFiles.load(name);
-        RenderSettings s = doc.settings();
+        RenderSettings s = document(name).settings();
         RenderSettings settings = new RenderSettings(WIDTH, HEIGHT, 1, s.sampler(), s.method(), s.bvh(), "phong",
                 s.checker(), true, s.maxDepth());
         RenderOptions options = RenderOptions.defaults().withThreads(threads).withProgressive(false)

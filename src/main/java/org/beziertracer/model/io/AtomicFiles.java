@@ -8,6 +8,7 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -15,12 +16,17 @@ import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
- * Saves a file atomically: the content goes to a temporary file in the target's directory, which
- * then replaces the target with {@link StandardCopyOption#ATOMIC_MOVE} (falling back to a plain
- * replacing move where the file system cannot do that). A reader never sees a half-written file,
- * and a failed save leaves the old file untouched and no temporary file behind.
+ * Saves a file atomically: the content goes to a temporary file {@code .NAME.DIGITS.tmp} in the
+ * target's directory, which then replaces the target with {@link StandardCopyOption#ATOMIC_MOVE}
+ * (falling back to a plain replacing move where the file system cannot do that). A reader never
+ * sees a half-written file, and a failed save leaves the old file untouched and no temporary file
+ * behind; a save first removes the temporary files a killed save of the same target left.
+ *
+ * <p>Every failure is one {@link IOException} line naming the target and the reason,
+ * {@code teapot.bpt: cannot write: permission denied} ({@link IoReasons}), never the temporary file.
  */
 public final class AtomicFiles {
     private AtomicFiles() {}
@@ -55,12 +61,21 @@ public final class AtomicFiles {
     public static void writeBytes(Path target, BinaryContent content) throws IOException {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
-        if (dir == null || !Files.isDirectory(dir)) {
-            throw new IOException(target + ": the directory " + dir + " does not exist");
+        if (dir == null || absolute.getFileName() == null) {
+            throw cannotWrite(target, "not a file name");
         }
-        Path temp = Files.createTempFile(dir, "." + absolute.getFileName() + ".", ".tmp");
+        if (!Files.isDirectory(dir)) {
+            throw cannotWrite(target, "the folder " + dir + " does not exist");
+        }
+        if (Files.isDirectory(absolute)) {
+            throw cannotWrite(target, "is a folder");
+        }
+        String name = absolute.getFileName().toString();
+        Path temp = null;
         boolean moved = false;
         try {
+            removeStaleTemporaries(dir, name);
+            temp = Files.createTempFile(dir, "." + name + ".", ".tmp");
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp))) {
                 content.writeTo(out);
             }
@@ -71,10 +86,36 @@ public final class AtomicFiles {
                 Files.move(temp, absolute, StandardCopyOption.REPLACE_EXISTING);
             }
             moved = true;
+        } catch (IOException e) {
+            throw cannotWrite(target, IoReasons.of(e));
         } finally {
-            if (!moved) {
-                Files.deleteIfExists(temp);
+            if (!moved && temp != null) {
+                deleteQuietly(temp);
             }
+        }
+    }
+
+    /** {@code target: cannot write: reason}. */
+    private static IOException cannotWrite(Path target, String reason) {
+        return new IOException(target + ": cannot write: " + reason);
+    }
+
+    /** Deletes {@code .NAME.DIGITS.tmp} files in {@code dir}: what a killed save of NAME left. */
+    private static void removeStaleTemporaries(Path dir, String name) throws IOException {
+        Pattern stale = Pattern.compile("\\." + Pattern.quote(name) + "\\.\\d+\\.tmp");
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir,
+                p -> stale.matcher(p.getFileName().toString()).matches())) {
+            for (Path p : files) {
+                deleteQuietly(p);
+            }
+        }
+    }
+
+    private static void deleteQuietly(Path p) {
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException e) {
+            // Left for the next save of the same target to remove
         }
     }
 

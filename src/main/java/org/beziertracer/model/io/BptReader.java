@@ -1,12 +1,7 @@
 package org.beziertracer.model.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.Reader;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -18,7 +13,7 @@ import org.beziertracer.model.Scene;
  *
  * <h2>Format</h2>
  * <pre>
- * count                      # number of patches, 1..{@value #MAX_PATCH_COUNT}
+ * count                      # number of patches, 1..{@link ReadLimits#patches()} (a million)
  * n m                        # per patch: degree in u, degree in v, each 1..15
  * x y z                      # then (n+1)(m+1) points, u index fastest:
  * ...                        #   point k = j(n+1) + i holds P_ij
@@ -33,43 +28,35 @@ import org.beziertracer.model.Scene;
  * In messages, patches and points are numbered from 1 in file order.
  *
  * <p>The patch count is never used to pre-allocate, so an absurd count in a short file fails on
- * the missing data rather than on memory. Stateless and thread-safe.
+ * the missing data rather than on memory. Lines may be of any length: the reader streams tokens.
+ * Files are opened through {@link FileFormats#BPT}. Stateless and thread-safe.
  */
 public final class BptReader {
     private BptReader() {}
 
-    /** Largest patch count accepted. */
-    public static final int MAX_PATCH_COUNT = 1_000_000;
-
-    /** Reads a BPT file into a scene; errors name the file by {@code file.getFileName()}. */
-    public static Scene readScene(Path file) throws IOException {
-        return new Scene(read(file));
-    }
-
-    /** Reads a BPT file; errors name the file by {@code file.getFileName()}. */
-    public static List<BezierPatch> read(Path file) throws IOException {
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(in, String.valueOf(file.getFileName()));
-        }
-    }
-
     /** Reads BPT text; for tests and in-memory use. */
     public static List<BezierPatch> read(String text, String fileName) {
         try {
-            return read(new java.io.StringReader(text), fileName);
+            return read(TextSource.of(text, fileName));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
     }
 
+    /** The patches of {@code text} as a scene (the reader {@link FileFormats#BPT} declares). */
+    static Scene readScene(TextSource text) throws IOException {
+        return new Scene(read(text));
+    }
+
     /**
-     * Reads BPT text from {@code in} (not closed).
+     * Reads BPT text.
      *
-     * @param fileName shown at the start of every error message
-     * @throws ModelFormatException for any syntax or range problem
+     * @throws ModelFormatException for any syntax or range problem, naming {@link TextSource#fileName()}
      */
-    public static List<BezierPatch> read(Reader in, String fileName) throws IOException {
-        BptTokenizer tokens = new BptTokenizer(in);
+    public static List<BezierPatch> read(TextSource text) throws IOException {
+        String fileName = text.fileName();
+        int maxCount = text.limits().patches();
+        BptTokenizer tokens = new BptTokenizer(text);
 
         // Patch count
         String token = tokens.next();
@@ -79,12 +66,12 @@ public final class BptReader {
         }
         if (!NumberText.isWhole(token)) {
             throw new ModelFormatException(fileName, tokens.line(), "expected the patch count (a whole number 1.."
-                    + MAX_PATCH_COUNT + "), found " + NumberText.describe(token));
+                    + maxCount + "), found " + NumberText.describe(token));
         }
         long count = NumberText.parseWhole(token);
-        if (count < 1 || count > MAX_PATCH_COUNT) {
+        if (count < 1 || count > maxCount) {
             throw new ModelFormatException(fileName, tokens.line(), "expected the patch count, found "
-                    + NumberText.describe(token) + ": patch count " + token + " out of range 1.." + MAX_PATCH_COUNT);
+                    + NumberText.describe(token) + ": patch count " + Echo.cut(token) + " out of range 1.." + maxCount);
         }
 
         // Patches; the list grows as data arrives, never sized from the announced count
@@ -97,9 +84,13 @@ public final class BptReader {
             double[] net = new double[points * 3];
             for (int k = 0; k < points; k++) {
                 for (int c = 0; c < 3; c++) {
-                    String what = "the " + "xyz".charAt(c) + " coordinate of point " + (k + 1) + of;
                     token = tokens.next();
-                    net[3 * k + c] = NumberText.parseFinite(token, what, fileName, tokens.line());
+                    double v = NumberText.finiteOrNaN(token);
+                    if (Double.isNaN(v)) { // throws, saying why
+                        String what = "the " + "xyz".charAt(c) + " coordinate of point " + (k + 1) + of;
+                        NumberText.parseFinite(token, what, fileName, tokens.line());
+                    }
+                    net[3 * k + c] = v;
                 }
             }
             patches.add(new BezierPatch(n, m, net));
@@ -123,7 +114,8 @@ public final class BptReader {
         long degree = NumberText.parseWhole(token);
         if (degree < 1 || degree > BezierPatch.MAX_DEGREE) {
             throw new ModelFormatException(fileName, tokens.line(), "expected the " + what + ", found "
-                    + NumberText.describe(token) + ": degree " + token + " out of range 1.." + BezierPatch.MAX_DEGREE);
+                    + NumberText.describe(token) + ": degree " + Echo.cut(token) + " out of range 1.."
+                    + BezierPatch.MAX_DEGREE);
         }
         return (int) degree;
     }

@@ -1,21 +1,23 @@
 package org.beziertracer.model.io;
 
 import java.io.IOException;
-import java.io.Reader;
 
 /**
- * Splits a BPT stream into whitespace-separated tokens, dropping {@code #} comments (to the end
- * of the line) and remembering the 1-based line of each token. Streams; never reads the whole
- * file into memory.
+ * Splits BPT text into whitespace-separated tokens, dropping {@code #} comments (to the end of
+ * the line) and remembering the 1-based line of each token. Streams: holds one token (at most
+ * {@value #MAX_TOKEN_CHARS} characters are kept; a longer one is reported by its start), never a
+ * line or the file.
  */
 final class BptTokenizer {
 
-    private final Reader in;
-    private int line = 1;
+    /** Characters of a token kept for its message; more are read but dropped. */
+    static final int MAX_TOKEN_CHARS = 1024;
+
+    private final TextSource in;
     private int tokenLine = 1;
     private int pushedBack = -2;
 
-    BptTokenizer(Reader in) {
+    BptTokenizer(TextSource in) {
         this.in = in;
     }
 
@@ -27,7 +29,7 @@ final class BptTokenizer {
                 return null;
             }
             if (c == '#') {
-                while (c != -1 && c != '\n') {
+                while (c != -1 && c != '\n' && c != '\r') {
                     c = read();
                 }
             } else if (Character.isWhitespace(c)) {
@@ -36,10 +38,10 @@ final class BptTokenizer {
                 break;
             }
         }
-        tokenLine = line;
+        tokenLine = in.line();
         StringBuilder sb = new StringBuilder();
         while (c != -1 && c != '#' && !Character.isWhitespace(c)) {
-            if (sb.length() < 1024) {
+            if (sb.length() < MAX_TOKEN_CHARS) {
                 sb.append((char) c);
             }
             c = read();
@@ -61,10 +63,6 @@ final class BptTokenizer {
             pushedBack = -2;
             return c;
         }
-        int c = in.read();
-        if (c == '\n') {
-            line++;
-        }
-        return c;
+        return in.read();
     }
 }

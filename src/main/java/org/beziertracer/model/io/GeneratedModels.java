@@ -6,14 +6,15 @@ import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 
 /**
- * Generated built-in models, the benchmark surfaces of the speed issue (one definition for the
- * CLI, the app and {@code bench/}'s {@code FrameBench}):
+ * Generated models, the benchmark surfaces of the speed issue (one definition for the CLI, the
+ * app and {@code bench/}'s {@code FrameBench}); {@link BuiltIns} offers {@code wavy6},
+ * {@code wavy10} and {@code curved}:
  * <ul>
- *   <li>{@code wavyN}, {@code N = 2..16} — one patch of {@code N×N} control points (degree
- *       {@code N−1} in u and v) over the square of {@link Models#flatGrid}, lifted by the smooth,
- *       non-separable height {@link #height}; {@code wavy10} is the largest grid the toolbox
- *       offers (degree 9×9), {@code wavy4} a bicubic.</li>
- *   <li>{@code curved} — one strongly curved bicubic patch: an arch (a half-tube of height 1.5
+ *   <li>{@link #wavy wavy(N)}, {@code N = 2..16} — one patch of {@code N×N} control points
+ *       (degree {@code N−1} in u and v) over the square of {@link Models#flatGrid}, lifted by the
+ *       smooth, non-separable height {@link #height}; {@code wavy10} is the largest grid the
+ *       toolbox offers (degree 9×9).</li>
+ *   <li>{@link #curved()} — one strongly curved bicubic patch: an arch (a half-tube of height 1.5
  *       over {@code x ∈ [-1.5, 1.5]}) running along y, with a twist, seen from the side in the
  *       benchmarks.</li>
  * </ul>
@@ -22,27 +23,14 @@ import org.beziertracer.model.Scene;
 public final class GeneratedModels {
     private GeneratedModels() {}
 
-    /** Prefix of the wavy grids' names. */
-    public static final String WAVY = "wavy";
-    /** Name of the curved bicubic patch. */
-    public static final String CURVED = "curved";
+    /** The {@code points×points} wavy grid as a scene: {@link #wavyGrid}. */
+    public static Scene wavy(int points) {
+        return new Scene(List.of(wavyGrid(points)));
+    }
 
-    /**
-     * The model called {@code name} ({@code wavy2} … {@code wavy16}, {@code curved};
-     * lower case), or null when {@code name} is none of them.
-     */
-    static Scene builtIn(String name) {
-        if (name.equals(CURVED)) {
-            return new Scene(List.of(curvedPatch()));
-        }
-        if (name.startsWith(WAVY) && name.length() > WAVY.length() && name.length() <= WAVY.length() + 2
-                && name.substring(WAVY.length()).chars().allMatch(Character::isDigit)) {
-            int points = Integer.parseInt(name.substring(WAVY.length()));
-            if (points >= 2 && points <= BezierPatch.MAX_DEGREE + 1) {
-                return new Scene(List.of(wavyGrid(points)));
-            }
-        }
-        return null;
+    /** The curved bicubic as a scene: {@link #curvedPatch}. */
+    public static Scene curved() {
+        return new Scene(List.of(curvedPatch()));
     }
 
     /**
@@ -57,6 +45,8 @@ public final class GeneratedModels {
     /**
      * {@link Models#flatGrid flatGrid(points, points)} with every control point lifted to
      * {@code z = height(x, y)}.
+     *
+     * @param points control points along u and v, 2..16
      */
     public static BezierPatch wavyGrid(int points) {
         BezierPatch flat = Models.flatGrid(points, points);

@@ -22,9 +22,10 @@ import com.google.gson.stream.JsonToken;
 import com.google.gson.stream.MalformedJsonException;
 
 /**
- * A JSON value together with its JSON path ({@code $.spheres[1].radius}) and the name of the file
- * it came from, so every check can fail with a one-line {@link ModelFormatException}
- * {@code file: $.path: expected …, found …}.
+ * A JSON value together with its path in the document ({@code spheres[1].radius}; the root's path
+ * is empty) and the name of the file it came from, so every check can fail with a one-line
+ * {@link ModelFormatException} {@code file: path: expected …, found …}. Input echoed in a message
+ * (keys, strings, numbers) is cut to 60 characters ({@link Echo}).
  *
  * <p>{@link #parse} reads strict RFC 8259 JSON with Gson's {@link JsonReader} (no comments, no
  * NaN/Infinity, no trailing commas, no duplicate keys) and reports syntax errors with the line
@@ -39,7 +40,6 @@ final class JsonNode {
     private static final Pattern GSON_POSITION =
             Pattern.compile("(?s)(.*?) at line (\\d+) column (\\d+) path (\\S*).*");
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_][A-Za-z0-9_-]*");
-    private static final int SHOWN_CHARS = 40;
 
     private final JsonElement value;
     private final String path;
@@ -55,21 +55,22 @@ final class JsonNode {
     static JsonNode parse(String json, String fileName) {
         try (JsonReader in = new JsonReader(new StringReader(json))) {
             in.setStrictness(Strictness.STRICT);
-            JsonElement root = read(in, "$", fileName, 0);
+            JsonElement root = read(in, "", fileName, 0);
             if (in.peek() != JsonToken.END_DOCUMENT) {
                 throw new ModelFormatException(fileName, "unexpected text after the end of the document");
             }
-            return new JsonNode(root, "$", fileName);
+            return new JsonNode(root, "", fileName);
         } catch (MalformedJsonException | EOFException e) {
             throw syntaxError(fileName, e);
         } catch (IOException e) {
-            throw new ModelFormatException(fileName, "cannot read JSON: " + e.getMessage());
+            throw new ModelFormatException(fileName, "cannot read: " + IoReasons.of(e));
         }
     }
 
     private static JsonElement read(JsonReader in, String path, String fileName, int depth) throws IOException {
         if (depth > MAX_NESTING) {
-            throw new ModelFormatException(fileName, path + ": nested more than " + MAX_NESTING + " levels deep");
+            throw new ModelFormatException(fileName, prefix(path) + "nested more than " + MAX_NESTING
+                    + " levels deep");
         }
         switch (in.peek()) {
             case BEGIN_OBJECT -> {
@@ -78,7 +79,7 @@ final class JsonNode {
                 while (in.hasNext()) {
                     String key = in.nextName();
                     if (object.has(key)) {
-                        throw new ModelFormatException(fileName, "duplicate key \"" + key + "\" at " + path);
+                        throw new ModelFormatException(fileName, prefix(path) + "duplicate key " + Echo.quote(key));
                     }
                     object.add(key, read(in, child(path, key), fileName, depth + 1));
                 }
@@ -101,28 +102,38 @@ final class JsonNode {
                 in.nextNull();
                 return JsonNull.INSTANCE;
             }
-            default -> throw new MalformedJsonException("Unexpected " + in.peek() + " at " + in.getPath());
+            default -> throw new ModelFormatException(fileName, prefix(path) + "invalid JSON: the document ends"
+                    + " where a value was expected");
         }
     }
 
-    /** Turns Gson's two-line message into {@code file:LINE: invalid JSON at column C: what (at $.path)}. */
+    /** Turns Gson's two-line message into {@code file:LINE: invalid JSON at column C: what (in path)}. */
     private static ModelFormatException syntaxError(String fileName, IOException e) {
-        String message = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        String message = e.getMessage() == null ? "the text ends too early" : e.getMessage();
         Matcher m = GSON_POSITION.matcher(message);
         if (!m.matches()) {
-            return new ModelFormatException(fileName, "invalid JSON: " + message.lines().findFirst().orElse(""));
+            return new ModelFormatException(fileName, "invalid JSON: " + Echo.cut(message));
         }
         String what = m.group(1).startsWith("Use JsonReader.setStrictness")
                 ? "not strict JSON (comments, single quotes, unquoted words such as NaN or Infinity, trailing"
                         + " commas and text after the end are not allowed)"
                 : m.group(1);
-        return new ModelFormatException(fileName, Integer.parseInt(m.group(2)),
-                "invalid JSON at column " + m.group(3) + ": " + what + " (at " + m.group(4) + ")");
+        String where = m.group(4).replaceFirst("^\\$\\.?", "");
+        return new ModelFormatException(fileName, Integer.parseInt(m.group(2)), "invalid JSON at column "
+                + m.group(3) + ": " + what.strip() + (where.isEmpty() ? "" : " (in " + Echo.cut(where) + ")"));
     }
 
-    /** JSON path of member {@code key} of the object at {@code path}. */
+    /** Path of member {@code key} of the object at {@code path}: {@code a.b}, or {@code a["odd key"]}. */
     static String child(String path, String key) {
-        return IDENTIFIER.matcher(key).matches() ? path + "." + key : path + "[" + new JsonPrimitive(key) + "]";
+        if (IDENTIFIER.matcher(key).matches()) {
+            return path.isEmpty() ? key : path + "." + key;
+        }
+        return path + "[" + Echo.quote(key) + "]";
+    }
+
+    /** {@code "path: "}, or nothing for the root. */
+    private static String prefix(String path) {
+        return path.isEmpty() ? "" : path + ": ";
     }
 
     String path() { return path; }
@@ -130,12 +141,12 @@ final class JsonNode {
     /** Short text of this value for messages, as {@link #describe}. */
     String text() { return describe(value); }
 
-    /** An error about this value: {@code file: $.path: detail}. */
+    /** An error about this value: {@code file: path: detail} ({@code file: detail} at the root). */
     ModelFormatException error(String detail) {
-        return new ModelFormatException(fileName, path + ": " + detail);
+        return new ModelFormatException(fileName, prefix(path) + detail);
     }
 
-    /** An error {@code file: $.path: expected …, found …}. */
+    /** An error {@code file: path: expected …, found …}. */
     ModelFormatException expected(String what) {
         return error("expected " + what + ", found " + describe(value));
     }
@@ -150,8 +161,7 @@ final class JsonNode {
         Set<String> known = Set.of(allowed);
         for (String key : value.getAsJsonObject().keySet()) {
             if (!known.contains(key)) {
-                throw new ModelFormatException(fileName, "unknown key \"" + key + "\" at " + path
-                        + " (expected one of: " + list(known) + ")");
+                throw error("unknown key " + Echo.quote(key) + " (expected one of: " + list(known) + ")");
             }
         }
         return this;
@@ -255,18 +265,14 @@ final class JsonNode {
         return value.getAsString();
     }
 
-    /** An array of exactly {@code count} finite numbers. */
+    /** An array of exactly {@code count} finite numbers; a bad item is named by its own path. */
     double[] asNumbers(int count) {
-        String what = "an array of " + count + " numbers";
         if (!value.isJsonArray() || value.getAsJsonArray().size() != count) {
-            throw expected(what);
+            throw expected("an array of " + count + " numbers");
         }
         double[] out = new double[count];
         List<JsonNode> items = array();
         for (int i = 0; i < count; i++) {
-            if (!items.get(i).isNumber()) {
-                throw expected(what);
-            }
             out[i] = items.get(i).asDouble();
         }
         return out;
@@ -281,10 +287,13 @@ final class JsonNode {
         return c;
     }
 
-    /** Short text of a value for messages: {@code -2}, {@code "abc"}, {@code an object}. */
+    /**
+     * Short text of a value for messages: {@code -2}, {@code "abc"}, {@code an object}; JSON's
+     * {@code null} is {@code no value}.
+     */
     static String describe(JsonElement e) {
         if (e.isJsonNull()) {
-            return "null";
+            return "no value";
         }
         if (e.isJsonObject()) {
             return "an object";
@@ -292,8 +301,9 @@ final class JsonNode {
         if (e.isJsonArray()) {
             return "an array of " + e.getAsJsonArray().size() + (e.getAsJsonArray().size() == 1 ? " item" : " items");
         }
-        String text = e.getAsJsonPrimitive().isNumber() ? e.getAsNumber().toString() : e.toString();
-        return text.length() > SHOWN_CHARS ? text.substring(0, SHOWN_CHARS) + "…" : text;
+        JsonPrimitive p = e.getAsJsonPrimitive();
+        return p.isString() ? Echo.quote(p.getAsString()) : Echo.cut(p.isNumber() ? p.getAsNumber().toString()
+                : p.toString());
     }
 
     /** For messages: {@code a, b, c} sorted. */

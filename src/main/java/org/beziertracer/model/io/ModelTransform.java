@@ -24,25 +24,44 @@ record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees
         return true;
     }
 
-    /** The patch with every control point mapped. */
-    BezierPatch apply(BezierPatch patch) {
+    /** Which step of the transform overflowed which coordinate, and the values that did it. */
+    record Overflow(String step, int axis, String values) {}
+
+    /**
+     * The patch with every control point mapped.
+     *
+     * @param number the patch's 1-based number in its model, for the message when a coordinate overflows
+     * @throws IllegalArgumentException naming the step, the coordinate and the values when one overflows
+     */
+    BezierPatch apply(BezierPatch patch, int number) {
         if (isIdentity()) {
             return patch;
         }
         double[] net = patch.copyNet();
         double[] p = new double[3];
+        int n = patch.degreeU();
         for (int k = 0; k < net.length; k += 3) {
             System.arraycopy(net, k, p, 0, 3);
-            applyInPlace(p);
+            Overflow o = applyInPlace(p);
+            if (o != null) {
+                int point = k / 3;
+                throw new IllegalArgumentException("the " + o.step() + " overflows the " + "xyz".charAt(o.axis())
+                        + " coordinate of control point P(" + point % (n + 1) + "," + point / (n + 1) + ") of patch "
+                        + number + ": " + o.values() + " is " + NumberText.BEYOND);
+            }
             System.arraycopy(p, 0, net, k, 3);
         }
         return new BezierPatch(patch.degreeU(), patch.degreeV(), net);
     }
 
-    /** Maps the point {@code p} (x, y, z) in place. */
-    void applyInPlace(double[] p) {
+    /** Maps the point {@code p} (x, y, z) in place; null, or the step that overflowed (p is then partly mapped). */
+    Overflow applyInPlace(double[] p) {
         for (int c = 0; c < 3; c++) {
-            p[c] *= scale[c];
+            double v = p[c] * scale[c];
+            if (!Double.isFinite(v)) {
+                return new Overflow("scale", c, NumberText.show(p[c]) + " × " + NumberText.show(scale[c]));
+            }
+            p[c] = v;
         }
         // Rotate about x, then y, then z: in the plane of the two other axes (a, b)
         for (int axis = 0; axis < 3; axis++) {
@@ -58,10 +77,19 @@ record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees
             double pb = p[b];
             p[a] = cos * pa - sin * pb;
             p[b] = sin * pa + cos * pb;
+            if (!Double.isFinite(p[a]) || !Double.isFinite(p[b])) {
+                return new Overflow("rotation", Double.isFinite(p[a]) ? b : a, "turning (" + NumberText.show(pa)
+                        + ", " + NumberText.show(pb) + ") by " + NumberText.show(deg) + "°");
+            }
         }
         for (int c = 0; c < 3; c++) {
-            p[c] += translate[c];
+            double v = p[c] + translate[c];
+            if (!Double.isFinite(v)) {
+                return new Overflow("translation", c, NumberText.show(p[c]) + " + " + NumberText.show(translate[c]));
+            }
+            p[c] = v;
         }
+        return null;
     }
 
     /** cos of an angle in degrees, exact (0, ±1) at multiples of 90°. */

@@ -18,8 +18,10 @@ final class NumberText {
     private NumberText() {}
 
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][+-]?\\d+)?");
+    /** How overflow messages end: what the largest {@code double} is. */
+    static final String BEYOND = "beyond the largest number, about 1.8e308";
+
     private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
-    private static final int SHOWN_TOKEN_CHARS = 40;
 
     /** Shortest round-trip text of {@code v}; whole numbers below 1e15 without a fraction. */
     static String format(double v) {
@@ -84,12 +86,25 @@ final class NumberText {
         throw new ModelFormatException(fileName, line, "expected a number for " + what + ", found " + describe(token));
     }
 
-    /** {@code "abc"} in quotes (shortened when long), or {@code end of file} for null. */
+    /** {@code "abc"} in quotes ({@link Echo#quote}: at most 60 characters), or {@code end of file} for null. */
     static String describe(String token) {
-        if (token == null) {
-            return "end of file";
+        return token == null ? "end of file" : Echo.quote(token);
+    }
+
+    /**
+     * {@code v} for messages: the shortest round-trip text, in the lower-case scientific form of the
+     * files ({@code 1e308}, {@code -1.5e-7}, {@code 0.25}).
+     */
+    static String show(double v) {
+        return format(v).replace(".0E", "e").replace('E', 'e');
+    }
+
+    /** The value of a plain decimal token when it is finite, else NaN (the caller then reports why). */
+    static double finiteOrNaN(String token) {
+        if (token == null || !isDecimal(token)) {
+            return Double.NaN;
         }
-        String shown = token.length() > SHOWN_TOKEN_CHARS ? token.substring(0, SHOWN_TOKEN_CHARS) + "…" : token;
-        return "\"" + shown + "\"";
+        double v = Double.parseDouble(token);
+        return Double.isFinite(v) ? v : Double.NaN;
     }
 }

@@ -1,13 +1,7 @@
 package org.beziertracer.model.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.Reader;
-import java.io.StringReader;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -47,7 +41,10 @@ import org.beziertracer.model.Scene;
  * surface is an error.
  *
  * <p>Every error is a one-line {@link ModelFormatException} whose line number is the first
- * physical line of the statement. Stateless and thread-safe.
+ * physical line of the statement. The caps of {@link ReadLimits} hold: lines, statements
+ * (continuation lines joined: at most {@value #STATEMENT_LINES} lines' worth), vertices and
+ * patches; a surf is counted before its patches are built. Files are opened through
+ * {@link FileFormats#OBJ}. Stateless and thread-safe.
  */
 public final class ObjReader {
     private ObjReader() {}
@@ -58,39 +55,37 @@ public final class ObjReader {
     private static final Set<String> UNSUPPORTED = Set.of("curv", "curv2", "trim", "hole", "scrv", "sp", "con",
             "bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
 
-    /** Reads an OBJ file into a scene; errors name the file by {@code file.getFileName()}. */
-    public static Scene readScene(Path file) throws IOException {
-        return new Scene(read(file));
-    }
-
-    /** Reads an OBJ file; errors name the file by {@code file.getFileName()}. */
-    public static List<BezierPatch> read(Path file) throws IOException {
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(in, String.valueOf(file.getFileName()));
-        }
-    }
+    /** A statement joined from continuation lines may hold this many lines' worth of characters. */
+    static final int STATEMENT_LINES = 4;
 
     /** Reads OBJ text; for tests and in-memory use. */
     public static List<BezierPatch> read(String text, String fileName) {
         try {
-            return read(new StringReader(text), fileName);
+            return read(TextSource.of(text, fileName));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
     }
 
+    /** The patches of {@code text} as a scene (the reader {@link FileFormats#OBJ} declares). */
+    static Scene readScene(TextSource text) throws IOException {
+        return new Scene(read(text));
+    }
+
     /**
-     * Reads OBJ text from {@code in} (not closed).
+     * Reads OBJ text.
      *
-     * @param fileName shown at the start of every error message
-     * @throws ModelFormatException for any syntax, range or unsupported-element problem
+     * @throws ModelFormatException for any syntax, range, cap or unsupported-element problem,
+     *                              naming {@link TextSource#fileName()}
      */
-    public static List<BezierPatch> read(Reader in, String fileName) throws IOException {
-        return new Parser(fileName).parse(in instanceof BufferedReader b ? b : new BufferedReader(in));
+    public static List<BezierPatch> read(TextSource text) throws IOException {
+        return new Parser(text).parse();
     }
 
     /** One parse: the vertex table, the current cstype/deg state and the open surf. */
     private static final class Parser {
+        private final TextSource text;
+        private final ReadLimits limits;
         private final String file;
         private final List<BezierPatch> patches = new ArrayList<>();
         private double[] vertices = new double[3 * 64];
@@ -101,27 +96,35 @@ public final class ObjReader {
         private int line;
         private Surf surf;
 
-        Parser(String file) {
-            this.file = file;
+        Parser(TextSource text) {
+            this.text = text;
+            this.limits = text.limits();
+            this.file = text.fileName();
         }
 
-        List<BezierPatch> parse(BufferedReader in) throws IOException {
+        List<BezierPatch> parse() throws IOException {
             int physical = 0;
             String raw;
             StringBuilder statement = new StringBuilder();
             int statementLine = 0;
-            while ((raw = in.readLine()) != null) {
-                physical++;
+            long statementCap = (long) STATEMENT_LINES * limits.lineChars();
+            while ((raw = text.readLine()) != null) {
+                physical = text.lineNumber();
                 int hash = raw.indexOf('#');
-                String text = (hash >= 0 ? raw.substring(0, hash) : raw).stripTrailing();
+                String content = (hash >= 0 ? raw.substring(0, hash) : raw).stripTrailing();
                 if (statement.length() == 0) {
                     statementLine = physical;
                 }
-                if (text.endsWith("\\")) {
-                    statement.append(text, 0, text.length() - 1).append(' ');
+                if (statement.length() + content.length() > statementCap) {
+                    line = statementLine;
+                    throw error("statement longer than " + statementCap + " characters (joined continuation"
+                            + " lines), the most a statement may hold");
+                }
+                if (content.endsWith("\\")) {
+                    statement.append(content, 0, content.length() - 1).append(' ');
                     continue;
                 }
-                statement.append(text);
+                statement.append(content);
                 line = statementLine;
                 String s = statement.toString().strip();
                 statement.setLength(0);
@@ -181,6 +184,9 @@ public final class ObjReader {
                 throw error("expected 3 coordinates (and an optional weight) after v, found " + (t.length - 1)
                         + " values");
             }
+            if (vertexCount >= limits.vertices()) {
+                throw error("a file may have at most " + limits.vertices() + " vertices; this is one more");
+            }
             int index = vertexCount + 1;
             if (3 * vertexCount + 3 > vertices.length) {
                 vertices = Arrays.copyOf(vertices, vertices.length * 2);
@@ -202,7 +208,7 @@ public final class ObjReader {
                 return;
             }
             if (t.length > 1 && t[1].equals("rat")) {
-                throw error("unsupported: cstype " + type + " (rational surfaces); expected cstype bezier");
+                throw error("unsupported: cstype " + Echo.cut(type) + " (rational surfaces); expected cstype bezier");
             }
             if (Set.of("bspline", "bmatrix", "cardinal", "taylor").contains(type)) {
                 throw error("unsupported: cstype " + type + "; expected cstype bezier");
@@ -317,6 +323,11 @@ public final class ObjReader {
             checkRange("v", s.range[2], s.range[3], s.parmV);
             long pointsU = (long) segmentsU * s.n + 1;
             long pointsV = (long) segmentsV * s.m + 1;
+            long made = (long) segmentsU * segmentsV;
+            if (patches.size() + made > limits.patches()) {
+                throw error("a model may have at most " + limits.patches() + " patches; this surf makes " + made
+                        + " more after " + patches.size());
+            }
             if (pointsU * pointsV != s.refs.length) {
                 throw error("expected " + pointsU * pointsV + " control-point indices for a degree " + s.n + "x" + s.m
                         + " surf of " + segmentsU + "x" + segmentsV + " segments ((" + segmentsU + "·" + s.n + "+1)("

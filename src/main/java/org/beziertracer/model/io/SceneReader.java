@@ -1,12 +1,13 @@
 package org.beziertracer.model.io;
 
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Supplier;
 
 import org.beziertracer.math.Vec3;
@@ -26,19 +27,25 @@ import org.beziertracer.model.Sphere;
  * <p>Material indices: named materials get indices in file order; an inline material or the
  * default ({@link Material#DEFAULT}, for primitives without {@code "material"}) reuses the first
  * equal material already in the list, or is appended.
+ *
+ * <p>Caps ({@link ReadLimits}): entries of {@code models}; of each of {@code materials},
+ * {@code planes}, {@code spheres} and {@code lights}; patches in the whole scene.
  */
 final class SceneReader {
 
     static final int VERSION = 1;
 
     private final Path baseDir;
+    private final ReadLimits limits;
+    private int patchCount;
     private final Scene.Builder builder = Scene.builder();
     private final List<Material> materials = new ArrayList<>();
     private final Map<String, Integer> named = new HashMap<>();
 
     /** @param baseDir directory against which relative model paths resolve; null = working directory */
-    SceneReader(Path baseDir) {
+    SceneReader(Path baseDir, ReadLimits limits) {
         this.baseDir = baseDir;
+        this.limits = limits;
     }
 
     SceneDocument read(JsonNode root) {
@@ -50,6 +57,7 @@ final class SceneReader {
         }
         if (root.has("materials")) {
             JsonNode map = root.get("materials");
+            checkCount(map, map.keys().size(), limits.sceneObjects(), "materials");
             for (String name : map.keys()) {
                 named.put(name, materials.size());
                 addMaterial(material(map.get(name)));
@@ -69,13 +77,11 @@ final class SceneReader {
             s.object("center", "radius", "material");
             Vec3 center = vec(s.require("center"));
             double radius = s.require("radius").asPositive();
-            builder.addSphere(new Sphere(center, radius, materialRef(s.get("material"))));
+            int material = materialRef(s.get("material"));
+            builder.addSphere(build(s, () -> new Sphere(center, radius, material)));
         }
         for (JsonNode l : list(root, "lights")) {
-            l.object("position", "color");
-            Vec3 position = vec(l.require("position"));
-            double[] c = l.has("color") ? l.get("color").asColor() : new double[] {1, 1, 1};
-            builder.addLight(new PointLight(position, c[0], c[1], c[2]));
+            builder.addLight(light(l));
         }
         if (root.has("camera")) {
             builder.camera(camera(root.get("camera")));
@@ -99,8 +105,21 @@ final class SceneReader {
         }
     }
 
-    private static List<JsonNode> list(JsonNode root, String key) {
-        return root.has(key) ? root.get(key).array() : List.of();
+    /** The entries of array {@code key} (none when absent), at most the cap of that list. */
+    private List<JsonNode> list(JsonNode root, String key) {
+        if (!root.has(key)) {
+            return List.of();
+        }
+        JsonNode list = root.get(key);
+        List<JsonNode> items = list.array();
+        checkCount(list, items.size(), key.equals("models") ? limits.sceneModels() : limits.sceneObjects(), key);
+        return items;
+    }
+
+    private static void checkCount(JsonNode where, int count, int cap, String what) {
+        if (count > cap) {
+            throw where.error(count + " " + what + ", more than the " + cap + " a scene may hold");
+        }
     }
 
     /** Runs a model-record constructor, re-throwing its validation error with the JSON path. */
@@ -110,7 +129,7 @@ final class SceneReader {
         } catch (ModelFormatException e) {
             throw e;
         } catch (IllegalArgumentException e) {
-            throw where.error(e.getMessage());
+            throw where.error(Echo.cutQuoted(e.getMessage()));
         }
     }
 
@@ -127,19 +146,28 @@ final class SceneReader {
             patches = loadFile(m.get("file"));
         } else if (m.has("builtin")) {
             JsonNode b = m.get("builtin");
-            Scene model = Models.builtIn(b.asString());
-            if (model == null) {
-                throw b.error("unknown built-in model \"" + b.asString() + "\" (expected one of: "
-                        + String.join(", ", Models.NAMES) + ")");
+            Optional<BuiltIns.BuiltIn> model = BuiltIns.find(b.asString())
+                    .filter(x -> x.holds() == FileFormat.Holds.MODEL);
+            if (model.isEmpty()) {
+                throw b.error("unknown built-in model " + Echo.quote(b.asString()) + " (expected one of: "
+                        + String.join(", ", BuiltIns.names(FileFormat.Holds.MODEL)) + ")");
             }
-            patches = model.patches();
+            patches = model.get().load().scene().patches();
         } else {
             patches = inlinePatches(m.get("patches"));
         }
-        ModelTransform transform = m.has("transform") ? transform(m.get("transform")) : ModelTransform.IDENTITY;
+        if ((long) patchCount + patches.size() > limits.patches()) {
+            throw m.error("the scene would hold " + ((long) patchCount + patches.size()) + " patches, more than the "
+                    + limits.patches() + " a scene may hold");
+        }
+        patchCount += patches.size();
+        JsonNode t = m.get("transform");
+        ModelTransform transform = t != null ? transform(t) : ModelTransform.IDENTITY;
         List<BezierPatch> placed = new ArrayList<>(patches.size());
-        for (BezierPatch p : patches) {
-            placed.add(build(m, () -> transform.apply(p)));
+        for (int k = 0; k < patches.size(); k++) {
+            BezierPatch p = patches.get(k);
+            int number = k + 1;
+            placed.add(build(t != null ? t : m, () -> transform.apply(p, number)));
         }
         builder.addPatches(placed, materialRef(m.get("material")));
     }
@@ -149,18 +177,24 @@ final class SceneReader {
         if (name.isBlank()) {
             throw f.expected("a model file name");
         }
-        Path file = baseDir == null ? Path.of(name) : baseDir.resolve(name);
-        String lower = name.toLowerCase(Locale.ROOT);
-        if (!lower.endsWith(".bpt") && !lower.endsWith(".obj")) {
-            throw f.error("model file \"" + name + "\" must end in .bpt or .obj (for a built-in model use"
-                    + " \"builtin\")");
+        List<FileFormat> models = FileFormats.holding(FileFormat.Holds.MODEL);
+        Optional<FileFormat> format = models.stream().filter(x -> x.matches(name)).findFirst();
+        if (format.isEmpty()) {
+            throw f.error("model file " + Echo.quote(name) + " must end in " + FileFormats.extensionList(models)
+                    + " (for a built-in model use \"builtin\")");
+        }
+        Path file;
+        try {
+            file = baseDir == null ? Path.of(name) : baseDir.resolve(name);
+        } catch (InvalidPathException e) {
+            throw f.error("not a valid file name: " + Echo.quote(name));
         }
         if (!Files.isRegularFile(file)) {
-            throw f.error("no such model file " + file + (file.equals(Path.of(name)) ? "" : " (\"" + name
-                    + "\" resolved against the scene file's directory)"));
+            throw f.error("no such model file " + Echo.quote(name) + (baseDir == null || Path.of(name).isAbsolute()
+                    ? "" : " in " + baseDir));
         }
         try {
-            return Models.load(file.toString()).patches();
+            return format.get().read(file).scene().patches();
         } catch (ModelFormatException e) {
             throw f.error(e.getMessage());
         }
@@ -219,6 +253,24 @@ final class SceneReader {
         return new ModelTransform(translate, scale, rotate);
     }
 
+    /** A light; a colour whose total overflows is named with the literal values. */
+    private static PointLight light(JsonNode l) {
+        l.object("position", "color");
+        Vec3 position = vec(l.require("position"));
+        double[] c = {1, 1, 1};
+        if (l.has("color")) {
+            JsonNode color = l.get("color");
+            c = color.asColor();
+            if (!Double.isFinite(c[0] + c[1] + c[2])) {
+                List<JsonNode> rgb = color.array();
+                throw l.error("the light's total intensity r + g + b = " + rgb.get(0).text() + " + " + rgb.get(1).text()
+                        + " + " + rgb.get(2).text() + " overflows (" + NumberText.BEYOND + ")");
+            }
+        }
+        double[] rgb = c;
+        return build(l, () -> new PointLight(position, rgb[0], rgb[1], rgb[2]));
+    }
+
     // Materials
 
     private int addMaterial(Material m) {
@@ -234,8 +286,8 @@ final class SceneReader {
         if (ref.isString()) {
             Integer index = named.get(ref.asString());
             if (index == null) {
-                throw ref.error("unknown material \"" + ref.asString() + "\" (defined: "
-                        + (named.isEmpty() ? "none" : JsonNode.list(named.keySet())) + ")");
+                throw ref.error("unknown material " + Echo.quote(ref.asString()) + " (defined: "
+                        + (named.isEmpty() ? "none" : Echo.cut(JsonNode.list(named.keySet()))) + ")");
             }
             return index;
         }
@@ -284,6 +336,16 @@ final class SceneReader {
         c.object("eye", "target", "up", "fov", "orthoWidth");
         Vec3 eye = vec(c.require("eye"));
         Vec3 target = vec(c.require("target"));
+        double[] e = {eye.x(), eye.y(), eye.z()}, t = {target.x(), target.y(), target.z()};
+        for (int k = 0; k < 3; k++) {
+            if (!Double.isFinite(e[k] - t[k])) {
+                throw c.error("the distance from eye to target overflows (" + "xyz".charAt(k) + ": "
+                        + NumberText.show(e[k]) + " - " + NumberText.show(t[k]) + " is " + NumberText.BEYOND + ")");
+            }
+        }
+        if (!Double.isFinite(eye.sub(target).length())) {
+            throw c.error("the distance from eye to target overflows (its square is " + NumberText.BEYOND + ")");
+        }
         Vec3 up = c.has("up") ? vec(c.get("up")) : Vec3.Z;
         double fov = number(c, "fov", SceneFiles.DEFAULT_FOV);
         double orthoWidth = c.has("orthoWidth") ? c.get("orthoWidth").asPositive() : 1;
@@ -324,7 +386,7 @@ final class SceneReader {
         try {
             return new RenderSettings(w, h, spp, sampler, method, bvh, shading, checker, shadows, depth);
         } catch (IllegalArgumentException e) {
-            throw v.error(e.getMessage());
+            throw v.error(Echo.cutQuoted(e.getMessage()));
         }
     }
 }

@@ -2,11 +2,11 @@ package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 
@@ -14,13 +14,12 @@ class BptReaderTest {
 
     private static final String BILINEAR = "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n";
 
-    private static ModelFormatException fails(String text, String fileName) {
-        return assertThrows(ModelFormatException.class, () -> BptReader.read(text, fileName),
-                () -> "expected a parse error for:\n" + text);
+    /** The one-line message of the parse error {@code text} must give (checked by {@link UserMessages}). */
+    private static String fails(String text, String fileName) {
+        return UserMessages.of(ModelFormatException.class, () -> BptReader.read(text, fileName));
     }
 
-    private static void assertMessage(ModelFormatException e, String prefix, String... parts) {
-        String msg = e.getMessage();
+    private static void assertMessage(String msg, String prefix, String... parts) {
         assertTrue(msg.startsWith(prefix), () -> "message should start with \"" + prefix + "\": " + msg);
         for (String part : parts) {
             assertTrue(msg.contains(part), () -> "message should contain \"" + part + "\": " + msg);
@@ -146,13 +145,15 @@ class BptReaderTest {
     @Test
     void aVeryLongBadTokenIsShortenedInTheMessage() {
         String longWord = "x".repeat(500);
-        ModelFormatException e = fails(longWord, "long.bpt");
-        assertTrue(e.getMessage().length() < 200, () -> "message too long: " + e.getMessage());
+        String message = fails(longWord, "long.bpt");
+        assertTrue(message.length() < 200, () -> "message too long: " + message);
     }
 
     @Test
     void theExceptionCarriesFileAndLine() {
-        ModelFormatException e = fails("1\n1 1\n0 0 0\n1 0 zz\n", "f.bpt");
+        ModelFormatException e = org.junit.jupiter.api.Assertions.assertThrows(ModelFormatException.class,
+                () -> BptReader.read("1\n1 1\n0 0 0\n1 0 zz\n", "f.bpt"));
+        UserMessages.check(e.getMessage());
         assertEquals("f.bpt", e.fileName());
         assertEquals(4, e.line());
         assertTrue(e.detail().startsWith("expected a number"), e.detail());

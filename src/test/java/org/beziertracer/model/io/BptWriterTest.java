@@ -2,7 +2,6 @@ package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -14,6 +13,7 @@ import java.util.List;
 import java.util.Random;
 import java.util.stream.Stream;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -55,7 +55,7 @@ class BptWriterTest {
         Files.writeString(file, "old content");
         List<BezierPatch> patches = Models.teapot().patches();
         BptWriter.write(file, patches);
-        assertEquals(patches, BptReader.read(file));
+        assertEquals(patches, FileFormats.BPT.read(file).scene().patches());
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of(file), files.toList(), "only the saved file should remain");
         }
@@ -65,7 +65,7 @@ class BptWriterTest {
     void aFailedSaveKeepsTheOldFileAndRemovesTheTemporaryOne() throws IOException {
         Path file = dir.resolve("keep.bpt");
         Files.writeString(file, "old content");
-        assertThrows(IOException.class, () -> AtomicFiles.write(file, (Writer out) -> {
+        UserMessages.of(IOException.class, () -> AtomicFiles.write(file, (Writer out) -> {
             out.write("half");
             throw new IOException("disk full");
         }));

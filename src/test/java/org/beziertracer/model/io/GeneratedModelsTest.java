@@ -2,7 +2,6 @@ package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -13,15 +12,23 @@ import org.junit.jupiter.api.Test;
 class GeneratedModelsTest {
 
     @Test
-    void wavyGridsOfEveryDegreeLoadByName() {
+    void wavyGridsOfEveryDegreeAreOnePatchOfThatDegree() {
         for (int points = 2; points <= 16; points++) {
-            Scene s = Models.load("wavy" + points);
+            Scene s = GeneratedModels.wavy(points);
             assertEquals(1, s.patchCount());
             BezierPatch p = s.patches().get(0);
             assertEquals(points - 1, p.degreeU(), "wavy" + points);
             assertEquals(points - 1, p.degreeV(), "wavy" + points);
-            assertEquals(p, Models.load("WAVY" + points).patches().get(0), "names are case-insensitive");
         }
+        assertThrows(IllegalArgumentException.class, () -> GeneratedModels.wavy(1));
+        assertThrows(IllegalArgumentException.class, () -> GeneratedModels.wavy(17));
+    }
+
+    @Test
+    void theBenchmarkGridsAndTheArchAreBuiltIns() {
+        assertEquals(GeneratedModels.wavy(6).patches(), Models.load("wavy6").patches());
+        assertEquals(GeneratedModels.wavy(10).patches(), Models.load("WAVY10").patches());
+        assertEquals(GeneratedModels.curved().patches(), Models.load("curved").patches());
     }
 
     @Test
@@ -60,14 +67,5 @@ class GeneratedModelsTest {
         assertTrue(box.maxZ() - box.minZ() > 0.5 * (box.maxX() - box.minX()), box.toString());
         // twisted: the corners of the arch's feet are not at one height
         assertNotEquals(p.get(0, 0, 2), p.get(0, 3, 2));
-    }
-
-    @Test
-    void outOfRangeOrMalformedNamesAreNotBuiltIns() {
-        for (String name : new String[] {"wavy1", "wavy17", "wavy", "wavy-3", "wavyx", "wavy007"}) {
-            assertNull(Models.builtIn(name), name);
-        }
-        ModelFormatException e = assertThrows(ModelFormatException.class, () -> Models.load("wavy99"));
-        assertTrue(e.getMessage().contains("wavy2..wavy16"), e.getMessage());
     }
 }

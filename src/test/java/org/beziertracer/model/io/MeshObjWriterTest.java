@@ -1,7 +1,6 @@
 package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -9,6 +8,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import org.beziertracer.UserMessages;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -64,15 +64,15 @@ class MeshObjWriterTest {
     @Test
     void inconsistentArraysAreRejectedBeforeWriting() {
         StringWriter out = new StringWriter();
-        assertThrows(IllegalArgumentException.class,
+        UserMessages.of(IllegalArgumentException.class,
                 () -> MeshObjWriter.write(out, new double[] {0, 0}, null, null, new int[0]));
-        assertThrows(IllegalArgumentException.class,
+        UserMessages.of(IllegalArgumentException.class,
                 () -> MeshObjWriter.write(out, POSITIONS, new double[3], null, TRIANGLES));
-        assertThrows(IllegalArgumentException.class,
+        UserMessages.of(IllegalArgumentException.class,
                 () -> MeshObjWriter.write(out, POSITIONS, null, new double[3], TRIANGLES));
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+        String e = UserMessages.of(IllegalArgumentException.class,
                 () -> MeshObjWriter.write(out, POSITIONS, null, null, new int[] {0, 1, 4}));
-        assertTrue(e.getMessage().contains("vertex 4"), e.getMessage());
+        assertTrue(e.contains("vertex 4"), e);
         assertEquals("", out.toString());
     }
 

@@ -1,7 +1,6 @@
 package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -9,8 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.math.Aabb;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -53,8 +54,8 @@ class ModelsTest {
 
     @Test
     void flatGridsOutsideTwoToSixteenPointsAreRejected() {
-        assertThrows(IllegalArgumentException.class, () -> Models.flatGrid(1, 4));
-        assertThrows(IllegalArgumentException.class, () -> Models.flatGrid(4, 17));
+        UserMessages.of(IllegalArgumentException.class, () -> Models.flatGrid(1, 4));
+        UserMessages.of(IllegalArgumentException.class, () -> Models.flatGrid(4, 17));
     }
 
     @Test
@@ -71,8 +72,8 @@ class ModelsTest {
         List<BezierPatch> patches = List.of(Models.flatGrid(3, 5), Models.flatGrid(2, 2));
         Path bpt = dir.resolve("m.BPT");
         Path obj = dir.resolve("m.obj");
-        Models.save(bpt, patches);
-        Models.save(obj, patches);
+        FileFormats.BPT.write(bpt, new SceneDocument(new Scene(patches), RenderSettings.defaults()));
+        FileFormats.OBJ.write(obj, new SceneDocument(new Scene(patches), RenderSettings.defaults()));
         assertEquals(patches, Models.load(bpt.toString()).patches());
         assertEquals(patches, Models.load(obj.toString()).patches());
         assertTrue(Files.readString(obj).contains("cstype bezier"));
@@ -80,20 +81,20 @@ class ModelsTest {
 
     @Test
     void anUnknownExtensionOrMissingFileIsAOneLineErrorNamingTheFile() {
-        ModelFormatException e = assertThrows(ModelFormatException.class, () -> Models.load("model.stl"));
-        assertTrue(e.getMessage().startsWith("model.stl: unknown model format"), e.getMessage());
+        String e = UserMessages.of(ModelFormatException.class, () -> Models.load("model.stl"));
+        assertEquals("model.stl: not a built-in name (patch, teapot, teapot-room, wavy6, wavy10, curved) and not a .bpt, .obj or .json file",
+                e);
         String missing = dir.resolve("missing.bpt").toString();
-        e = assertThrows(ModelFormatException.class, () -> Models.load(missing));
-        assertTrue(e.getMessage().startsWith(missing + ": no such file"), e.getMessage());
-        assertTrue(e.getMessage().contains("patch, teapot"), e.getMessage());
+        e = UserMessages.of(ModelFormatException.class, () -> Models.load(missing));
+        assertEquals(missing + ": no such file", e);
     }
 
     @Test
     void parseErrorsInALoadedFileNameThePathAsGiven() throws IOException {
         Path bad = dir.resolve("bad.bpt");
         Files.writeString(bad, "1\n3 3\n0 0 oops\n");
-        ModelFormatException e = assertThrows(ModelFormatException.class, () -> Models.load(bad.toString()));
-        assertTrue(e.getMessage().startsWith(bad + ":3: expected a number for the z coordinate of point 1"),
-                e.getMessage());
+        String e = UserMessages.of(ModelFormatException.class, () -> Models.load(bad.toString()));
+        assertTrue(e.startsWith(bad + ":3: expected a number for the z coordinate of point 1"),
+                e);
     }
 }

@@ -2,13 +2,13 @@ package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.net.URISyntaxException;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
 import org.junit.jupiter.api.Test;
 
@@ -17,13 +17,12 @@ class ObjReaderTest {
     private static final String VERTICES = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n";
     private static final BezierPatch BILINEAR = new BezierPatch(1, 1, new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1});
 
-    private static ModelFormatException fails(String text, String fileName) {
-        return assertThrows(ModelFormatException.class, () -> ObjReader.read(text, fileName),
-                () -> "expected a parse error for:\n" + text);
+    /** The one-line message of the parse error {@code text} must give (checked by {@link UserMessages}). */
+    private static String fails(String text, String fileName) {
+        return UserMessages.of(ModelFormatException.class, () -> ObjReader.read(text, fileName));
     }
 
-    private static void assertMessage(ModelFormatException e, String prefix, String... parts) {
-        String msg = e.getMessage();
+    private static void assertMessage(String msg, String prefix, String... parts) {
         assertTrue(msg.startsWith(prefix), () -> "message should start with \"" + prefix + "\": " + msg);
         for (String part : parts) {
             assertTrue(msg.contains(part), () -> "message should contain \"" + part + "\": " + msg);
@@ -103,7 +102,7 @@ class ObjReaderTest {
     @Test
     void negativeIndicesAndSlashFormsAndContinuationsAreRead() throws URISyntaxException, java.io.IOException {
         Path file = Path.of(getClass().getResource("mixed.obj").toURI());
-        assertEquals(List.of(BILINEAR), ObjReader.read(file));
+        assertEquals(List.of(BILINEAR), FileFormats.OBJ.read(file).scene().patches());
     }
 
     @Test

@@ -45,8 +45,8 @@ class ObjWriterTest {
         Path obj = dir.resolve("teapot.obj");
         Path bpt = dir.resolve("teapot.bpt");
         ObjWriter.write(obj, Models.teapot().patches());
-        BptWriter.write(bpt, ObjReader.read(obj));
-        assertEquals(Models.teapot().patches(), BptReader.read(bpt));
+        BptWriter.write(bpt, FileFormats.OBJ.read(obj).scene().patches());
+        assertEquals(Models.teapot().patches(), FileFormats.BPT.read(bpt).scene().patches());
     }
 
     @Test

@@ -31,8 +31,8 @@ class SceneFilesTest {
     }
 
     @Test
-    void theBuiltInNamesArePatchAndTeapotRoom() {
-        assertEquals(List.of("patch", "teapot-room"), SceneFiles.builtInNames());
+    void theBuiltInNamesArePatchTeapotAndTeapotRoom() {
+        assertEquals(List.of("patch", "teapot", "teapot-room", "wavy6", "wavy10", "curved"), BuiltIns.names());
     }
 
     @Test
@@ -155,7 +155,7 @@ class SceneFilesTest {
         ModelTransform t = new ModelTransform(new double[] {1, 2, 3}, new double[] {.5, .5, .5},
                 new double[] {10, 20, 30});
         for (int k = 0; k < 32; k++) {
-            assertEquals(t.apply(Models.teapot().patches().get(k)), doc.scene().patches().get(k), "patch " + k);
+            assertEquals(t.apply(Models.teapot().patches().get(k), k + 1), doc.scene().patches().get(k), "patch " + k);
         }
         BezierPatch first = doc.scene().patches().get(0);
         double[] p = {Models.teapot().patches().get(0).get(0, 0, 0), Models.teapot().patches().get(0).get(0, 0, 1),
@@ -208,8 +208,8 @@ class SceneFilesTest {
         RenderSettings settings = new RenderSettings(320, 240, 9, "adaptive", "newton", false, "normals", 6, false, 3);
         SceneDocument doc = new SceneDocument(scene, settings);
         Path file = dir.resolve("round.json");
-        SceneFiles.write(file, doc);
-        SceneDocument back = SceneFiles.read(file);
+        FileFormats.SCENE.write(file, doc);
+        SceneDocument back = FileFormats.SCENE.read(file);
         assertSameContent(doc, back);
         assertEquals(SceneFiles.toJson(doc), Files.readString(file), "the file holds exactly toJson");
         assertEquals(SceneFiles.toJson(doc), SceneFiles.toJson(back), "a second round changes nothing");
@@ -220,10 +220,10 @@ class SceneFilesTest {
 
     @Test
     void builtInScenesSurviveARoundTrip() throws IOException {
-        for (String name : SceneFiles.builtInNames()) {
+        for (String name : BuiltIns.names()) {
             SceneDocument doc = SceneFiles.load(name);
             Path file = dir.resolve(name + ".json");
-            SceneFiles.write(file, doc);
+            FileFormats.SCENE.write(file, doc);
             assertSameContent(doc, SceneFiles.load(file.toString()));
         }
     }

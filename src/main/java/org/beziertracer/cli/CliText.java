@@ -1,0 +1,23 @@
+package org.beziertracer.cli;
+
+import java.util.ListResourceBundle;
+
+import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.FileFormats;
+
+/**
+ * Help texts computed from the registries, so that {@code --help} lists the formats and built-in
+ * names declared in {@link FileFormats} and {@link BuiltIns} (picocli reads a description from
+ * this bundle by the parameter's {@code descriptionKey}).
+ */
+final class CliText extends ListResourceBundle {
+
+    /** Key of the MODEL / MODEL_OR_SCENE parameter's description. */
+    static final String INPUT = "input";
+
+    @Override
+    protected Object[][] getContents() {
+        return new Object[][] {{INPUT, "a " + FileFormats.extensionList(FileFormats.ALL) + " file, or a built-in: "
+                + String.join(", ", BuiltIns.names())}};
+    }
+}

@@ -1,0 +1,83 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.accel.LeafIntersector;
+import org.beziertracer.accel.LeafOccluder;
+import org.beziertracer.model.Scene;
+
+/**
+ * The primitives in the acceleration structure's leaves, all of one kind, and how a ray meets one
+ * of them: the seam between the scene queries of {@link SceneIntersector} and the ray–primitive
+ * solvers. One implementation per kind of leaf:
+ * <ul>
+ *   <li>{@link PatchLeaves}: sub-patches of Bézier patches, one subclass per solver
+ *       ({@link ClippingLeaves}, {@link NewtonLeaves}, {@link SubdivisionLeaves}; the
+ *       {@link Method} names which);</li>
+ *   <li>{@link TriangleLeaves}: the triangles of the tessellated mode.</li>
+ * </ul>
+ * The kind is chosen once, by {@link #of}, when a {@link SceneIntersector} is built; nothing on
+ * the per-ray path asks which kind it is. A new kind of leaf (rational or trimmed patches, a new
+ * solver, a faster start) is a new class here and one choice in {@link #of} or one
+ * {@link Method} constant, not a new branch in the queries.
+ *
+ * <h2>Contract</h2>
+ * A query runs, for one ray set in the caller's {@link TraceContext}: {@link #beginRay} once,
+ * then the accelerator's per-primitive callbacks ({@link LeafIntersector#intersect} for a
+ * closest hit, {@link LeafOccluder#occludes} for an any hit), with the context as the query
+ * state. A closest-hit callback that finds a hit nearer than its {@code tMax} (and beyond
+ * {@code ctx.tMin}) records it in {@code ctx.best} (kind {@link Hit#PATCH}, the patch index, the
+ * primitive, t and whatever it needs later), sets {@code ctx.found} and returns the hit's t. After
+ * the traversal the winner goes once through {@link #completeHit}, and on demand through
+ * {@link #surfacePoint}. Primitives are indexed {@code 0..count()-1} with the boxes of
+ * {@link #bounds()}.
+ *
+ * <p>Implementations are immutable snapshots shared by every render thread; all per-ray state
+ * lives in the context, and nothing is allocated per ray.
+ */
+interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContext> {
+
+    /**
+     * The leaves for {@code scene} under {@code options}: the triangles of the tessellated mode,
+     * else the pre-split sub-patches solved by the chosen method.
+     *
+     * @param sceneSize the scene's size (control-box diagonal, 1 when empty), the scale of
+     *                  solver tolerances
+     */
+    static Leaves of(Scene scene, IntersectOptions options, double sceneSize) {
+        if (options.tessellated() && !scene.patches().isEmpty()) {
+            return TriangleLeaves.build(scene, options.tessellate());
+        }
+        return PatchLeaves.build(scene, options, sceneSize);
+    }
+
+    /** Number of primitives. */
+    int count();
+
+    /** Their boxes, {@code minX minY minZ maxX maxY maxZ} each, for the accelerator; not to be modified. */
+    double[] bounds();
+
+    /** Per-ray set-up after {@link TraceContext#setRay}, before the traversal; nothing by default. */
+    default void beginRay(TraceContext ctx) {}
+
+    /** Completes the winning hit of a closest-hit query (fields its leaves left out); nothing by default. */
+    default void completeHit(Hit hit) {}
+
+    /**
+     * The geometry at {@code hit}, one of these leaves' hits: position, dp/du, dp/dv and the unit
+     * normal into {@code sp}. Called right after the closest-hit query that found it, with the
+     * same context. The caller fills {@code sp.u, v, kind, index}.
+     */
+    void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp);
+
+    /**
+     * The same kind of leaves after patch {@code index} of the scene was replaced ({@code edited}
+     * is the new scene). Primitive indices stay comparable when {@link #count()} is unchanged, so
+     * the accelerator may then be refitted instead of rebuilt.
+     */
+    Leaves withPatch(Scene edited, int index, double sceneSize);
+
+    /** Sub-patches (BVH leaves) of the exact mode; the number of whole patches for other kinds. */
+    int subPatchCount();
+
+    /** Triangles of the tessellated mode; 0 for other kinds. */
+    default int triangleCount() { return 0; }
+}

@@ -1,0 +1,229 @@
+package org.beziertracer.model.io;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * The text of one file, as every reader (BPT, OBJ, scene JSON, ray files) sees it: UTF-8 decoded
+ * with errors reported, not replaced — a file that is not UTF-8 is
+ * {@code file: not a text file (invalid UTF-8 at byte N)}, N counting from 0 — a leading
+ * byte-order mark skipped, lines ending in LF, CRLF or a lone CR, and the caps of
+ * {@link ReadLimits}: no line longer than {@link ReadLimits#lineChars()} is held in memory and
+ * no file larger than {@link ReadLimits#bytesInMemory()} is read whole. Every problem is a one-line
+ * {@link ModelFormatException} naming the file.
+ *
+ * <p>Read it one way: characters ({@link #read()}), lines ({@link #readLine()}) or all at once
+ * ({@link #readAll}). Does not close the stream. Not thread-safe.
+ */
+public final class TextSource {
+
+    private static final int BUFFER = 1 << 14;
+
+    private final InputStream in;
+    private final String fileName;
+    private final ReadLimits limits;
+    private final long knownSize;
+    private final CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+            .onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT);
+    private final ByteBuffer bytes = ByteBuffer.allocate(BUFFER).flip();
+    private final CharBuffer chars = CharBuffer.allocate(BUFFER).flip();
+    /** File offset of {@code bytes.array()[0]}. */
+    private long offset;
+    private boolean endOfInput;
+    private boolean flushed;
+    private boolean started;
+    private int line = 1;
+    private boolean afterCr;
+    private int lineNumber;
+
+    /** Text of {@code in}, named {@code fileName} in messages, with the default caps. */
+    public TextSource(InputStream in, String fileName) {
+        this(in, fileName, ReadLimits.DEFAULT, -1);
+    }
+
+    /** Text of {@code in} with the given caps. */
+    public TextSource(InputStream in, String fileName, ReadLimits limits) {
+        this(in, fileName, limits, -1);
+    }
+
+    /** @param knownSize the file's size in bytes when known (so {@link #readAll} can refuse before reading), else -1 */
+    TextSource(InputStream in, String fileName, ReadLimits limits, long knownSize) {
+        this.in = in;
+        this.fileName = fileName;
+        this.limits = limits;
+        this.knownSize = knownSize;
+    }
+
+    /** In-memory text (tests, built-in resources already in memory). */
+    public static TextSource of(String text, String fileName) {
+        return new TextSource(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), fileName);
+    }
+
+    /** The name every message starts with. */
+    public String fileName() { return fileName; }
+
+    public ReadLimits limits() { return limits; }
+
+    /** An error at {@code line} (0 = the whole file) of this file. */
+    public ModelFormatException error(int line, String detail) {
+        return new ModelFormatException(fileName, line, detail);
+    }
+
+    /**
+     * The next character, or -1 at the end. Counts lines (see {@link #line()}); no line cap
+     * applies, as nothing is held.
+     */
+    public int read() throws IOException {
+        if (!chars.hasRemaining() && !fill()) {
+            return -1;
+        }
+        char c = chars.get();
+        if (c == '\n') {
+            if (!afterCr) {
+                line++;
+            }
+            afterCr = false;
+        } else if (c == '\r') {
+            line++;
+            afterCr = true;
+        } else {
+            afterCr = false;
+        }
+        return c;
+    }
+
+    /** 1-based line of the next character {@link #read()} returns (the line just started after a line end). */
+    public int line() {
+        return line;
+    }
+
+    /**
+     * The next line without its end, or null at the end of the file.
+     *
+     * @throws ModelFormatException for a line longer than {@link ReadLimits#lineChars()}
+     */
+    public String readLine() throws IOException {
+        StringBuilder sb = null;
+        lineNumber = line;
+        while (chars.hasRemaining() || fill()) {
+            char[] a = chars.array();
+            int start = chars.position(), end = start, limit = chars.limit();
+            if (afterCr) {
+                afterCr = false;
+                if (a[start] == '\n') {
+                    chars.position(start + 1); // the LF of a CRLF
+                    continue;
+                }
+            }
+            while (end < limit && a[end] != '\n' && a[end] != '\r') {
+                end++;
+            }
+            if (sb == null) {
+                sb = new StringBuilder(end - start + 16);
+            }
+            if (sb.length() + (end - start) > limits.lineChars()) {
+                throw error(lineNumber, "line longer than " + limits.lineChars()
+                        + " characters, the most a line may hold");
+            }
+            sb.append(a, start, end - start);
+            if (end < limit) {
+                chars.position(end + 1);
+                line++;
+                afterCr = a[end] == '\r';
+                return sb.toString();
+            }
+            chars.position(end);
+        }
+        return sb == null ? null : sb.toString();
+    }
+
+    /** 1-based line of the line {@link #readLine()} returned last. */
+    public int lineNumber() {
+        return lineNumber;
+    }
+
+    /**
+     * The whole (rest of the) text.
+     *
+     * @param what what the file is, for the message when it is too large ({@code a scene file})
+     * @throws ModelFormatException for a file larger than {@link ReadLimits#bytesInMemory()}
+     */
+    public String readAll(String what) throws IOException {
+        long cap = limits.bytesInMemory();
+        String capText = (cap >> 20) + " MB " + what + " may hold";
+        if (knownSize > cap) {
+            throw error(0, "the file holds " + knownSize + " bytes, more than the " + capText);
+        }
+        StringBuilder sb = new StringBuilder((int) Math.min(Math.max(knownSize, BUFFER), cap));
+        while (chars.hasRemaining() || fill()) {
+            if (offset + bytes.position() > cap) {
+                throw error(0, "the file holds more than the " + capText);
+            }
+            sb.append(chars);
+            chars.position(chars.limit());
+        }
+        return sb.toString();
+    }
+
+    /** Decodes more characters; false at the end of the input. */
+    private boolean fill() throws IOException {
+        if (flushed) {
+            return false;
+        }
+        chars.clear();
+        try {
+            while (chars.position() == 0) {
+                CoderResult r = decoder.decode(bytes, chars, endOfInput);
+                if (r.isError()) {
+                    throw notText(offset + bytes.position());
+                }
+                if (chars.position() > 0) {
+                    break;
+                }
+                if (endOfInput) {
+                    if (!flushed) {
+                        flushed = true;
+                        if (decoder.flush(chars).isError()) {
+                            throw notText(offset + bytes.position());
+                        }
+                    }
+                    break;
+                }
+                readBytes();
+            }
+        } finally {
+            chars.flip();
+        }
+        if (!started && chars.hasRemaining()) {
+            started = true;
+            if (chars.get(chars.position()) == '\uFEFF') {
+                chars.get(); // byte-order mark
+                return chars.hasRemaining() || fill();
+            }
+        }
+        return chars.hasRemaining();
+    }
+
+    private void readBytes() throws IOException {
+        offset += bytes.position();
+        bytes.compact();
+        int n = in.read(bytes.array(), bytes.position(), bytes.remaining());
+        if (n < 0) {
+            endOfInput = true;
+        } else {
+            bytes.position(bytes.position() + n);
+        }
+        bytes.flip();
+    }
+
+    private ModelFormatException notText(long at) {
+        return error(0, "not a text file (invalid UTF-8 at byte " + at + ")");
+    }
+}

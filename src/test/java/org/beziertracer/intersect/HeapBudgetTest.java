@@ -1,0 +1,121 @@
+package org.beziertracer.intersect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.UserMessages;
+import org.beziertracer.accel.Bvh;
+import org.beziertracer.geometry.SplitOptions;
+import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Mesh;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The memory estimates beside the data (sub-patch table, BVH, triangle mesh) cover every array
+ * the build makes, without over-counting much; the budget's message says what, how much and the fix.
+ */
+class HeapBudgetTest {
+
+    private static List<BezierPatch> wavy(int count, int degree, long seed) {
+        Random rnd = new Random(seed);
+        List<BezierPatch> out = new ArrayList<>();
+        for (int k = 0; k < count; k++) {
+            double[] net = new double[(degree + 1) * (degree + 1) * 3];
+            for (int i = 0; i < net.length; i++) {
+                net[i] = rnd.nextDouble() * 10 + (i % 3 == 0 ? 3 * k : 0);
+            }
+            out.add(new BezierPatch(degree, degree, net));
+        }
+        return out;
+    }
+
+    /** Bytes of every array the table holds; its pieces hold the nets and boxes a second time. */
+    private static long tableArrays(SubPatchTable t) {
+        long nets = 8L * t.nets.length + 8L * t.boxes.length;
+        return 2 * nets + 8L * (t.bounds.length + t.uniqueness.length + t.patchNets.length + t.patchSquaredExtent.length)
+                + 4L * (t.parent.length + t.degreeU.length + t.degreeV.length + t.netOffset.length + t.firstOf.length
+                        + t.patchNetOffset.length + t.patchDegreeU.length + t.patchDegreeV.length);
+    }
+
+    @Test
+    void theSubPatchCountEstimateIsExactForSmallModelsAndCloseForLargeOnes() {
+        List<BezierPatch> teapot = Models.teapot().patches();
+        assertEquals(SubPatchTable.build(teapot, SplitOptions.defaults()).count,
+                SubPatchTable.estimateCount(teapot, SplitOptions.defaults()));
+        assertEquals(teapot.size(), SubPatchTable.estimateCount(teapot, SplitOptions.wholePatches()));
+        List<BezierPatch> mixed = new ArrayList<>(wavy(300, 3, 1));
+        for (int k = 0; k < 300; k++) {
+            mixed.add(teapot.get(k % teapot.size()));
+        }
+        long actual = SubPatchTable.build(mixed, SplitOptions.defaults()).count;
+        long estimate = SubPatchTable.estimateCount(mixed, SplitOptions.defaults());
+        assertTrue(Math.abs(estimate - actual) < 0.15 * actual, "estimate " + estimate + ", actual " + actual);
+    }
+
+    @Test
+    void theTableEstimateCoversItsArrays() {
+        for (List<BezierPatch> patches : List.of(Models.teapot().patches(), wavy(20, 15, 2), wavy(50, 1, 3))) {
+            SubPatchTable t = SubPatchTable.build(patches, SplitOptions.defaults());
+            long arrays = tableArrays(t);
+            long estimate = SubPatchTable.estimateBytes(patches, t.count);
+            assertTrue(estimate >= arrays && estimate <= 1.5 * arrays, "estimate " + estimate + ", arrays " + arrays);
+        }
+    }
+
+    @Test
+    void theBvhEstimateCoversTheBuilderAndTheFinalNodes() {
+        SubPatchTable t = SubPatchTable.build(Models.teapot().patches(), SplitOptions.defaults());
+        Bvh bvh = Bvh.build(t.bounds, t.count);
+        long finalArrays = 56L * bvh.nodeCount() + 4L * t.count;
+        long builder = 36L * t.count + 56L * (2L * t.count - 1);
+        long estimate = Bvh.estimateBytes(t.count);
+        assertTrue(estimate >= finalArrays + builder - 4L * t.count, "estimate " + estimate);
+        assertTrue(estimate <= 1.5 * (finalArrays + builder), "estimate " + estimate);
+    }
+
+    @Test
+    void theMeshEstimateCoversTheMeshItsCopyAndTheTriangleArrays() {
+        List<BezierPatch> teapot = Models.teapot().patches();
+        for (int k : new int[] {1, 4, 20}) {
+            TriangleMesh tm = TriangleMesh.build(teapot, k);
+            Mesh m = tm.mesh;
+            long mesh = 8L * (3 + 3 + 2) * m.vertexCount() + 4L * 4 * m.triangleCount();
+            long own = 8L * (tm.corners.length + tm.bounds.length) + 4L * tm.patchOf.length;
+            long estimate = TriangleMesh.estimateBytes(teapot.size(), k);
+            assertEquals(2 * mesh + own, estimate, "K = " + k);
+        }
+    }
+
+    @Test
+    void aBuildThatWouldNotFitIsRefusedInOneLineNamingTheSourceTheNeedAndTheFix() {
+        String message = UserMessages.of(IllegalArgumentException.class,
+                () -> HeapBudget.require("big.obj", "600000 patches", Long.MAX_VALUE / 4));
+        assertTrue(message.matches("big\\.obj: 600000 patches need about \\d+ GB of heap; this JVM allows [0-9.]+ [MG]B"
+                + "(, [0-9.]+ [MG]B of it in use)? \\(run java -Xmx\\d+g …\\)"), message);
+        HeapBudget.require("small.bpt", "1 patch", 1024); // fits: no exception
+        Scene teapot = Models.teapot();
+        long estimate = HeapBudget.estimateBytes(teapot, IntersectOptions.defaults().withTessellate(400));
+        assertTrue(estimate > 2.5e9, "10 M triangles need gigabytes: " + estimate);
+        assertTrue(HeapBudget.estimateBytes(teapot, IntersectOptions.defaults()) < 8e6, "the exact teapot is small");
+    }
+
+    @Test
+    void sizesAndSuggestionsReadLikeAPersonWouldWriteThem() {
+        assertEquals("640 MB", HeapBudget.size(640L << 20));
+        assertEquals("1 GB", HeapBudget.size(1L << 30));
+        assertEquals("3.2 GB", HeapBudget.size((long) (3.2 * (1L << 30))));
+        assertEquals("12 GB", HeapBudget.size(12L << 30));
+        assertEquals("16g", HeapBudget.suggestion(12L << 30));
+        assertEquals("256m", HeapBudget.suggestion(150L << 20));
+        assertEquals("64m", HeapBudget.suggestion(1 << 20));
+        assertEquals("this JVM allows 1 GB, 400 MB of it in use (run java -Xmx4g …)",
+                HeapBudget.limit(1L << 30, 400L << 20, 2L << 30));
+    }
+}
