@@ -19,8 +19,9 @@ import org.junit.jupiter.api.Test;
 /**
  * Reads every main source file (comments stripped) and checks the layer rule of the
  * architecture guide: each layer uses only the layers its table row allows — by import or by a
- * fully qualified name — {@code ui} and {@code cli} never use each other, only {@code ui} uses
- * Swing or FlatLaf, and only {@code ui} and {@code cli} use AWT or ImageIO.
+ * fully qualified name — {@code ui} and {@code cli} never use each other, {@code app} (the app
+ * without its windows) uses neither, only {@code ui} uses Swing or FlatLaf, and only {@code ui} and
+ * {@code cli} use AWT or ImageIO (so {@code app} is tested without a display).
  */
 class ArchitectureTest {
 
@@ -29,22 +30,24 @@ class ArchitectureTest {
     private static final Pattern PACKAGE = Pattern.compile("^package\\s+([\\w.]+)\\s*;", Pattern.MULTILINE);
 
     /** What each layer may use, from the architecture guide's table ("" is the root package). */
-    private static final Map<String, Set<String>> ALLOWED = Map.of(
-            "math", Set.of(),
-            "model", Set.of("math"),
-            "model.io", Set.of("model", "math"),
-            "geometry", Set.of("math", "model"),
-            "accel", Set.of("math"),
-            "intersect", Set.of("math", "model", "geometry", "accel"),
-            "render", Set.of("math", "model", "model.io", "geometry", "accel", "intersect"),
-            "ui", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render"),
-            "cli", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render"),
-            "", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render", "ui", "cli"));
+    private static final Map<String, Set<String>> ALLOWED = Map.ofEntries(
+            Map.entry("math", Set.of()),
+            Map.entry("model", Set.of("math")),
+            Map.entry("model.io", Set.of("model", "math")),
+            Map.entry("geometry", Set.of("math", "model")),
+            Map.entry("accel", Set.of("math")),
+            Map.entry("intersect", Set.of("math", "model", "geometry", "accel")),
+            Map.entry("render", Set.of("math", "model", "model.io", "geometry", "accel", "intersect")),
+            Map.entry("app", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render")),
+            Map.entry("ui", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render", "app")),
+            Map.entry("cli", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render", "app")),
+            Map.entry("", Set.of("math", "model", "model.io", "geometry", "accel", "intersect", "render", "app", "ui",
+                    "cli")));
 
     /** A fully qualified use of one of our classes anywhere in the code, imported or not. */
     private static final Pattern QUALIFIED = Pattern.compile("\\b(org\\.beziertracer(?:\\.[a-z]\\w*)*)\\.[A-Z]");
     private static final Pattern AWT = Pattern.compile("\\b(java\\.awt|javax\\.imageio)\\b");
-    private static final Pattern SWING = Pattern.compile("\\b(javax\\.swing|com\\.formdev\\.flatlaf)\\b");
+    private static final Pattern SWING = Pattern.compile("\\b(javax\\.swing|com\\.formdev)\\b");
 
     static String layerOf(String pkg) {
         if (!pkg.startsWith(BASE)) {
@@ -100,6 +103,27 @@ class ArchitectureTest {
         }
         assertTrue(files > 5, "expected to read the main sources, read " + files);
         assertEquals(List.of(), all, "layer violations");
+    }
+
+    @Test
+    void theAppLayerMayUseRenderButNoWindowsAndNeitherUiNorCli() {
+        assertEquals(List.of(), violations("org.beziertracer.app",
+                "package org.beziertracer.app;\nimport org.beziertracer.render.RenderSession;\n"
+                        + "import org.beziertracer.model.io.SceneFiles;\nimport java.util.prefs.Preferences;\n"));
+        for (String banned : List.of("java.awt.Color", "java.awt.image.BufferedImage", "javax.swing.JPanel",
+                "com.formdev.flatlaf.FlatLaf", "javax.imageio.ImageIO", "org.beziertracer.ui.AppFrame",
+                "org.beziertracer.cli.RenderCommand")) {
+            assertEquals(1, violations("org.beziertracer.app",
+                    "package org.beziertracer.app;\nimport " + banned + ";\n").size(), banned);
+            assertEquals(1, violations("org.beziertracer.app",
+                    "package org.beziertracer.app;\nclass X { Object o = " + banned + ".class; }\n").size(),
+                    banned + " by its qualified name");
+        }
+        // the layers above may use it; the layers below may not
+        assertEquals(List.of(), violations("org.beziertracer.ui",
+                "package org.beziertracer.ui;\nimport org.beziertracer.app.AppModel;\n"));
+        assertEquals(1, violations("org.beziertracer.render",
+                "package org.beziertracer.render;\nimport org.beziertracer.app.Picture;\n").size());
     }
 
     @Test

@@ -23,16 +23,39 @@ public final class ChildJvm {
      */
     public static Result run(Path dir, List<String> jvmOptions, String mainClass, String... args)
             throws IOException, InterruptedException {
+        List<String> options = new ArrayList<>(jvmOptions);
+        options.add("-Djava.awt.headless=true");
+        return run(dir, options, new ProcessBuilder(), mainClass, args);
+    }
+
+    /**
+     * Runs {@code mainClass args} as a desktop program would start: {@code java.awt.headless}
+     * unset and {@code DISPLAY} set to {@code display} (removed when null).
+     */
+    public static Result runWithDisplay(Path dir, String display, String mainClass, String... args)
+            throws IOException, InterruptedException {
+        ProcessBuilder pb = new ProcessBuilder();
+        pb.environment().remove("JAVA_TOOL_OPTIONS");
+        pb.environment().remove("_JAVA_OPTIONS");
+        if (display == null) {
+            pb.environment().remove("DISPLAY");
+        } else {
+            pb.environment().put("DISPLAY", display);
+        }
+        return run(dir, List.of(), pb, mainClass, args);
+    }
+
+    private static Result run(Path dir, List<String> jvmOptions, ProcessBuilder pb, String mainClass, String... args)
+            throws IOException, InterruptedException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(jvmOptions);
-        command.add("-Djava.awt.headless=true");
         command.add("-cp");
         command.add(System.getProperty("java.class.path"));
         command.add(mainClass);
         command.addAll(List.of(args));
         Path out = dir.resolve("child.out"), err = dir.resolve("child.err");
-        Process p = new ProcessBuilder(command).directory(dir.toFile())
+        Process p = pb.command(command).directory(dir.toFile())
                 .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
         if (!p.waitFor(120, TimeUnit.SECONDS)) {
             p.destroyForcibly();

@@ -1,6 +1,5 @@
 package org.beziertracer.cli;
 
-import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 
 import picocli.CommandLine;
@@ -45,7 +44,11 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
      * embedding); never launches the app. Returns the exit code.
      */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
-        CommandLine cl = commandLine();
+        return run(commandLine(), args, out, err);
+    }
+
+    /** As {@link #run(String[], PrintWriter, PrintWriter)} on a command tree the caller set up. */
+    static int run(CommandLine cl, String[] args, PrintWriter out, PrintWriter err) {
         cl.setOut(out);
         cl.setErr(err);
         int code = execute(cl, args);
@@ -76,9 +79,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     }
 
     static int launchApp(Runnable desktopApp) {
-        if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("beziertracer: no display available, so the desktop app cannot open; "
-                    + "use the command line instead: java -jar target/beziertracer.jar --help");
+        if (!DisplayCheck.displayReachable()) {
+            System.err.println(DisplayCheck.NO_DISPLAY);
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {

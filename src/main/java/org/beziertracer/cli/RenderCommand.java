@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.function.IntSupplier;
 
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.intersect.HeapBudget;
@@ -27,6 +28,7 @@ import org.beziertracer.render.PixelFilter;
 import org.beziertracer.render.PixelProbe;
 import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.RenderOptions;
+import org.beziertracer.render.RenderProgress;
 import org.beziertracer.render.RenderResult;
 import org.beziertracer.render.RenderSession;
 
@@ -41,7 +43,8 @@ import picocli.CommandLine.Spec;
 /**
  * {@code render MODEL_OR_SCENE -o OUT.png}: ray traces a model or scene into a PNG. Options override
  * the scene's settings, camera and lights. {@code --stats} prints one JSON line; {@code --pixel x,y}
- * prints the full trace of one pixel. Bad values end with one error line and exit code 1.
+ * prints the full trace of one pixel. While rendering, a progress bar goes to standard error when
+ * it is a terminal (not with {@code --quiet}). Bad values end with one error line and exit code 1.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Ray traces a model or scene into a PNG image.")
@@ -120,6 +123,12 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
     String pixel;
 
+    @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
+    boolean quiet;
+
+    /** Columns of the terminal on standard error, 0 when it is not a terminal; tests replace it. */
+    IntSupplier stderrColumns = StandardError::terminalColumns;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         if (output == null && pixel == null) {
@@ -166,7 +175,9 @@ final class RenderCommand implements Callable<Integer> {
         }
         double[] frameMillis = new double[repeat];
         RenderResult result = null;
-        try (RenderSession session = new RenderSession(threadCount, FrameSink.NONE)) {
+        try (ProgressBarDisplay bar = progressBar();
+             RenderSession session = new RenderSession(threadCount, FrameSink.NONE,
+                     bar == null ? RenderProgress.NONE : bar)) {
             for (int k = 0; k < repeat; k++) {
                 result = session.render(job);
                 frameMillis[k] = result.stats().millis();
@@ -178,6 +189,12 @@ final class RenderCommand implements Callable<Integer> {
             out.flush();
         }
         return 0;
+    }
+
+    /** The progress bar on standard error, or null with --quiet or when standard error is not a terminal. */
+    private ProgressBarDisplay progressBar() {
+        int columns = quiet ? 0 : stderrColumns.getAsInt();
+        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, repeat);
     }
 
     private RenderSettings settings(RenderSettings s) {

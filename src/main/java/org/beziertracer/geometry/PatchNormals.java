@@ -116,7 +116,7 @@ public final class PatchNormals {
     }
 
     /** Normal of the net's diagonals, else +z. */
-    private static void netNormal(double[] net, int off, int n, int m, double[] out, int outOff) {
+    static void netNormal(double[] net, int off, int n, int m, double[] out, int outOff) {
         int p00 = off, pn0 = off + 3 * n, p0m = off + 3 * m * (n + 1), pnm = p0m + 3 * n;
         double ax = net[pnm] - net[p00], ay = net[pnm + 1] - net[p00 + 1], az = net[pnm + 2] - net[p00 + 2];
         double bx = net[p0m] - net[pn0], by = net[p0m + 1] - net[pn0 + 1], bz = net[p0m + 2] - net[pn0 + 2];

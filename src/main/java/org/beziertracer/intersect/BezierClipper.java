@@ -179,10 +179,7 @@ final class BezierClipper {
         if (unique || RootUniqueness.atMostOneRoot(arena, 0, n, m)) {
             // At most one root in the leaf, and it lies in [a,b]×[c,d]: Newton there
             ctx.clipNewtonTries++;
-            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
-            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
-            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * a, leafU0 + leafDu * b,
-                    leafV0 + leafDv * c, leafV0 + leafDv * d, slack)) {
+            if (newtonInLeafPiece(ctx, tab, s, a, b, c, d, slack)) {
                 return SOLVED;
             }
         }
@@ -205,42 +202,21 @@ final class BezierClipper {
     private static int clipPiece(TraceContext ctx, SubPatchTable tab, int s, int sp, double tMin, double slack) {
         int n = tab.degreeU[s], m = tab.degreeV[s];
         int len = 3 * (n + 1) * (m + 1), w = sp - 1, base = w * len, b4 = 4 * w;
+        double keptU = clipAndRestrict(ctx, base, n, m, true, b4, slack);
+        if (keptU < 0) {
+            return sp - 1;
+        }
+        double keptV = clipAndRestrict(ctx, base, n, m, false, b4, slack);
+        if (keptV < 0) {
+            return sp - 1;
+        }
         double[] arena = ctx.arena, boxes = ctx.entryBoxes;
         double u0 = boxes[b4], u1 = boxes[b4 + 1], v0 = boxes[b4 + 2], v1 = boxes[b4 + 3];
-        // Clip in u
-        if (!clipInterval(ctx, arena, base, n, m, true, slack)) {
-            return sp - 1;
-        }
-        double a = ctx.clip[0], b = ctx.clip[1];
-        double keptU = b - a;
-        if (keptU < 1) {
-            DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
-            double du = u1 - u0;
-            u1 = u0 + du * b;
-            u0 = u0 + du * a;
-        }
-        // Clip in v
-        if (!clipInterval(ctx, arena, base, n, m, false, slack)) {
-            return sp - 1;
-        }
-        a = ctx.clip[0];
-        b = ctx.clip[1];
-        double keptV = b - a;
-        if (keptV < 1) {
-            DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
-            double dv = v1 - v0;
-            v1 = v0 + dv * b;
-            v0 = v0 + dv * a;
-        }
-        boxes[b4] = u0; boxes[b4 + 1] = u1; boxes[b4 + 2] = v0; boxes[b4 + 3] = v1;
         boolean stalled = keptU > SPLIT_THRESHOLD && keptV > SPLIT_THRESHOLD;
         if (!stalled && ctx.clipNewtonTries < MAX_NEWTON_TRIES && RootUniqueness.atMostOneRoot(arena, base, n, m)) {
             // At most one root in this piece: Newton on the parent, confined to the piece, finds it
             ctx.clipNewtonTries++;
-            double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
-            double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
-            if (newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * u0, leafU0 + leafDu * u1,
-                    leafV0 + leafDv * v0, leafV0 + leafDv * v1, slack)) {
+            if (newtonInLeafPiece(ctx, tab, s, u0, u1, v0, v1, slack)) {
                 offerRoot(ctx, tMin);
                 return sp - 1; // the piece's only root is known, whatever its t
             }
@@ -253,6 +229,45 @@ final class BezierClipper {
         }
         split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
         return sp + 1;
+    }
+
+    /**
+     * Clips the piece at {@code ctx.arena[base..]} in u ({@code alongU}) or v, restricts its net to
+     * the kept interval and maps its parameter box {@code ctx.entryBoxes[b4..]} to match; returns
+     * the kept fraction of the interval, or -1 when the hull misses zero (no root in the piece).
+     */
+    private static double clipAndRestrict(TraceContext ctx, int base, int n, int m, boolean alongU, int b4,
+                                          double slack) {
+        double[] arena = ctx.arena, boxes = ctx.entryBoxes;
+        if (!clipInterval(ctx, arena, base, n, m, alongU, slack)) {
+            return -1;
+        }
+        double a = ctx.clip[0], b = ctx.clip[1];
+        double kept = b - a;
+        if (kept < 1) {
+            if (alongU) {
+                DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
+            } else {
+                DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
+            }
+            int lo = alongU ? b4 : b4 + 2;
+            double w0 = boxes[lo], width = boxes[lo + 1] - w0;
+            boxes[lo + 1] = w0 + width * b;
+            boxes[lo] = w0 + width * a;
+        }
+        return kept;
+    }
+
+    /**
+     * {@link #newtonInPiece} on the piece {@code [a,b]×[c,d]} of leaf {@code s}, in the leaf's own
+     * parameters (mapped to the parent patch's).
+     */
+    private static boolean newtonInLeafPiece(TraceContext ctx, SubPatchTable tab, int s, double a, double b, double c,
+                                             double d, double tolerance) {
+        double leafU0 = tab.boxes[4 * s], leafDu = tab.boxes[4 * s + 1] - leafU0;
+        double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
+        return newtonInPiece(ctx, tab, tab.parent[s], leafU0 + leafDu * a, leafU0 + leafDu * b,
+                leafV0 + leafDv * c, leafV0 + leafDv * d, tolerance);
     }
 
     /**

@@ -60,15 +60,10 @@ abstract class PatchLeaves implements Leaves {
         if (!solve(ctx, s, ctx.tMin, tMax)) {
             return tMax;
         }
-        Hit best = ctx.best;
-        ctx.found = true;
-        best.t = ctx.rootT;
-        best.u = ctx.rootU;
-        best.v = ctx.rootV;
-        best.kind = Hit.PATCH;
         int k = table.parent[s];
-        best.index = k;
-        best.subPatch = s;
+        ctx.recordHit(k, s);
+        ctx.best.u = ctx.rootU;
+        ctx.best.v = ctx.rootV;
         if (ctx.evalPatch == k && ctx.evalU == ctx.rootU && ctx.evalV == ctx.rootV) {
             ctx.keepEvaluationForHit();
         }

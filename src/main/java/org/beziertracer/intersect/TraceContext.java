@@ -132,6 +132,18 @@ public final class TraceContext {
     }
 
     /**
+     * Records the last root ({@link #rootT}) as the best hit so far, on primitive {@code prim} of
+     * patch {@code patch}; the caller adds the parameters its kind of leaf keeps.
+     */
+    void recordHit(int patch, int prim) {
+        found = true;
+        best.t = rootT;
+        best.kind = Hit.PATCH;
+        best.index = patch;
+        best.subPatch = prim;
+    }
+
+    /**
      * Keeps the solver's last evaluation ({@link #eval}, at {@code (evalU, evalV)} of patch
      * {@code evalPatch}) as the evaluation at the best hit.
      */

@@ -35,14 +35,9 @@ final class TriangleLeaves implements Leaves {
         if (!mesh.intersect(ctx, t, ctx.tMin, tMax)) {
             return tMax;
         }
-        Hit best = ctx.best;
-        ctx.found = true;
-        best.t = ctx.rootT;
-        best.b1 = ctx.rootB1;
-        best.b2 = ctx.rootB2;
-        best.kind = Hit.PATCH;
-        best.index = mesh.patchOf[t];
-        best.subPatch = t;
+        ctx.recordHit(mesh.patchOf[t], t);
+        ctx.best.b1 = ctx.rootB1;
+        ctx.best.b2 = ctx.rootB2;
         return ctx.rootT;
     }
 

@@ -23,13 +23,15 @@ import java.util.concurrent.atomic.AtomicInteger;
  * Starting a new render or {@link #cancel()} bumps the generation; workers check it between tiles
  * and every {@value RenderWorker#CHECK_ROWS} rows, so a stale render stops within one tile's time.
  *
- * <p>The sink is called from worker threads. {@link #close()} stops everything.
+ * <p>The sink and the {@link RenderProgress} listener are called from worker threads.
+ * {@link #close()} stops everything.
  */
 public final class RenderSession implements AutoCloseable {
     private final int poolSize;
     private final ThreadPoolExecutor pool;
     private final ExecutorService coordinator;
     private final FrameSink sink;
+    private final RenderProgress progress;
     private final AtomicInteger generation = new AtomicInteger();
     private final AtomicInteger activeWorkers = new AtomicInteger();
     private final AtomicInteger runningRenders = new AtomicInteger();
@@ -37,11 +39,17 @@ public final class RenderSession implements AutoCloseable {
 
     /** A session with {@code threads} workers (1..{@value RenderOptions#MAX_THREADS}) sending output to {@code sink}. */
     public RenderSession(int threads, FrameSink sink) {
+        this(threads, sink, RenderProgress.NONE);
+    }
+
+    /** As {@link #RenderSession(int, FrameSink)}, also telling {@code progress} as tiles finish. */
+    public RenderSession(int threads, FrameSink sink, RenderProgress progress) {
         if (threads < 1 || threads > RenderOptions.MAX_THREADS) {
             throw new IllegalArgumentException("threads must be 1.." + RenderOptions.MAX_THREADS + ", got " + threads);
         }
         this.poolSize = threads;
         this.sink = sink == null ? FrameSink.NONE : sink;
+        this.progress = progress == null ? RenderProgress.NONE : progress;
         AtomicInteger n = new AtomicInteger();
         pool = new ThreadPoolExecutor(threads, threads, 0, TimeUnit.MILLISECONDS, new LinkedBlockingQueue<>(), r -> {
             Thread t = new WorkerThread(r, "render-worker-" + n.incrementAndGet());
@@ -162,9 +170,9 @@ public final class RenderSession implements AutoCloseable {
             done.completeExceptionally(new CancellationException("superseded"));
             return;
         }
-        RenderState st = new RenderState(gen, job, sink, generation);
         List<int[]> tiles = tiles(job.width(), job.height(), job.options().tileSize());
         List<PassPlan.Pass> passes = PassPlan.of(job.options().progressive(), job.sampler(), job.settings().spp());
+        RenderState st = new RenderState(gen, job, sink, generation, new ProgressCounter(progress, gen, passes, tiles));
         int workers = Math.min(job.options().threads(), poolSize);
         int perFrame = job.options().passesPerFrame();
         for (int p = 0; p < passes.size(); p++) {
@@ -192,17 +200,22 @@ public final class RenderSession implements AutoCloseable {
     private void work(RenderState st, PassPlan.Pass pass, List<int[]> tiles, AtomicInteger next, boolean display,
                       CountDownLatch latch) {
         activeWorkers.incrementAndGet();
+        RenderWorker w = null;
         try {
-            RenderWorker w = ((WorkerThread) Thread.currentThread()).worker(st.job);
+            w = ((WorkerThread) Thread.currentThread()).worker(st.job);
             for (int t = next.getAndIncrement(); t < tiles.size() && !st.isStale(); t = next.getAndIncrement()) {
                 int[] tile = tiles.get(t);
                 if (!w.renderTile(st, pass, tile[0], tile[1], tile[2], tile[3], display)) {
                     break;
                 }
+                st.progress.tileDone(pass, tile);
             }
         } catch (Throwable e) {
             st.failure = e;
         } finally {
+            if (w != null) {
+                w.release();
+            }
             activeWorkers.decrementAndGet();
             latch.countDown();
         }

@@ -11,15 +11,18 @@ final class RenderState {
     final Film film;
     final PixelSampler sampler;
     final FrameSink sink;
+    final ProgressCounter progress;
     final LongAdder primaryRays = new LongAdder(), shadowRays = new LongAdder(), secondaryRays = new LongAdder();
     private final AtomicInteger currentGeneration;
     final long startNanos = System.nanoTime();
     volatile Throwable failure;
 
-    RenderState(int generation, RenderJob job, FrameSink sink, AtomicInteger currentGeneration) {
+    RenderState(int generation, RenderJob job, FrameSink sink, AtomicInteger currentGeneration,
+                ProgressCounter progress) {
         this.generation = generation;
         this.job = job;
         this.sink = sink;
+        this.progress = progress;
         this.currentGeneration = currentGeneration;
         this.shading = new ShadingScene(job);
         this.film = new Film(job.width(), job.height(),

@@ -5,7 +5,8 @@ import org.beziertracer.intersect.SceneIntersector;
 /**
  * Per-thread scratch and the tile loop: turns the pixels of one tile into camera rays, traces them
  * and adds the samples to the film. One per pool thread (kept by the thread), reused across renders;
- * nothing is allocated per ray or sample.
+ * nothing is allocated per ray or sample. It holds the render's scene only while its thread works
+ * on a pass ({@link #release}).
  */
 final class RenderWorker {
     /** Rows between two checks of the generation inside a tile. */
@@ -72,6 +73,16 @@ final class RenderWorker {
             st.sink.tileDone(st.generation, x0, y0, w, h, argb, w);
         }
         return true;
+    }
+
+    /**
+     * Lets go of the render's scene once this thread's share of a pass is done; the next tile binds
+     * the scene again. A pool thread that got no tile of the newest render would otherwise keep an
+     * older model's snapshot (its BVH, its triangles) reachable for as long as it stays idle.
+     */
+    void release() {
+        tracer.unbind();
+        bound = null;
     }
 
     /** True when the first sample of {@code (x, y)} differs from a 4-neighbour's by more than {@code threshold}. */

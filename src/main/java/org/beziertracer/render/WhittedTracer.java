@@ -73,6 +73,12 @@ public final class WhittedTracer {
         this.si = scene.intersector;
     }
 
+    /** Lets go of the bound scene (a pool thread between renders must not keep an old model alive). */
+    void unbind() {
+        this.s = null;
+        this.si = null;
+    }
+
     /** Sends a line per ray, hit and term to {@code log} (null: off, the default). */
     public void setLog(TraceLog log) { this.events = log == null ? ShadingEvents.NONE : new LoggedShading(log); }
 

@@ -1,10 +1,11 @@
 package org.beziertracer.ui;
 
 import java.awt.BorderLayout;
+import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
-import java.awt.event.InputEvent;
+import java.util.function.Function;
 
 import javax.swing.JComponent;
 import javax.swing.JFrame;
@@ -13,27 +14,36 @@ import javax.swing.JScrollPane;
 import javax.swing.KeyStroke;
 import javax.swing.WindowConstants;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.UserDialogs;
+
 /**
  * The main window: render panel in the centre, toolbox on the left, menu bar and status bar.
- * Closing asks about unsaved edits.
+ * Views and Swing adapters only; the app itself is the {@link AppModel}. Closing asks about unsaved
+ * edits.
  */
 public final class AppFrame extends JFrame {
 
-    private final AppController controller;
+    private final AppModel app;
+    private final Theme theme;
     private final AppActions actions;
     private final RenderPanel renderPanel;
     private final ToolboxPanel toolbox;
     private final StatusBar statusBar;
 
-    public AppFrame(PictureEngine engine) {
+    /**
+     * @param newApp makes the app with the dialogs this window shows
+     * @param theme  the installed look and feel
+     */
+    public AppFrame(Function<UserDialogs, AppModel> newApp, Theme theme) {
         super("Bézier Tracer");
         setName("beziertracer.main");
-        controller = new AppController(engine, null);
-        controller.setDialogs(new SwingDialogs(this));
-        actions = new AppActions(controller, this::toggleTheme, Theme::isDark, this::close);
-        renderPanel = new RenderPanel(controller);
-        toolbox = new ToolboxPanel(controller, actions);
-        statusBar = new StatusBar(controller);
+        this.theme = theme;
+        app = newApp.apply(new SwingDialogs(this));
+        renderPanel = new RenderPanel(app);
+        actions = new AppActions(app, renderPanel::snapshot, this::toggleTheme, theme::isDark, this::close);
+        toolbox = new ToolboxPanel(app, actions);
+        statusBar = new StatusBar(app);
         setJMenuBar(new AppMenuBar(actions, this::about));
         JScrollPane side = new JScrollPane(toolbox, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED,
                 JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
@@ -43,8 +53,8 @@ public final class AppFrame extends JFrame {
         getContentPane().add(renderPanel, BorderLayout.CENTER);
         getContentPane().add(statusBar, BorderLayout.SOUTH);
         bindExtraKeys();
-        controller.addListener(() -> setTitle(controller.title()));
-        setTitle(controller.title());
+        app.addListener(() -> setTitle(app.document().title()));
+        setTitle(app.document().title());
         setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         addWindowListener(new WindowAdapter() {
             @Override
@@ -65,7 +75,7 @@ public final class AppFrame extends JFrame {
     }
 
     private void toggleTheme() {
-        Theme.toggle();
+        theme.toggle();
         actions.refresh();
     }
 
@@ -74,14 +84,14 @@ public final class AppFrame extends JFrame {
                 + "Drag control points, drag empty space to rotate, wheel to zoom.", "About", JOptionPane.INFORMATION_MESSAGE);
     }
 
-    /** Asks about unsaved edits, then stops rendering and disposes the window. */
+    /** Asks about unsaved edits, then stops the app's threads and disposes the window. */
     public void close() {
-        if (controller.quit()) {
-            dispose();
-        }
+        app.files().quit(this::dispose);
     }
 
-    public AppController controller() { return controller; }
+    public AppModel app() { return app; }
+
+    public Theme theme() { return theme; }
 
     public AppActions actions() { return actions; }
 

@@ -6,6 +6,8 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 
+import org.beziertracer.app.ModelLoader;
+
 /** File, Edit, Models, View, Render and Help menus, built from {@link AppActions}. */
 public final class AppMenuBar extends JMenuBar {
 

@@ -4,9 +4,14 @@ import java.util.concurrent.CompletableFuture;
 
 import javax.swing.SwingUtilities;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.AppPreferences;
+import org.beziertracer.app.AppThreads;
+import org.beziertracer.app.RayTraceEngine;
+
 /**
- * Desktop-app bootstrap: system properties, the look and feel ({@link Theme}), then the window,
- * built on the event thread. {@code main} only bootstraps.
+ * Desktop-app bootstrap: system properties, the look and feel ({@link Theme}), the handler of
+ * uncaught errors, then the window, built on the event thread. {@code main} only bootstraps.
  */
 public final class BezierTracerApp {
     private BezierTracerApp() {}
@@ -15,19 +20,26 @@ public final class BezierTracerApp {
         launch();
     }
 
-    /** Opens the main window; returns at once (the app lives on the event thread). */
+    /** Opens the main window with the user's preferences; returns at once (the app lives on the event thread). */
     public static void launch() {
-        start();
+        start(AppPreferences.user());
     }
 
-    /** Opens the main window and completes with it once shown (tests use the frame). */
-    public static CompletableFuture<AppFrame> start() {
+    /**
+     * Opens the main window and completes with it once shown.
+     *
+     * @param prefs where the theme is kept (tests pass a node of their own)
+     */
+    public static CompletableFuture<AppFrame> start(AppPreferences prefs) {
         setProperties();
         CompletableFuture<AppFrame> shown = new CompletableFuture<>();
         SwingUtilities.invokeLater(() -> {
             try {
-                Theme.install();
-                AppFrame frame = new AppFrame(Engines.create());
+                Theme theme = new Theme(prefs);
+                theme.install();
+                AppFrame frame = new AppFrame(dialogs -> new AppModel(new RayTraceEngine(), dialogs,
+                        AppThreads.start(SwingUtilities::invokeLater)), theme);
+                UncaughtErrors.install(frame);
                 frame.setVisible(true);
                 shown.complete(frame);
             } catch (RuntimeException | Error e) {

@@ -4,81 +4,121 @@ import java.awt.Cursor;
 import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.awt.geom.AffineTransform;
+import java.awt.image.BufferedImage;
 
 import javax.swing.JComponent;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.Picture;
+import org.beziertracer.app.PointerTool;
+import org.beziertracer.app.Toggle;
+
 /**
- * The framebuffer: shows the ray-traced picture at <b>device</b> resolution (the Graphics2D
- * transform's scale, 2 under {@code GDK_SCALE=2}) with the overlays on top, and forwards mouse
- * events, converted to device pixels, to the controller. Paints only; never renders.
+ * Shows the ray-traced picture at <b>device</b> resolution (2 under {@code GDK_SCALE=2}) with the
+ * overlay on top, and forwards mouse events, converted to device pixels, to the app's
+ * {@link PointerTool}; its size goes to the app's view when it changes. Painting reads the
+ * picture's pixels and the overlay snapshot and nothing else; it never renders and never calls
+ * into the app.
  */
 public final class RenderPanel extends JComponent {
 
-    private final AppController c;
-    private double scale = 1;
+    private final AppModel app;
+    private final PictureImage images = new PictureImage();
+    private long paintCount;
 
-    public RenderPanel(AppController controller) {
-        this.c = controller;
+    public RenderPanel(AppModel app) {
+        this.app = app;
         setName("renderPanel");
         setPreferredSize(new Dimension(840, 660));
         setOpaque(true);
         setFocusable(true);
-        setToolTipText(null);
+        PointerTool p = app.pointer();
         MouseAdapter mouse = new MouseAdapter() {
             @Override
             public void mousePressed(MouseEvent e) {
                 requestFocusInWindow();
-                c.mousePressed(e.getX() * scale, e.getY() * scale);
+                p.pressed(x(e), y(e));
             }
 
             @Override
-            public void mouseDragged(MouseEvent e) { c.mouseDragged(e.getX() * scale, e.getY() * scale); }
+            public void mouseDragged(MouseEvent e) { p.dragged(x(e), y(e)); }
 
             @Override
-            public void mouseReleased(MouseEvent e) { c.mouseReleased(e.getX() * scale, e.getY() * scale); }
+            public void mouseReleased(MouseEvent e) { p.released(x(e), y(e)); }
 
             @Override
             public void mouseMoved(MouseEvent e) {
-                c.mouseMoved(e.getX() * scale, e.getY() * scale);
-                setCursor(Cursor.getPredefinedCursor(c.hover() != null ? Cursor.HAND_CURSOR : Cursor.DEFAULT_CURSOR));
+                p.moved(x(e), y(e));
+                setCursor(Cursor.getPredefinedCursor(app.overlay().hover() != null ? Cursor.HAND_CURSOR : Cursor.DEFAULT_CURSOR));
             }
 
             @Override
-            public void mouseWheelMoved(MouseWheelEvent e) { c.mouseWheel(e.getPreciseWheelRotation()); }
+            public void mouseWheelMoved(MouseWheelEvent e) { p.wheel(e.getPreciseWheelRotation()); }
         };
         addMouseListener(mouse);
         addMouseMotionListener(mouse);
         addMouseWheelListener(mouse);
-        c.setRepaint(this::repaint);
+        addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) { syncSize(); }
+        });
+        addPropertyChangeListener("graphicsConfiguration", e -> syncSize());
+        app.view().setRepaint(this::repaint);
     }
 
+    private double x(MouseEvent e) { return e.getX() * deviceScale(); }
+
+    private double y(MouseEvent e) { return e.getY() * deviceScale(); }
+
     /** Device pixels per user-space pixel, from the screen's default transform. */
-    public double deviceScale() { return scale; }
+    public double deviceScale() {
+        var gc = getGraphicsConfiguration();
+        return gc == null ? 1 : Math.max(1e-3, gc.getDefaultTransform().getScaleX());
+    }
+
+    private void syncSize() {
+        double scale = deviceScale();
+        int w = (int) Math.ceil(getWidth() * scale), h = (int) Math.ceil(getHeight() * scale);
+        if (w > 0 && h > 0) {
+            app.view().resize(w, h, scale);
+        }
+    }
+
+    /** Paints so far (tests check that the window repaints). */
+    public long paintCount() { return paintCount; }
 
     @Override
     protected void paintComponent(Graphics g) {
         Graphics2D g2 = (Graphics2D) g.create();
         try {
             AffineTransform t = g2.getTransform();
-            scale = Math.max(1e-3, t.getScaleX());
-            int w = (int) Math.ceil(getWidth() * scale), h = (int) Math.ceil(getHeight() * scale);
-            if (w <= 0 || h <= 0) {
-                return;
-            }
-            c.viewport(w, h, scale);
+            int w = (int) Math.ceil(getWidth() * t.getScaleX()), h = (int) Math.ceil(getHeight() * t.getScaleY());
             // Draw in device pixels: undo the scale, keep the translation
             g2.scale(1 / t.getScaleX(), 1 / t.getScaleY());
-            FrameBuffer fb = c.buffer();
-            if (fb != null) {
-                fb.painted();
+            Picture picture = app.view().picture();
+            BufferedImage image = null;
+            if (picture != null) {
+                picture.painted();
+                image = app.settings().current().on(Toggle.RAY_TRACE) ? images.of(picture) : null;
             }
-            PictureSnapshot.paint(g2, c, w, h, scale);
+            PicturePainter.paint(g2, image, app.overlay().snapshot(), w, h, t.getScaleX());
+            paintCount++;
         } finally {
             g2.dispose();
         }
+    }
+
+    /** The picture as shown now, at device resolution (Export Picture, tests). */
+    public BufferedImage snapshot() {
+        Picture picture = app.view().picture();
+        boolean traced = picture != null && app.settings().current().on(Toggle.RAY_TRACE);
+        return PicturePainter.snapshot(traced ? images.of(picture) : null, app.overlay().snapshot(),
+                app.view().width(), app.view().height(), app.view().scale());
     }
 }

@@ -4,18 +4,28 @@ import java.awt.FlowLayout;
 import java.util.Locale;
 
 import javax.swing.BorderFactory;
+import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import javax.swing.JProgressBar;
 import javax.swing.JSeparator;
 import javax.swing.SwingConstants;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.OverlayGeometry;
+import org.beziertracer.app.RenderStatus;
+import org.beziertracer.app.Settings;
+import org.beziertracer.app.Task;
+import org.beziertracer.app.Toggle;
+
 /**
- * Frame ms, Mrays/s, pass k of n, samples per pixel, method, BVH speed-up, grid and the last
- * message (for instance the random seed). Reads the controller on every refresh.
+ * Frame ms, Mrays/s, pass k of n, samples per pixel, method, BVH speed-up, model size, the last
+ * message (for instance the random seed), and — while a model is being opened — a progress bar
+ * with a Cancel button. Reads the app's status snapshot on every refresh.
  */
 public final class StatusBar extends JPanel {
 
-    private final AppController c;
+    private final AppModel app;
     private final JLabel frame = label("time since the render started, at the latest pass; snapshot: re-split and BVH refit (or build)");
     private final JLabel rays = label("millions of rays per second");
     private final JLabel pass = label("progressive pass finished / passes per frame");
@@ -24,11 +34,20 @@ public final class StatusBar extends JPanel {
     private final JLabel bvh = label("sub-patch BVH and its measured speed-up over whole patches");
     private final JLabel model = label("patches and control points of the model");
     private final JLabel message = label("last action");
+    private final JProgressBar progress = new JProgressBar();
+    private final JButton cancel = new JButton("Cancel");
 
-    public StatusBar(AppController controller) {
+    public StatusBar(AppModel app) {
         super(new FlowLayout(FlowLayout.LEFT, 8, 2));
-        this.c = controller;
+        this.app = app;
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, getForeground().darker()));
+        progress.setName("status.progress");
+        progress.setToolTipText("opening a model; the current one stays until it is read");
+        cancel.setName("status.cancel");
+        cancel.setToolTipText("stop opening the model and keep the current one");
+        cancel.addActionListener(e -> cancelTask());
+        add(progress);
+        add(cancel);
         for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, message}) {
             add(l);
             if (l != message) {
@@ -37,11 +56,20 @@ public final class StatusBar extends JPanel {
         }
         frame.setName("status.frame");
         pass.setName("status.pass");
+        spp.setName("status.spp");
         bvh.setName("status.bvh");
         method.setName("status.method");
+        model.setName("status.model");
         message.setName("status.message");
-        c.addListener(this::refresh);
+        app.addListener(this::refresh);
         refresh();
+    }
+
+    private void cancelTask() {
+        Task t = app.status().task();
+        if (t != null) {
+            t.cancel();
+        }
     }
 
     private static JLabel label(String tip) {
@@ -51,9 +79,9 @@ public final class StatusBar extends JPanel {
     }
 
     public void refresh() {
-        RenderStatus s = c.status();
-        ToolSettings t = c.tools();
-        if (!t.rayTrace) {
+        RenderStatus s = app.status().render();
+        Settings t = app.settings().current();
+        if (!t.on(Toggle.RAY_TRACE)) {
             frame.setText("wireframe");
             rays.setText("—");
             pass.setText("—");
@@ -62,17 +90,29 @@ public final class StatusBar extends JPanel {
             rays.setText(String.format(Locale.ROOT, "%.2f Mrays/s", s.mraysPerSecond()));
             pass.setText("pass " + s.pass() + " of " + s.passCount());
         }
-        spp.setText((t.superSampling ? t.samplesPerPixel : 1) + " spp");
+        spp.setText(t.samplesPerPixel() + " spp");
         method.setText(t.intersectionLabel());
         String speedUp = s != null && s.bvhSpeedUp() > 0 ? String.format(Locale.ROOT, " ×%.1f", s.bvhSpeedUp()) : "";
-        bvh.setText(t.bvh ? "BVH on" + speedUp : "BVH off" + speedUp);
-        int points = 0;
-        for (var p : c.scene().patches()) {
-            points += p.pointCount();
+        bvh.setText(t.on(Toggle.BVH) ? "BVH on" + speedUp : "BVH off" + speedUp);
+        model.setText(modelText(app.overlay().geometry(), t));
+        message.setText(app.status().message());
+        Task task = app.status().task();
+        progress.setVisible(task != null);
+        // Animated only while shown: a hidden indeterminate bar still ticks its 15 ms timer,
+        // waking the event thread 66 times a second for nothing
+        progress.setIndeterminate(task != null);
+        cancel.setVisible(task != null);
+        progress.setString(task == null ? "" : task.label());
+        progress.setStringPainted(task != null);
+    }
+
+    private static String modelText(OverlayGeometry g, Settings t) {
+        String grid = "new grid " + t.level(org.beziertracer.app.Level.GRID_U) + "×" + t.level(org.beziertracer.app.Level.GRID_V);
+        if (g.scene() == null) {
+            return grid;
         }
-        model.setText(c.scene().patchCount() + " patch" + (c.scene().patchCount() == 1 ? "" : "es") + ", " + points
-                + " points; new grid " + t.gridPointsU + "×" + t.gridPointsV);
-        message.setText(c.message());
+        int patches = g.scene().patchCount();
+        return patches + " patch" + (patches == 1 ? "" : "es") + ", " + g.pointCount() + " points; " + grid;
     }
 
     /** Text of the label called {@code status.<key>} (tests). */
@@ -80,8 +120,10 @@ public final class StatusBar extends JPanel {
         return switch (key) {
             case "frame" -> frame.getText();
             case "pass" -> pass.getText();
+            case "spp" -> spp.getText();
             case "bvh" -> bvh.getText();
             case "method" -> method.getText();
+            case "model" -> model.getText();
             default -> message.getText();
         };
     }

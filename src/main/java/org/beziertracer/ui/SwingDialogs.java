@@ -9,6 +9,8 @@ import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import org.beziertracer.app.ModelLoader;
+import org.beziertracer.app.UserDialogs;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.FileFormats;
 

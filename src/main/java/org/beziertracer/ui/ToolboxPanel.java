@@ -19,17 +19,23 @@ import javax.swing.JSlider;
 import javax.swing.JSpinner;
 import javax.swing.SpinnerNumberModel;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.Level;
+import org.beziertracer.app.LightPlacement;
+import org.beziertracer.app.Settings;
+import org.beziertracer.app.SettingsModel;
+import org.beziertracer.app.Toggle;
 import org.beziertracer.intersect.Method;
 
 /**
  * The memoir's toolbox (annex 2) plus our extras: buttons and check boxes bound to
  * {@link AppActions} (so they share names, shortcuts and tooltips with the menus), sliders,
- * spinners and combo boxes whose listeners are one-liners into {@link AppController#setting}.
+ * spinners and combo boxes whose listeners are one-liners into the app's {@link SettingsModel}.
  * Every control has a name ({@code tool.<id>}) for tests, a tooltip and a shortcut.
  */
 public final class ToolboxPanel extends JPanel {
 
-    private final AppController c;
+    private final AppModel app;
     private final AppActions actions;
     private boolean syncing;
     private final JSlider subdivision;
@@ -37,14 +43,13 @@ public final class ToolboxPanel extends JPanel {
     private final JSlider perspective;
     private final JSpinner gridU;
     private final JSpinner gridV;
-    private final JComboBox<Integer> spp = new JComboBox<>(new Integer[] {4, 9, 16});
+    private final JComboBox<Integer> spp = new JComboBox<>(boxed(Level.SAMPLES_PER_PIXEL.choices()));
     private final JComboBox<Method> method = new JComboBox<>(Method.values());
-    private final JComboBox<Integer> tessellation = new JComboBox<>(
-            java.util.Arrays.stream(ToolSettings.TESSELLATION_CHOICES).boxed().toArray(Integer[]::new));
+    private final JComboBox<Integer> tessellation = new JComboBox<>(boxed(Level.TESSELLATION.choices()));
     private final JComboBox<LightPlacement> light = new JComboBox<>(LightPlacement.values());
 
-    public ToolboxPanel(AppController controller, AppActions actions) {
-        this.c = controller;
+    public ToolboxPanel(AppModel app, AppActions actions) {
+        this.app = app;
         this.actions = actions;
         subdivision = slider(1, 64, "subdivision", "Wireframe subdivision: granularity of the "
                 + "projected 2-D evaluation", "finer", "coarser");
@@ -56,15 +61,26 @@ public final class ToolboxPanel extends JPanel {
         gridV = spinner("gridV", "Control points along v of a new patch (Reset)");
         setLayout(new BoxLayout(this, BoxLayout.Y_AXIS));
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        ToolSettings t = c.tools();
+        SettingsModel s = app.settings();
+        for (JPanel p : new JPanel[] {surfaceSection(s), viewSection(s), shadingSection(s), qualitySection(s)}) {
+            add(p);
+        }
+        add(Box.createVerticalGlue());
+        app.addListener(this::refresh);
+        refresh();
+    }
 
+    private JPanel surfaceSection(SettingsModel s) {
         JPanel surface = section("Surface");
         surface.add(button("resetPoints"));
         surface.add(button("randomize"));
         surface.add(row(new JLabel("New grid u × v"), gridU, gridV));
-        gridU.addChangeListener(e -> onInt(v -> c.setting(() -> t.gridPointsU = v), (Integer) gridU.getValue()));
-        gridV.addChangeListener(e -> onInt(v -> c.setting(() -> t.gridPointsV = v), (Integer) gridV.getValue()));
+        gridU.addChangeListener(e -> onInt(v -> s.set(Level.GRID_U, v), (Integer) gridU.getValue()));
+        gridV.addChangeListener(e -> onInt(v -> s.set(Level.GRID_V, v), (Integer) gridV.getValue()));
+        return surface;
+    }
 
+    private JPanel viewSection(SettingsModel s) {
         JPanel view = section("View");
         view.add(button("resetView"));
         JButton mode = new JButton(actions.get("rayTrace"));
@@ -75,9 +91,13 @@ public final class ToolboxPanel extends JPanel {
         view.add(check("wireframe"));
         view.add(labelled("Wireframe subdivision", subdivision));
         view.add(labelled("Perspective", perspective));
-        subdivision.addChangeListener(e -> onInt(v -> c.setting(() -> t.wireframeSubdivision = v), subdivision.getValue()));
-        perspective.addChangeListener(e -> onInt(v -> c.setting(() -> t.perspective = v), perspective.getValue()));
+        subdivision.addChangeListener(e -> onInt(v -> s.set(Level.WIREFRAME_SUBDIVISION, v), subdivision.getValue()));
+        perspective.addChangeListener(e -> onInt(v -> s.set(Level.PERSPECTIVE, v), perspective.getValue()));
+        view.add(check("dark"));
+        return view;
+    }
 
+    private JPanel shadingSection(SettingsModel s) {
         JPanel shading = section("Shading");
         shading.add(check("phong"));
         shading.add(check("texture"));
@@ -85,8 +105,11 @@ public final class ToolboxPanel extends JPanel {
         shading.add(check("shadows"));
         shading.add(check("reflections"));
         shading.add(labelled("Light", combo(light, "light", "Light position")));
-        light.addActionListener(e -> onInt(v -> c.setting(() -> t.light = LightPlacement.values()[v]), light.getSelectedIndex()));
+        light.addActionListener(e -> onInt(v -> s.set(LightPlacement.values()[v]), light.getSelectedIndex()));
+        return shading;
+    }
 
+    private JPanel qualitySection(SettingsModel s) {
         method.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override
             public Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
@@ -104,19 +127,15 @@ public final class ToolboxPanel extends JPanel {
         quality.add(check("tessellated"));
         quality.add(labelled("K (cells per side)", combo(tessellation, "tessellation",
                 "Tessellated mode: K×K cells per patch, two triangles each")));
-        tessellation.addActionListener(e -> onInt(c::setTessellation, (Integer) tessellation.getSelectedItem()));
-        spp.addActionListener(e -> onInt(v -> c.setting(() -> t.samplesPerPixel = v), (Integer) spp.getSelectedItem()));
-        method.addActionListener(e -> onInt(v -> c.setMethod(Method.values()[v]), method.getSelectedIndex()));
-        interactivity.addChangeListener(e -> onInt(v -> c.setting(() -> t.interactivity = v), interactivity.getValue()));
+        tessellation.addActionListener(e -> onInt(v -> s.set(Level.TESSELLATION, v), (Integer) tessellation.getSelectedItem()));
+        spp.addActionListener(e -> onInt(v -> s.set(Level.SAMPLES_PER_PIXEL, v), (Integer) spp.getSelectedItem()));
+        method.addActionListener(e -> onInt(v -> s.set(Method.values()[v]), method.getSelectedIndex()));
+        interactivity.addChangeListener(e -> onInt(v -> s.set(Level.INTERACTIVITY, v), interactivity.getValue()));
+        return quality;
+    }
 
-        view.add(check("dark"));
-
-        for (JPanel p : new JPanel[] {surface, view, shading, quality}) {
-            add(p);
-        }
-        add(Box.createVerticalGlue());
-        c.addListener(this::refresh);
-        refresh();
+    private static Integer[] boxed(int[] values) {
+        return java.util.Arrays.stream(values).boxed().toArray(Integer[]::new);
     }
 
     private void onInt(IntConsumer apply, int value) {
@@ -127,20 +146,20 @@ public final class ToolboxPanel extends JPanel {
 
     /** Brings sliders, spinners and combos in line with the settings. */
     public void refresh() {
-        ToolSettings t = c.tools();
+        Settings t = app.settings().current();
         syncing = true;
         try {
-            subdivision.setValue(t.wireframeSubdivision);
-            interactivity.setValue(t.interactivity);
-            perspective.setValue(t.perspective);
-            gridU.setValue(t.gridPointsU);
-            gridV.setValue(t.gridPointsV);
-            spp.setSelectedItem(t.samplesPerPixel);
-            spp.setEnabled(t.superSampling);
-            method.setSelectedItem(t.method);
-            tessellation.setSelectedItem(t.tessellation);
-            tessellation.setEnabled(t.tessellated);
-            light.setSelectedItem(t.light);
+            subdivision.setValue(t.level(Level.WIREFRAME_SUBDIVISION));
+            interactivity.setValue(t.level(Level.INTERACTIVITY));
+            perspective.setValue(t.level(Level.PERSPECTIVE));
+            gridU.setValue(t.level(Level.GRID_U));
+            gridV.setValue(t.level(Level.GRID_V));
+            spp.setSelectedItem(t.level(Level.SAMPLES_PER_PIXEL));
+            spp.setEnabled(t.on(Toggle.SUPER_SAMPLING));
+            method.setSelectedItem(t.method());
+            tessellation.setSelectedItem(t.level(Level.TESSELLATION));
+            tessellation.setEnabled(t.on(Toggle.TESSELLATED));
+            light.setSelectedItem(t.light());
         } finally {
             syncing = false;
         }

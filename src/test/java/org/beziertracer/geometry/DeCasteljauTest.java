@@ -132,6 +132,56 @@ class DeCasteljauTest {
         }
     }
 
+    @Test
+    void splitAndSubPatchHonourOutputsInOtherRegionsOfTheSourceArray() {
+        Random rnd = new Random(55);
+        for (int trial = 0; trial < 24; trial++) {
+            int n = 1 + rnd.nextInt(6), m = 1 + rnd.nextInt(6), dim = DIMS[trial % 3], len = (n + 1) * (m + 1) * dim;
+            boolean inU = trial % 2 == 0;
+            double[] net = randomNet(rnd, n, m, dim, 1);
+            double t = rnd.nextDouble();
+            double[] lo = new double[len], hi = new double[len];
+            split(inU, net, n, m, dim, t, lo, hi);
+            String what = (inU ? "splitU " : "splitV ") + degrees(n, m, dim) + " t=" + t;
+            // One array: the source at 0, lo at len, hi at 2 len; each output alone, then both
+            for (int outputs = 1; outputs <= 3; outputs++) {
+                double[] all = new double[3 * len];
+                System.arraycopy(net, 0, all, 0, len);
+                double[] loArr = (outputs & 1) != 0 ? all : null, hiArr = (outputs & 2) != 0 ? all : null;
+                if (inU) {
+                    DeCasteljau.splitU(all, 0, n, m, dim, t, loArr, len, hiArr, 2 * len);
+                } else {
+                    DeCasteljau.splitV(all, 0, n, m, dim, t, loArr, len, hiArr, 2 * len);
+                }
+                assertArrayEquals(net, Arrays.copyOfRange(all, 0, len), 0, what + ": source kept, outputs " + outputs);
+                if (loArr != null) {
+                    assertArrayEquals(lo, Arrays.copyOfRange(all, len, 2 * len), 0, what + ": lo, outputs " + outputs);
+                }
+                if (hiArr != null) {
+                    assertArrayEquals(hi, Arrays.copyOfRange(all, 2 * len, 3 * len), 0, what + ": hi, outputs " + outputs);
+                }
+            }
+            // A separate array at the source's offset, the other half in place or skipped
+            double[] sepLo = new double[len], inPlaceHi = net.clone();
+            split(inU, inPlaceHi, n, m, dim, t, sepLo, inPlaceHi);
+            assertArrayEquals(lo, sepLo, 0, what + ": separate lo, hi in place");
+            double[] onlyLo = new double[len], onlyHi = new double[len];
+            split(inU, net.clone(), n, m, dim, t, onlyLo, null);
+            split(inU, net.clone(), n, m, dim, t, null, onlyHi);
+            assertArrayEquals(lo, onlyLo, 0, what + ": separate lo only");
+            assertArrayEquals(hi, onlyHi, 0, what + ": separate hi only");
+            // subPatch into another region of the same array, and into another array at the same offset
+            double[] box = {0.2 * t, 0.5 + 0.5 * t, 0.1, 0.9}, expected = net.clone();
+            DeCasteljau.subPatch(expected, 0, n, m, dim, box[0], box[1], box[2], box[3], expected, 0);
+            double[] shared = new double[2 * len], other = new double[len];
+            System.arraycopy(net, 0, shared, 0, len);
+            DeCasteljau.subPatch(shared, 0, n, m, dim, box[0], box[1], box[2], box[3], shared, len);
+            DeCasteljau.subPatch(net, 0, n, m, dim, box[0], box[1], box[2], box[3], other, 0);
+            assertArrayEquals(expected, Arrays.copyOfRange(shared, len, 2 * len), 0, what + ": subPatch, same array");
+            assertArrayEquals(expected, other, 0, what + ": subPatch, other array");
+        }
+    }
+
     private static void split(boolean inU, double[] src, int n, int m, int dim, double t, double[] lo, double[] hi) {
         if (inU) {
             DeCasteljau.splitU(src, 0, n, m, dim, t, lo, 0, hi, 0);

@@ -1,6 +1,7 @@
 package org.beziertracer.geometry;
 
 import static org.beziertracer.Tolerances.ROUNDING;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -267,6 +268,132 @@ class PatchNormalsTest {
             PatchNormals.unitNormal(net, 0, n, m, u, v, e, b, 0, scratch);
             for (int c = 0; c < 3; c++) {
                 assertEquals(a[c], b[c], ROUNDING, "trial " + trial + " degree " + n + "x" + m + " (u,v)=(" + u + "," + v + ")");
+            }
+        }
+    }
+
+    @Test
+    void squaredExtentIsTheLargestSideOfTheControlBoxSquared() {
+        Random rnd = new Random(91);
+        for (int trial = 0; trial < 100; trial++) {
+            int n = 1 + rnd.nextInt(7), m = 1 + rnd.nextInt(7), off = 3 * rnd.nextInt(3);
+            double[] net = new double[off + (n + 1) * (m + 1) * 3 + 6];
+            Arrays.fill(net, 1e6);   // padding that must not count
+            double[] side = {rnd.nextDouble() * 4, rnd.nextDouble() * 4, rnd.nextDouble() * 4};
+            double[] lo = new double[3], hi = new double[3];
+            Arrays.fill(lo, Double.POSITIVE_INFINITY);
+            Arrays.fill(hi, Double.NEGATIVE_INFINITY);
+            for (int k = 0; k < (n + 1) * (m + 1); k++) {
+                for (int c = 0; c < 3; c++) {
+                    double x = side[c] * (2 * rnd.nextDouble() - 1) - 5;
+                    net[off + 3 * k + c] = x;
+                    lo[c] = Math.min(lo[c], x);
+                    hi[c] = Math.max(hi[c], x);
+                }
+            }
+            double ext = Math.max(hi[0] - lo[0], Math.max(hi[1] - lo[1], hi[2] - lo[2]));
+            assertEquals(ext * ext, PatchNormals.squaredExtent(net, off, n, m), ROUNDING * ext * ext,
+                    "degree " + n + "x" + m + " offset " + off);
+        }
+    }
+
+    @Test
+    void theLastFallbackIsTheNormalOfTheNetDiagonalsElsePlusZ() {
+        Random rnd = new Random(92);
+        for (int trial = 0; trial < 50; trial++) {
+            int n = 1 + rnd.nextInt(6), m = 1 + rnd.nextInt(6), off = 3 * rnd.nextInt(4);
+            double[] net = new double[off + (n + 1) * (m + 1) * 3];
+            for (int k = off; k < net.length; k++) {
+                net[k] = 2 * rnd.nextDouble() - 1;
+            }
+            int p00 = off, pn0 = off + 3 * n, p0m = off + 3 * m * (n + 1), pnm = p0m + 3 * n;
+            double[] a = new double[3], b = new double[3];
+            for (int c = 0; c < 3; c++) {
+                a[c] = net[pnm + c] - net[p00 + c];
+                b[c] = net[p0m + c] - net[pn0 + c];
+            }
+            double[] cross = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+            double len = Math.sqrt(dot(cross, cross));
+            double[] out = new double[5];
+            PatchNormals.netNormal(net, off, n, m, out, 2);
+            for (int c = 0; c < 3; c++) {
+                assertEquals(cross[c] / len, out[2 + c], ROUNDING, "degree " + n + "x" + m + " offset " + off);
+            }
+        }
+        double[] line = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0};   // 1x1 net on the x axis: diagonals parallel
+        double[] out = new double[3];
+        PatchNormals.netNormal(line, 0, 1, 1, out, 0);
+        assertArrayEquals(new double[] {0, 0, 1}, out, 0);
+    }
+
+    @Test
+    void aCrossProductBelowTheDegreeScaledThresholdCountsAsDegenerate() {
+        // Flat unit square, bicubic, but its v=0 row is squeezed to the point (0.5,0,0) and then
+        // fanned out along z by eps, all scaled by 2: at v=0 the cross product lies between
+        // DEGENERATE_RELATIVE·L² and DEGENERATE_RELATIVE·n·m·L², and points along x.
+        double eps = 1.25e-10;
+        double[] net = flatSquare(3, 3);
+        for (int i = 0; i <= 3; i++) {
+            net[3 * i] = 0.5;
+            net[3 * i + 2] = eps * i;
+        }
+        for (int k = 0; k < net.length; k++) {
+            net[k] *= 2;   // extent 2, so that the threshold's L² is not 1
+        }
+        double[] d = new double[9], viaDerivatives = new double[3];
+        DeCasteljau.evaluateWithDerivatives(net, 0, 3, 3, 0.3, 0, d, scratch);
+        double[] crossAtEdge = {d[4] * d[8] - d[5] * d[7], d[5] * d[6] - d[3] * d[8], d[3] * d[7] - d[4] * d[6]};
+        double len = Math.sqrt(dot(crossAtEdge, crossAtEdge));
+        double ext2 = PatchNormals.squaredExtent(net, 0, 3, 3);
+        assertTrue(len > PatchNormals.DEGENERATE_RELATIVE * ext2 && len < PatchNormals.DEGENERATE_RELATIVE * 9 * ext2,
+                "set-up: |cross| = " + len);
+        double[] nrm = normal(net, 3, 3, 0.3, 0);
+        assertTrue(nrm[2] > 0.99, "the limit normal of the squeezed edge is +z, got " + Arrays.toString(nrm));
+        PatchNormals.unitNormal(net, 0, 3, 3, 0.3, 0, d, viaDerivatives, 0, scratch);
+        assertArrayEquals(nrm, viaDerivatives, ROUNDING, "overload taking the derivatives");
+    }
+
+    @Test
+    void aDegenerateCentreStepsTowardAnInteriorPointNotTheDiagonalFallback() {
+        // S(u,v) = (x(u), v, z(v)) with x' = 3(1-2u)^2: S_u vanishes on the line u = 1/2 only.
+        double[] xs = {0, 1, 0, 1}, zs = {0, 0.3, 0.1, 0.5};
+        double[] net = new double[16 * 3];
+        for (int j = 0; j <= 3; j++) {
+            for (int i = 0; i <= 3; i++) {
+                int k = 3 * (j * 4 + i);
+                net[k] = xs[i];
+                net[k + 1] = j / 3.0;
+                net[k + 2] = zs[j];
+            }
+        }
+        double dz = 3 * (0.25 * 0.3 + 0.5 * -0.2 + 0.25 * 0.4);   // z'(1/2); y' = 1
+        double len = Math.sqrt(1 + dz * dz);
+        double[] expected = {0, -dz / len, 1 / len};
+        double[] nrm = normal(net, 3, 3, 0.5, 0.5);
+        assertArrayEquals(expected, nrm, 1e-3, "limit normal at the centre, got " + Arrays.toString(nrm));
+    }
+
+    @Test
+    void anEdgeCollapsedOnAnyOfTheFourSidesGetsTheNormalOfItsInnerNeighbours() {
+        Random rnd = new Random(93);
+        for (int trial = 0; trial < 24; trial++) {
+            int n = 2 + rnd.nextInt(5), m = 2 + rnd.nextInt(5), edge = trial % 4;
+            double[] net = flatSquare(n, m);
+            for (int k = 2; k < net.length; k += 3) {
+                net[k] = 0.05 * (2 * rnd.nextDouble() - 1);
+            }
+            int count = edge < 2 ? n : m;
+            int apex = index(n, m, edge, count / 2);
+            for (int k = 0; k <= count; k++) {
+                System.arraycopy(net, apex, net, index(n, m, edge, k), 3);
+            }
+            for (int s = 1; s < 10; s++) {
+                double t = s / 10.0;
+                double u = edge == 2 ? 0 : edge == 3 ? 1 : t, v = edge == 0 ? 0 : edge == 1 ? 1 : t;
+                double iu = edge == 2 ? 1e-3 : edge == 3 ? 1 - 1e-3 : t, iv = edge == 0 ? 1e-3 : edge == 1 ? 1 - 1e-3 : t;
+                double[] nrm = normal(net, n, m, u, v), inner = crossNormal(net, n, m, iu, iv);
+                String what = "edge " + edge + " of " + n + "x" + m + " at (" + u + "," + v + ")";
+                assertTrue(dot(nrm, inner) > 0.99, what + ": " + Arrays.toString(nrm) + " vs " + Arrays.toString(inner));
             }
         }
     }

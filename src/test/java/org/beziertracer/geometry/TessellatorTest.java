@@ -84,4 +84,13 @@ class TessellatorTest {
         assertTrue(e.contains("got 0"), e);
         UserMessages.of(IllegalArgumentException.class, () -> Tessellator.tessellate(List.of(), 4));
     }
+
+    @Test
+    void theOnePatchFormIsTheListFormOfThatPatch() {
+        BezierPatch lid = TestNets.teapot().get(28);
+        Mesh one = Tessellator.tessellate(lid, 4), list = Tessellator.tessellate(List.of(lid), 4);
+        assertEquals(list.triangleCount(), one.triangleCount());
+        org.junit.jupiter.api.Assertions.assertArrayEquals(list.positions(), one.positions(), 0);
+        assertEquals(0, one.patchOfTriangle(one.triangleCount() - 1));
+    }
 }

@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import static org.beziertracer.Tolerances.NORMAL;
+import static org.beziertracer.Tolerances.ON_SURFACE;
 import static org.beziertracer.Tolerances.ROOT_T;
 import static org.beziertracer.Tolerances.ROUNDING;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -19,6 +20,12 @@ import org.junit.jupiter.params.provider.EnumSource;
 class TeapotIntersectionTest {
 
     static final Scene TEAPOT = Models.load("teapot");
+    /**
+     * Rays of the knob test that Newton misses or answers with a farther root, of 800: today 0
+     * misses and 33 farther roots (its leaf-centre start converges to the far side of the knob's
+     * ring). Issue #10 is to bring this down; lower it then, never raise it.
+     */
+    static final int NEWTON_KNOB_WRONG = 33;
     /** The diagonal of the teapot's control box, the scale of its tolerances. */
     static final double TEAPOT_SIZE = TEAPOT.controlBounds().diagonal();
 
@@ -50,16 +57,24 @@ class TeapotIntersectionTest {
         }
     }
 
+    /**
+     * Rays from above and outside at random points of the knob patches (around the ring at
+     * z = 108, where the knob's profile turns sharply): every hit has a unit normal and lies on
+     * the surface; clipping hits the aimed point unless the surface is nearer; Newton (from its
+     * leaf-centre starts) hits what clipping hits, missing or passing a nearer root on at most
+     * the share measured today (issue #10 will lower it).
+     */
     @ParameterizedTest
     @EnumSource(value = Method.class, names = {"CLIPPING", "NEWTON"})
-    void raysAtTheKnobAroundTheRingAtZ108HitWithFiniteNormals(Method method) {
+    void raysAtTheKnobAroundTheRingAtZ108HitTheSurface(Method method) {
         SceneIntersector si = SceneIntersector.build(TEAPOT, IntersectOptions.defaults().withMethod(method));
-        TraceContext ctx = si.newContext();
-        Hit hit = new Hit();
+        SceneIntersector exact = SceneIntersector.build(TEAPOT, IntersectOptions.defaults());
+        TraceContext ctx = si.newContext(), ce = exact.newContext();
+        Hit hit = new Hit(), ref = new Hit();
         SurfacePoint sp = new SurfacePoint();
         double[] s = new double[3], scratch = new double[DeCasteljau.SCRATCH_LENGTH];
         Random rnd = new Random(108);
-        int tested = 0;
+        int tested = 0, nearer = 0, missed = 0, farther = 0;
         for (int k = 0; k < TEAPOT.patchCount(); k++) {
             BezierPatch p = TEAPOT.patches().get(k);
             if (p.controlBounds().minZ() > 108 + 1e-9 || p.controlBounds().maxZ() < 108 - 1e-9 || p.controlBounds().minZ() < 90) {
@@ -68,19 +83,41 @@ class TeapotIntersectionTest {
             for (int r = 0; r < 200; r++) {
                 double u = rnd.nextDouble(), v = rnd.nextDouble();
                 DeCasteljau.evaluate(p.copyNet(), 0, 3, 3, 3, u, v, s, 0, scratch);
-                // from above and outside, aimed at the surface point
-                double ox = s[0] * 3, oy = s[1] * 3, oz = 200;
-                String where = "patch " + k + " (u,v)=(" + u + "," + v + ")";
+                // from above and outside, aimed at the surface point: t = 1 there
+                double ox = s[0] * 3, oy = s[1] * 3, oz = 200, dx = s[0] - ox, dy = s[1] - oy, dz = s[2] - oz;
+                String where = method.label() + " patch " + k + " (u,v)=(" + u + "," + v + ")";
+                double tTol = ROOT_T * TEAPOT_SIZE / Math.sqrt(dx * dx + dy * dy + dz * dz);
                 tested++;
-                if (!si.closestHit(ctx, ox, oy, oz, s[0] - ox, s[1] - oy, s[2] - oz, 0, Double.POSITIVE_INFINITY, hit)) {
-                    assertTrue(method == Method.NEWTON, "missed the knob: " + where);
+                assertTrue(exact.closestHit(ce, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, ref),
+                        "clipping missed the knob: " + where);
+                assertTrue(ref.t <= 1 + tTol, "clipping hit beyond the aimed point, t=" + ref.t + ": " + where);
+                if (ref.t < 1 - tTol) {
+                    nearer++; // the surface is in front of the aimed point
+                }
+                if (!si.closestHit(ctx, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
+                    missed++;
                     continue;
                 }
                 si.surfacePoint(ctx, hit, sp);
                 assertUnitNormal(sp, where);
+                double ex = ox + hit.t * dx - sp.px, ey = oy + hit.t * dy - sp.py, ez = oz + hit.t * dz - sp.pz;
+                assertTrue(Math.sqrt(ex * ex + ey * ey + ez * ez) <= ON_SURFACE * TEAPOT_SIZE,
+                        "hit point off the surface: " + where);
+                if (Math.abs(hit.t - ref.t) > tTol) {
+                    assertTrue(hit.t > ref.t, "nearer than clipping's nearest root, t=" + hit.t + " vs " + ref.t + ": " + where);
+                    farther++;
+                }
             }
         }
         assertTrue(tested >= 400, "knob patches found: " + tested / 200);
+        assertTrue(nearer > 0, "some aimed points lie behind nearer surface");
+        int wrong = missed + farther;
+        if (method == Method.CLIPPING) {
+            assertEquals(0, wrong, "clipping missed " + missed + ", returned a farther root " + farther + " times");
+        } else {
+            assertTrue(wrong <= NEWTON_KNOB_WRONG, "Newton missed " + missed + " and returned a farther root " + farther
+                    + " times of " + tested + " (bound " + NEWTON_KNOB_WRONG + ")");
+        }
     }
 
     /** Shoots a dense grid of rays at every patch border; none may fall through. */

@@ -4,9 +4,11 @@ import static org.beziertracer.Tolerances.FLOAT;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -15,6 +17,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
+import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
@@ -198,6 +201,28 @@ class RenderSessionTest {
             assertEquals(32, r.film().width());
             assertTrue(session.awaitIdle(5, TimeUnit.SECONDS));
             assertEquals(List.of(g2), finished, "only the newest generation " + g2 + " finishes, not " + g1);
+        }
+    }
+
+    /**
+     * Found by the app soak: after a big model, a small picture rendered by fewer workers than the
+     * pool holds left the idle workers bound to the big model's snapshot, so it stayed in the heap.
+     */
+    @Test
+    void idleWorkersLetGoOfAFinishedRendersScene() throws InterruptedException {
+        RenderSettings s = new RenderSettings(128, 96, 1, "regular", "clipping", true, "phong", 0, true, 5);
+        RenderJob first = TestScenes.job(TestScenes.teapot(), s)
+                .withOptions(RenderOptions.defaults().withThreads(4).withTileSize(16));
+        WeakReference<SceneIntersector> firstSnapshot = new WeakReference<>(first.intersector());
+        try (RenderSession session = new RenderSession(4, FrameSink.NONE)) {
+            session.render(first);
+            first = null;
+            session.render(mirrorJob(8, 8, 1, "regular", false)); // one tile: one worker renders it
+            for (int k = 0; k < 50 && firstSnapshot.get() != null; k++) {
+                System.gc();
+                Thread.sleep(20);
+            }
+            assertNull(firstSnapshot.get(), "the first render's snapshot is unreachable once the second is done");
         }
     }
 

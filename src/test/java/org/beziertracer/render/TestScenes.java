@@ -4,6 +4,7 @@ import java.util.List;
 
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
@@ -39,9 +40,10 @@ final class TestScenes {
         return new RenderSettings(w, h, 1, "regular", "clipping", true, shading, 0, true, 5);
     }
 
+    /** The job for {@code scene}: its own camera if it has one, else {@link #camera()}. */
     static RenderJob job(Scene scene, RenderSettings s) {
-        return RenderJob.prepare(scene, s, RenderOptions.defaults().withThreads(2).withProgressive(false))
-                .withCamera(camera());
+        RenderJob job = RenderJob.prepare(scene, s, RenderOptions.defaults().withThreads(2).withProgressive(false));
+        return scene.camera().isPresent() ? job : job.withCamera(camera());
     }
 
     /** The bump alone, default material, light at the eye. */
@@ -72,6 +74,21 @@ final class TestScenes {
                 .addPlane(new Plane(new Vec3(0, 0, 0), Vec3.Z, 1, 1))
                 .addSphere(new Sphere(new Vec3(2.3, 1.2, 1.2), 1.2, 2))
                 .addLight(new PointLight(new Vec3(-4, -5, 9)))
+                .build();
+    }
+
+    /**
+     * The Utah teapot (32 patches sharing borders) on a grey floor, lit from the upper left, at
+     * the view of issue 4: borders, the collapsed lid top and the knob in one picture.
+     */
+    static Scene teapot() {
+        return Scene.builder()
+                .addMaterial(new Material(0.75, 0.12, 0.1, 0.1, 0.75, 0.6, 60, 0, 0, 1.5, 0, 0, 0, 0))
+                .addMaterial(Material.diffuse(0.7, 0.7, 0.7))
+                .addPatches(Models.teapot().patches(), 0)
+                .addPlane(new Plane(new Vec3(0, 0, 0), Vec3.Z, 1, 40))
+                .addLight(new PointLight(new Vec3(-200, -350, 450)))
+                .camera(CameraSpec.perspective(new Vec3(-150, -420, 260), new Vec3(10, 0, 55), Vec3.Z, 40))
                 .build();
     }
 

@@ -1,5 +1,6 @@
 package org.beziertracer.ui;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.awt.AWTException;
@@ -9,43 +10,63 @@ import java.awt.Dimension;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
+import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
 import java.lang.reflect.InvocationTargetException;
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 
+import javax.swing.AbstractButton;
 import javax.swing.JComponent;
+import javax.swing.JDialog;
+import javax.swing.JFileChooser;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 
+import org.beziertracer.app.AppModel;
+import org.beziertracer.app.AppPreferences;
+import org.beziertracer.model.BezierPatch;
+
 /**
- * Drives the real app with {@link Robot}: starts it in this JVM, finds components by name,
- * clicks, drags, types, waits for the render to settle and captures screen pixels.
+ * Drives the real app with {@link Robot}: starts it in this JVM with preferences of its own (in
+ * memory), clicks menus, buttons and check boxes, types into dialogs, drags, waits for the app to
+ * settle and captures screen pixels.
  */
 final class GuiDriver {
 
     final AppFrame frame;
-    final AppController c;
+    final AppModel app;
+    final AppPreferences prefs;
     final Robot robot;
 
-    private GuiDriver(AppFrame frame) throws AWTException {
+    private GuiDriver(AppFrame frame, AppPreferences prefs) throws AWTException {
         this.frame = frame;
-        this.c = frame.controller();
+        this.app = frame.app();
+        this.prefs = prefs;
         this.robot = new Robot();
         robot.setAutoDelay(5);
     }
 
+    /** Starts the app (failing or skipping without a display, see {@link GuiTests}). */
     static GuiDriver launch() throws Exception {
-        AppFrame f = BezierTracerApp.start().get(30, TimeUnit.SECONDS);
+        GuiTests.requireDisplay();
+        AppPreferences prefs = new AppPreferences(MemoryPreferences.root().node(AppPreferences.NODE));
+        AppFrame f = BezierTracerApp.start(prefs).get(30, TimeUnit.SECONDS);
         onEdt(() -> {
             f.setSize(new Dimension(960, 600));
             f.setLocation(0, 0);
             f.toFront();
             return null;
         });
-        GuiDriver d = new GuiDriver(f);
+        GuiDriver d = new GuiDriver(f, prefs);
         d.robot.waitForIdle();
         d.settle();
         return d;
@@ -79,17 +100,28 @@ final class GuiDriver {
         });
     }
 
-    /** Waits until no render is pending or running and the last repaint is on screen. */
+    /** Waits until nothing is pending (edits, loads, overlay, render) and the last repaint is on screen. */
     void settle() {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         int quiet = 0;
         while (quiet < 3) {
             robot.waitForIdle();
-            boolean busy = onEdt(() -> c.engine().busy());
+            boolean busy = onEdt(app::busy);
             quiet = busy ? 0 : quiet + 1;
             robot.delay(busy ? 20 : 40);
             if (System.nanoTime() > end) {
-                fail("the render did not settle within 20 s");
+                fail("the app did not settle within 60 s");
+            }
+        }
+    }
+
+    /** Waits (up to 20 s) until {@code condition}, checked on the event thread, holds. */
+    void waitFor(String what, BooleanSupplier condition) {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (!onEdt(condition::getAsBoolean)) {
+            robot.delay(20);
+            if (System.nanoTime() > end) {
+                fail("timed out waiting for " + what);
             }
         }
     }
@@ -103,19 +135,8 @@ final class GuiDriver {
         return (T) comp;
     }
 
-    private static Component find(Component root, String name) {
-        if (name.equals(root.getName())) {
-            return root;
-        }
-        if (root instanceof Container ct) {
-            for (Component child : ct.getComponents()) {
-                Component hit = find(child, name);
-                if (hit != null) {
-                    return hit;
-                }
-            }
-        }
-        return null;
+    static Component find(Component root, String name) {
+        return descendant(root, Component.class, c -> name.equals(c.getName()));
     }
 
     /** Clicks the centre of a component (scrolling it into view first). */
@@ -133,6 +154,125 @@ final class GuiDriver {
         robot.waitForIdle();
     }
 
+    /** Clicks the tool {@code tool.<id>} in the toolbox. */
+    void tool(String id) {
+        click(find("tool." + id));
+    }
+
+    /** Opens the menu called {@code title} in the menu bar and clicks its item {@code menu.<id>}, with the mouse. */
+    void menu(String title, String id) {
+        JMenu m = onEdt(() -> {
+            for (int k = 0; k < frame.getJMenuBar().getMenuCount(); k++) {
+                JMenu c = frame.getJMenuBar().getMenu(k);
+                if (title.equals(c.getText())) {
+                    return c;
+                }
+            }
+            return null;
+        });
+        if (m == null) {
+            fail("no menu " + title);
+        }
+        String name = id.startsWith("menu.") ? id : "menu." + id;
+        JMenuItem item = onEdt(() -> {
+            for (Component c : m.getMenuComponents()) {
+                if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
+                    return mi;
+                }
+            }
+            return null;
+        });
+        if (item == null) {
+            fail("no item " + name + " in menu " + title);
+        }
+        clickUntil(m, title + " → " + name + " showing", item::isShowing);
+        clickUntil(item, title + " → " + name + " chosen", () -> !item.isShowing());
+    }
+
+    /** The visible dialog that holds a {@code type} (a file chooser, an option pane), waiting up to 10 s. */
+    <T extends Component> JDialog dialogWith(Class<T> type) {
+        for (int k = 0; k < 400; k++) {
+            JDialog found = onEdt(() -> {
+                for (Window w : Window.getWindows()) {
+                    if (w instanceof JDialog jd && jd.isShowing() && descendant(jd, type) != null) {
+                        return jd;
+                    }
+                }
+                return null;
+            });
+            if (found != null) {
+                return found;
+            }
+            robot.delay(25);
+        }
+        throw new AssertionError("no dialog with a " + type.getSimpleName() + " opened");
+    }
+
+    static <T extends Component> T descendant(Component root, Class<T> type) {
+        return descendant(root, type, c -> true);
+    }
+
+    /** The first component below {@code root} (itself included, depth first) of {@code type} that {@code test} accepts. */
+    static <T extends Component> T descendant(Component root, Class<T> type, java.util.function.Predicate<T> test) {
+        if (type.isInstance(root) && test.test(type.cast(root))) {
+            return type.cast(root);
+        }
+        if (root instanceof Container ct) {
+            for (Component child : ct.getComponents()) {
+                T hit = descendant(child, type, test);
+                if (hit != null) {
+                    return hit;
+                }
+            }
+        }
+        return null;
+    }
+
+    /** In the open file chooser, types {@code file} into the name field and presses Enter. */
+    void chooseFile(Path file) {
+        JDialog dialog = dialogWith(JFileChooser.class);
+        JTextField name = onEdt(() -> descendant(dialog, JTextField.class));
+        click(name);
+        key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
+        key(KeyEvent.VK_DELETE);
+        type(file.toString());
+        waitFor("the path typed into the file chooser", () -> file.toString().equals(name.getText()));
+        key(KeyEvent.VK_ENTER);
+        waitFor("the file chooser to close", () -> !dialog.isShowing());
+    }
+
+    /** The message of the open option dialog. */
+    String optionMessage(JDialog dialog) {
+        return onEdt(() -> String.valueOf(descendant(dialog, JOptionPane.class).getMessage()));
+    }
+
+    /** The button labelled {@code text} in {@code root}, or null. */
+    static AbstractButton button(Container root, String text) {
+        return descendant(root, AbstractButton.class, b -> text.equals(b.getText()));
+    }
+
+    /** Types plain ASCII text (letters, digits, / . - _ space) with the keyboard. */
+    void type(String text) {
+        for (char c : text.toCharArray()) {
+            boolean shift = Character.isUpperCase(c) || c == '_';
+            int code;
+            if (Character.isLetter(c) && c < 128) {
+                code = KeyEvent.VK_A + Character.toLowerCase(c) - 'a';
+            } else if (Character.isDigit(c)) {
+                code = KeyEvent.VK_0 + c - '0';
+            } else {
+                code = switch (c) {
+                    case '/' -> KeyEvent.VK_SLASH;
+                    case '.' -> KeyEvent.VK_PERIOD;
+                    case '-', '_' -> KeyEvent.VK_MINUS;
+                    case ' ' -> KeyEvent.VK_SPACE;
+                    default -> throw new IllegalArgumentException("cannot type '" + c + "'");
+                };
+            }
+            press(code, shift ? new int[] {KeyEvent.VK_SHIFT} : new int[0]);
+        }
+    }
+
     /** Screen position of a device-pixel position in the render panel. */
     Point screenOf(double deviceX, double deviceY) {
         return onEdt(() -> {
@@ -140,6 +280,23 @@ final class GuiDriver {
             double scale = frame.renderPanel().deviceScale();
             return new Point(s.x + (int) Math.round(deviceX / scale), s.y + (int) Math.round(deviceY / scale));
         });
+    }
+
+    /** Where control point (i, j) of patch {@code p} is on screen now. */
+    Point screenOfPoint(int p, int i, int j) {
+        double[] at = onEdt(() -> {
+            BezierPatch patch = app.document().scene().patches().get(p);
+            double[] out = new double[3];
+            app.view().projector().project(patch.get(i, j, 0), patch.get(i, j, 1), patch.get(i, j, 2), out);
+            return out;
+        });
+        return screenOf(at[0], at[1]);
+    }
+
+    /** {@code screen} relative to the render panel (screen pixels). */
+    Point inPanel(Point screen) {
+        Point origin = onEdt(() -> frame.renderPanel().getLocationOnScreen());
+        return new Point(screen.x - origin.x, screen.y - origin.y);
     }
 
     /** Drags with the left button from {@code a} to {@code b} in {@code steps} moves. */
@@ -156,6 +313,15 @@ final class GuiDriver {
     }
 
     void key(int code, int... modifiers) {
+        press(code, modifiers);
+        robot.waitForIdle();
+    }
+
+    /**
+     * Presses and releases a key without waiting for the event thread: typing waits once for the
+     * text instead (Robot.waitForIdle after each key cost seconds a key in a file chooser on Xvfb).
+     */
+    private void press(int code, int... modifiers) {
         for (int m : modifiers) {
             robot.keyPress(m);
         }
@@ -164,18 +330,26 @@ final class GuiDriver {
         for (int k = modifiers.length - 1; k >= 0; k--) {
             robot.keyRelease(modifiers[k]);
         }
-        robot.waitForIdle();
     }
 
     void ctrl(int code) { key(code, KeyEvent.VK_CONTROL); }
 
     /** The render panel as on screen now. */
     BufferedImage capturePanel() {
+        return capture(frame.renderPanel());
+    }
+
+    BufferedImage capture(Component c) {
         Rectangle r = onEdt(() -> {
-            Point s = frame.renderPanel().getLocationOnScreen();
-            return new Rectangle(s.x, s.y, frame.renderPanel().getWidth(), frame.renderPanel().getHeight());
+            Point s = c.getLocationOnScreen();
+            return new Rectangle(s.x, s.y, c.getWidth(), c.getHeight());
         });
         return robot.createScreenCapture(r);
+    }
+
+    /** The status bar label {@code status.<key>}. */
+    String status(String key) {
+        return onEdt(() -> frame.statusBar().text(key));
     }
 
     /** Pixels of {@code a} and {@code b} in a box that differ by more than {@code tol} in some channel. */
@@ -193,6 +367,24 @@ final class GuiDriver {
             }
         }
         return count;
+    }
+
+    /** Writes {@code img} to {@code target/gui-shots/NAME.png} (to look at after a failure); returns the path. */
+    static String save(BufferedImage img, String name) {
+        try {
+            Path dir = Path.of("target", "gui-shots");
+            java.nio.file.Files.createDirectories(dir);
+            Path f = dir.resolve(name + ".png");
+            javax.imageio.ImageIO.write(img, "png", f.toFile());
+            return f.toString();
+        } catch (java.io.IOException e) {
+            return "(not saved: " + e.getMessage() + ")";
+        }
+    }
+
+    /** Pixels that differ anywhere. */
+    static int differing(BufferedImage a, BufferedImage b, int tol) {
+        return differing(a, b, new Rectangle(0, 0, a.getWidth(), a.getHeight()), tol);
     }
 
     /** Mean colour {r, g, b} of a box. */
@@ -214,9 +406,46 @@ final class GuiDriver {
         return m;
     }
 
+    /**
+     * Set-up plumbing: closes any dialog or menu a failed test left open (a modal dialog would
+     * otherwise swallow every later test's input) and brings the main window to the front.
+     */
+    void dismissStrayWindows() {
+        onEdt(() -> {
+            javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath();
+            for (Window w : Window.getWindows()) {
+                if (w != frame && w.isShowing() && w.getOwner() != null) {
+                    w.dispose();
+                }
+            }
+            frame.toFront();
+        });
+        robot.waitForIdle();
+    }
+
+    /**
+     * Clicks {@code comp} until {@code done} holds: a real X server may drop a click that lands
+     * while a new window is still being mapped (seen on a loaded CI machine), so the click is
+     * repeated, up to three times, 5 s apart.
+     */
+    void clickUntil(Component comp, String what, BooleanSupplier done) {
+        for (int attempt = 0; attempt < 3; attempt++) {
+            click(comp);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (System.nanoTime() < end) {
+                if (onEdt(done::getAsBoolean)) {
+                    return;
+                }
+                robot.delay(20);
+            }
+        }
+        fail("timed out waiting for " + what);
+    }
+
+    /** Closes the window without the unsaved-edits question. */
     void close() {
         onEdt(() -> {
-            c.history().markSaved();
+            app.document().history().markSaved();
             frame.close();
         });
     }

@@ -7,6 +7,8 @@ import java.nio.file.Path;
 
 import javax.imageio.ImageIO;
 
+import org.beziertracer.app.SettingsModel;
+import org.beziertracer.app.Toggle;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -27,35 +29,37 @@ class UserGuideScreenshots {
         Files.createDirectories(dir);
         GuiDriver d = GuiDriver.launch();
         try {
-            ToolSettings t = d.c.tools();
+            SettingsModel t = d.app.settings();
             GuiDriver.onEdt(() -> d.frame.setSize(1100, 720));
-            // The default patch, bent by dragging two points
-            GuiDriver.onEdt(() -> {
-                d.c.randomizeControlPoints(7);
-                d.c.mouseMoved(d.c.projected().x(0, 2, 1), d.c.projected().y(0, 2, 1));
-            });
+            // The default patch, bent, a control point under the cursor
+            GuiDriver.onEdt(() -> d.app.edits().randomize(7));
+            d.settle();
+            java.awt.Point p = d.screenOfPoint(0, 2, 1);
+            d.robot.mouseMove(p.x, p.y);
             shot(d, dir, "patch.png");
-            GuiDriver.onEdt(() -> d.c.setting(() -> t.rayTrace = false));
+            GuiDriver.onEdt(() -> t.set(Toggle.RAY_TRACE, false));
             shot(d, dir, "wireframe.png");
-            GuiDriver.onEdt(() -> d.c.setting(() -> {
-                t.rayTrace = true;
-                t.normals = true;
-                t.controlPolygon = false;
-            }));
+            GuiDriver.onEdt(() -> {
+                t.set(Toggle.RAY_TRACE, true);
+                t.set(Toggle.NORMALS, true);
+                t.set(Toggle.CONTROL_POLYGON, false);
+            });
             shot(d, dir, "normals.png");
             GuiDriver.onEdt(() -> {
-                d.c.history().markSaved();
-                d.c.openBuiltIn("teapot");
-                d.c.setting(() -> {
-                    t.normals = false;
-                    t.controlPoints = false;
-                    t.controlPolygon = false;
-                    t.superSampling = true;
-                });
+                d.app.document().history().markSaved();
+                d.app.files().openBuiltIn("teapot");
+            });
+            d.settle();
+            GuiDriver.onEdt(() -> {
+                t.set(Toggle.NORMALS, false);
+                t.set(Toggle.CONTROL_POINTS, false);
+                t.set(Toggle.CONTROL_POLYGON, false);
+                t.set(Toggle.SUPER_SAMPLING, true);
             });
             shot(d, dir, "teapot.png");
-            GuiDriver.onEdt(() -> d.c.openBuiltIn("teapot-room"));
-            GuiDriver.onEdt(() -> d.c.setting(() -> t.superSampling = true));
+            GuiDriver.onEdt(() -> d.app.files().openBuiltIn("teapot-room"));
+            d.settle();
+            GuiDriver.onEdt(() -> t.set(Toggle.SUPER_SAMPLING, true));
             shot(d, dir, "teapot-room.png");
         } finally {
             d.close();

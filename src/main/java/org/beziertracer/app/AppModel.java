@@ -1,0 +1,247 @@
+package org.beziertracer.app;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
+
+/**
+ * The app without its windows: it owns the open {@link Document}, the {@link SettingsModel
+ * settings}, the {@link ViewModel view} and its picture, the {@link OverlayModel overlay}, the
+ * {@link StatusModel status}, the selection and the render engine, and offers the commands as
+ * small classes ({@link FileCommands}, {@link EditCommands}, {@link PointerTool}). A window calls
+ * those one-liners and repaints from the immutable snapshots; it is told of changes through
+ * {@link #addListener}.
+ *
+ * <p><b>Threads:</b> all state belongs to the UI thread of {@link AppThreads}; whatever grows with
+ * the model (reading files, copying the patch list for an edit, projecting control points,
+ * building the render snapshot) runs on the workers and the render engine's threads and comes
+ * back through the UI executor. Imports nothing from AWT or Swing.
+ */
+public final class AppModel {
+
+    private final AppThreads threads;
+    private final PictureEngine engine;
+    private final UserDialogs dialogs;
+    private final List<Runnable> listeners = new ArrayList<>();
+    private final Document document;
+    private final SettingsModel settings;
+    private final ViewModel view;
+    private final StatusModel status;
+    private final OverlayModel overlay;
+    private final SceneEditor editor;
+    private final BackgroundTasks viewTasks;
+    private final BackgroundTasks io;
+    private final EditCommands edits;
+    private final FileCommands files;
+    private final PointerTool pointer;
+    private Selection selection = Selection.EMPTY;
+
+    public AppModel(PictureEngine engine, UserDialogs dialogs, AppThreads threads) {
+        this.threads = threads;
+        this.engine = engine;
+        this.dialogs = dialogs;
+        SceneDocument start = ModelLoader.builtIn("patch");
+        document = new Document(start.scene(), "patch");
+        settings = new SettingsModel(s -> settingsChanged());
+        view = new ViewModel(ViewModel.home(start.scene(), start.scene().controlBounds(), settings.current().fovDegrees()),
+                this::viewMoved, this::viewMoved);
+        status = new StatusModel(threads.ui(), this::notifyListeners);
+        overlay = new OverlayModel(threads.overlay(), threads.ui(), view::repaint, this::notifyListeners,
+                e -> threads.ui().execute(() -> failed("Drawing the control points failed", e)));
+        editor = new SceneEditor(threads.edits(), threads.ui(), new EditorTarget());
+        viewTasks = new BackgroundTasks(threads.edits(), threads.ui());
+        edits = new EditCommands(this, editor);
+        io = new BackgroundTasks(threads.io(), threads.ui());
+        files = new FileCommands(this, io, new DocumentLoader(io, new LoaderTarget()));
+        pointer = new PointerTool(this);
+        engine.onStatus(status::report);
+        engine.onError(msg -> threads.ui().execute(() -> dialogs.error("Rendering failed", msg)));
+        requestOverlay(false);
+    }
+
+    // ------------------------------------------------------------------ parts
+
+    public Document document() { return document; }
+
+    public SettingsModel settings() { return settings; }
+
+    public ViewModel view() { return view; }
+
+    public OverlayModel overlay() { return overlay; }
+
+    public StatusModel status() { return status; }
+
+    public FileCommands files() { return files; }
+
+    public EditCommands edits() { return edits; }
+
+    public PointerTool pointer() { return pointer; }
+
+    /** The selected control points. */
+    public Selection selection() { return selection; }
+
+    public UserDialogs dialogs() { return dialogs; }
+
+    /** Runs {@code l} on the UI thread after every change that widgets show. */
+    public void addListener(Runnable l) { listeners.add(l); }
+
+    /** View → Reset View: back to the home view of the current model (measured off the UI thread). */
+    public void resetView() {
+        Scene s = document.scene();
+        double fov = settings.current().fovDegrees();
+        viewTasks.submit("framing", () -> ViewModel.home(s, s.controlBounds(), fov), home -> {
+            view.replace(home);
+            viewMoved();
+            notifyListeners();
+        }, e -> failed("Reset View failed", e));
+    }
+
+    /** True while anything is pending: an edit, a load or save, an overlay, a render (tests wait on this). */
+    public boolean busy() {
+        return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy();
+    }
+
+    /** Stops rendering and the workers. */
+    public void close() {
+        engine.close();
+        threads.close();
+    }
+
+    // ------------------------------------------------------------------ reactions
+
+    SceneEditor editor() { return editor; }
+
+    void notifyListeners() {
+        for (Runnable l : listeners) {
+            l.run();
+        }
+    }
+
+    void failed(String title, Throwable e) {
+        if (!(e instanceof IllegalArgumentException || e instanceof IOException || e instanceof UncheckedIOException)) {
+            e.printStackTrace(); // a bug: the details go to the console, the dialog says one line
+        }
+        dialogs.error(title, Failures.describe(e));
+    }
+
+    /** Starts a progressive render of the current state (coalesced; never renders here). */
+    void render() {
+        Picture p = view.picture();
+        if (p != null && settings.current().on(Toggle.RAY_TRACE)) {
+            engine.submit(RenderRequest.of(document.scene(), view.camera(), settings.current(), p));
+        }
+        view.repaint();
+    }
+
+    private void requestOverlay(boolean fresh) {
+        OverlayRequest r = OverlayRequest.of(document.scene(), view.projector(), settings.current(), view.scale());
+        if (fresh) {
+            overlay.replace(r);
+        } else {
+            overlay.request(r);
+        }
+        overlay.selected(selection.handles(document.scene(), view.projector()));
+    }
+
+    private void viewMoved() {
+        requestOverlay(false);
+        render();
+    }
+
+    private void settingsChanged() {
+        double fov = settings.current().fovDegrees();
+        if (view.view().fovDegrees() != fov) {
+            view.replace(view.view().withFov(fov));
+        }
+        requestOverlay(false);
+        render();
+        notifyListeners();
+    }
+
+    /** The scene changed by an edit, an undo or a redo. */
+    private void sceneChanged() {
+        document.bump();
+        overlay.hover(null);
+        requestOverlay(false);
+        render();
+        notifyListeners();
+    }
+
+    /** Undo or redo moved the history; a non-null framing is where the view goes. */
+    void historyMoved(Framing framing) {
+        if (framing != null) {
+            view.replace(view.view().withFraming(framing));
+        }
+        sceneChanged();
+    }
+
+    /** The selection is now {@code s} (widgets that show it are told). */
+    void select(Selection s) {
+        selection = s;
+        overlay.selected(s.handles(document.scene(), view.projector()));
+        notifyListeners();
+    }
+
+    /** A drag that started from {@code base} ended: one undoable edit (unless the model moved on). */
+    void dragEnded(Scene base, long epoch) {
+        if (document.epoch() == epoch) {
+            document.history().commit("Move control point", base);
+            document.bump();
+        }
+        select(Selection.EMPTY);
+    }
+
+    private final class EditorTarget implements SceneEditor.Target {
+        @Override
+        public Document document() { return document; }
+
+        @Override
+        public void previewed() {
+            requestOverlay(false);
+            render();
+        }
+
+        @Override
+        public void edited(String name, Scene after, Framing framing) {
+            Framing before = framing == null ? null : view.view().framing();
+            document.history().apply(name, after, before, framing);
+            if (framing != null) {
+                view.replace(view.view().withFraming(framing));
+            }
+            sceneChanged();
+        }
+
+        @Override
+        public void failed(String title, Throwable e) { AppModel.this.failed(title, e); }
+    }
+
+    private final class LoaderTarget implements DocumentLoader.Target {
+        @Override
+        public void opened(DocumentLoader.Loaded l) {
+            Settings s = RenderChoices.fromScene(settings.current(), l.document().settings());
+            var camera = l.document().scene().camera();
+            if (camera.isPresent()) {
+                s = s.with(Level.PERSPECTIVE, Settings.perspectiveOf(camera.get().fovDegrees()));
+            }
+            settings.replaceQuietly(s);
+            document.replace(l.document().scene(), l.name(), l.source());
+            view.replace(ViewModel.home(l.document().scene(), l.bounds(), s.fovDegrees()));
+            selection = Selection.EMPTY;
+            overlay.hover(null);
+            requestOverlay(true);
+            render();
+            status.message("opened " + l.name());
+        }
+
+        @Override
+        public StatusModel status() { return status; }
+
+        @Override
+        public UserDialogs dialogs() { return dialogs; }
+    }
+}

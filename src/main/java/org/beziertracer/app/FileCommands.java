@@ -1,0 +1,156 @@
+package org.beziertracer.app;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CancellationException;
+import java.util.function.Supplier;
+
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.AtomicFiles;
+import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.render.Failures;
+
+/**
+ * The File and Models menus: open (asking about unsaved edits first), save, save as, export, quit.
+ * Files are read and written off the UI thread ({@link DocumentLoader}, {@link BackgroundTasks});
+ * what follows a save (closing, opening another model) waits for it. Every failure is a one-line
+ * dialog. UI thread only.
+ */
+public final class FileCommands {
+
+    private final AppModel app;
+    private final BackgroundTasks io;
+    private final DocumentLoader loader;
+
+    FileCommands(AppModel app, BackgroundTasks io, DocumentLoader loader) {
+        this.app = app;
+        this.io = io;
+        this.loader = loader;
+    }
+
+    /** File → Open: asks for a file (after the unsaved-edits question) and opens it. */
+    public void open() {
+        confirmDiscard(() -> {
+            Path p = app.dialogs().chooseOpen();
+            if (p != null) {
+                load(p);
+            }
+        });
+    }
+
+    /** Opens {@code p} without asking for it (after the unsaved-edits question). */
+    public void open(Path p) {
+        confirmDiscard(() -> load(p));
+    }
+
+    private void load(Path p) {
+        Path name = p.getFileName();
+        loader.load(name == null ? p.toString() : name.toString(), () -> ModelLoader.load(p), p);
+    }
+
+    /**
+     * Opens what {@code read} returns, called {@code name} (after the unsaved-edits question): a
+     * model made in memory, a file dropped on the window. {@code read} runs off the UI thread and
+     * is interrupted when the user cancels.
+     */
+    public void open(String name, Callable<SceneDocument> read) {
+        confirmDiscard(() -> loader.load(name, read, null));
+    }
+
+    /** Models menu: a built-in model or scene. */
+    public void openBuiltIn(String name) {
+        confirmDiscard(() -> loader.load(name, () -> ModelLoader.builtIn(name), null));
+    }
+
+    /** File → Save: to the current file, or asks for one. */
+    public void save() { save(() -> {}); }
+
+    /** File → Save As. */
+    public void saveAs() { saveAs(() -> {}); }
+
+    private void save(Runnable then) {
+        Path file = app.document().file();
+        if (file == null) {
+            saveAs(then);
+        } else {
+            saveTo(file, then);
+        }
+    }
+
+    private void saveAs(Runnable then) {
+        Path p = app.dialogs().chooseSave("Save surface", ModelLoader.saveExtensions());
+        if (p != null) {
+            saveTo(p, then);
+        }
+    }
+
+    /** Saves the patches atomically as BPT or OBJ (by the extension), then runs {@code then}. */
+    public void saveTo(Path p, Runnable then) {
+        Scene scene = app.document().scene();
+        io.submit("saving " + p.getFileName(), () -> {
+            DocumentFiles.saveModel(p, scene);
+            return p;
+        }, saved -> {
+            app.document().saved(scene, p);
+            app.status().message("saved " + p);
+            then.run();
+        }, e -> failed("Cannot save " + p.getFileName(), e));
+    }
+
+    /** File → Export Mesh: tessellates the surface and writes a triangle OBJ. */
+    public void exportMesh() {
+        Path p = app.dialogs().chooseSave("Export tessellated mesh", "obj");
+        if (p != null) {
+            Scene scene = app.document().scene();
+            io.submit("exporting " + p.getFileName(), () -> DocumentFiles.exportMesh(p, scene),
+                    mesh -> app.status().message("exported " + mesh.triangleCount() + " triangles to " + p),
+                    e -> failed("Cannot export " + p.getFileName(), e));
+        }
+    }
+
+    /**
+     * Asks where to write a {@code extension} file, then writes what {@code content} makes (made
+     * on this thread, written atomically off it); e.g. the picture as PNG.
+     */
+    public void export(String title, String extension, Supplier<AtomicFiles.BinaryContent> content) {
+        Path p = app.dialogs().chooseSave(title, extension);
+        if (p != null) {
+            exportTo(p, content.get());
+        }
+    }
+
+    /** Writes {@code content} to {@code p} atomically, off this thread. */
+    public void exportTo(Path p, AtomicFiles.BinaryContent content) {
+        io.submit("exporting " + p.getFileName(), () -> {
+            AtomicFiles.writeBytes(p, content);
+            return p;
+        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + p.getFileName(), e));
+    }
+
+    private void failed(String title, Throwable e) {
+        if (!(e instanceof CancellationException)) {
+            app.dialogs().error(title, Failures.describe(e));
+        }
+    }
+
+    /** Runs {@code proceed} when there are no unsaved edits or the user saved or discarded them. */
+    public void confirmDiscard(Runnable proceed) {
+        if (!app.document().isDirty()) {
+            proceed.run();
+            return;
+        }
+        switch (app.dialogs().confirmDiscard(app.document().name())) {
+            case SAVE -> save(proceed);
+            case DISCARD -> proceed.run();
+            case CANCEL -> { }
+        }
+    }
+
+    /** Window closing: after the unsaved-edits question, stops the app's threads and runs {@code close}. */
+    public void quit(Runnable close) {
+        confirmDiscard(() -> {
+            app.close();
+            close.run();
+        });
+    }
+}

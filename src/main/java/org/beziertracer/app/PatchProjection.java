@@ -1,0 +1,56 @@
+package org.beziertracer.app;
+
+import org.beziertracer.model.BezierPatch;
+
+/**
+ * Projects one patch's control net onto the picture into reusable scratch arrays (no allocation
+ * per patch): {@link #xy} holds {@code 2·(n+1)(m+1)} pixel coordinates in the net's order (u
+ * fastest), {@link #depth} the view depth of each point. A patch with a point at or behind the eye
+ * plane is not visible. Not thread-safe (one per build).
+ */
+final class PatchProjection {
+
+    private static final int MAX_POINTS = (BezierPatch.MAX_DEGREE + 1) * (BezierPatch.MAX_DEGREE + 1);
+
+    final double[] xy = new double[2 * MAX_POINTS];
+    final double[] depth = new double[MAX_POINTS];
+    private final double[] net = new double[3 * MAX_POINTS];
+    private final double[] out = new double[3];
+    private final ScreenProjector projector;
+    private double minX, minY, maxX, maxY;
+
+    PatchProjection(ScreenProjector projector) {
+        this.projector = projector;
+    }
+
+    /** Projects {@code patch}; false when a point lies at or behind the eye plane. */
+    boolean project(BezierPatch patch) {
+        patch.copyNetInto(net, 0);
+        minX = minY = Double.POSITIVE_INFINITY;
+        maxX = maxY = Double.NEGATIVE_INFINITY;
+        for (int k = 0, count = patch.pointCount(); k < count; k++) {
+            if (!projector.project(net[3 * k], net[3 * k + 1], net[3 * k + 2], out)) {
+                return false;
+            }
+            xy[2 * k] = out[0];
+            xy[2 * k + 1] = out[1];
+            depth[k] = out[2];
+            minX = Math.min(minX, out[0]);
+            maxX = Math.max(maxX, out[0]);
+            minY = Math.min(minY, out[1]);
+            maxY = Math.max(maxY, out[1]);
+        }
+        return true;
+    }
+
+    /**
+     * The larger side of the last projected net's pixel box, or −1 when that box lies wholly
+     * more than {@code margin} pixels outside the picture.
+     */
+    double extent(double margin) {
+        if (maxX < -margin || maxY < -margin || minX > projector.width() + margin || minY > projector.height() + margin) {
+            return -1;
+        }
+        return Math.max(maxX - minX, maxY - minY);
+    }
+}

@@ -1,0 +1,61 @@
+package org.beziertracer.app;
+
+import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.Method;
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.render.RenderOptions;
+import org.beziertracer.render.SamplerKind;
+import org.beziertracer.render.ShadingMode;
+
+/**
+ * Translates between {@link Settings} and what the renderer and scene files speak: the renderer's
+ * {@link RenderSettings}, {@link IntersectOptions} and {@link RenderOptions}, and the settings a
+ * scene file brings. Stateless.
+ */
+public final class RenderChoices {
+    private RenderChoices() {}
+
+    /** Checker squares per unit of (u, v) when the texture is on. */
+    public static final int CHECKER_SQUARES = 8;
+    /** Ray depth with reflections on. */
+    public static final int REFLECTION_DEPTH = 5;
+    /** Most progressive passes per frame the engine accepts. */
+    public static final int MAX_PASSES_PER_FRAME = 16;
+
+    /** The renderer settings for a picture of {@code width × height} device pixels. */
+    public static RenderSettings renderSettings(Settings s, int width, int height) {
+        return new RenderSettings(width, height, s.samplesPerPixel(), SamplerKind.JITTERED.label(), s.method().label(),
+                s.on(Toggle.BVH), s.shading().label(), s.on(Toggle.TEXTURE) ? CHECKER_SQUARES : 0,
+                s.on(Toggle.SHADOWS), s.on(Toggle.REFLECTIONS) ? REFLECTION_DEPTH : 0);
+    }
+
+    /** The intersection options: method, BVH switch and tessellation. */
+    public static IntersectOptions intersectOptions(Settings s) {
+        return IntersectOptions.defaults().withMethod(s.method()).withBvh(s.on(Toggle.BVH))
+                .withTessellate(s.tessellate());
+    }
+
+    /** The renderer's options: passes per displayed frame and tessellation. */
+    public static RenderOptions renderOptions(Settings s) {
+        int passes = Math.max(1, Math.min(MAX_PASSES_PER_FRAME, s.level(Level.INTERACTIVITY)));
+        return RenderOptions.defaults().withPassesPerFrame(passes).withTessellate(s.tessellate());
+    }
+
+    /**
+     * {@code s} with what a scene file sets taken over: method, BVH, shading, checker, shadows,
+     * depth and samples (snapped to the offered choices); the light goes back to the scene's own.
+     * The file's strings are parsed here, once.
+     */
+    public static Settings fromScene(Settings s, RenderSettings file) {
+        ShadingMode shading = ShadingMode.parse(file.shading());
+        Settings out = s.with(Method.parse(file.method())).with(LightPlacement.SCENE)
+                .with(Toggle.BVH, file.bvh())
+                .with(Toggle.NORMALS, shading == ShadingMode.NORMALS)
+                .with(Toggle.PHONG, shading != ShadingMode.FLAT)
+                .with(Toggle.TEXTURE, file.checker() > 0)
+                .with(Toggle.SHADOWS, file.shadows())
+                .with(Toggle.REFLECTIONS, file.maxDepth() > 0)
+                .with(Toggle.SUPER_SAMPLING, file.spp() > 1);
+        return file.spp() > 1 ? out.with(Level.SAMPLES_PER_PIXEL, Level.SAMPLES_PER_PIXEL.snap(file.spp())) : out;
+    }
+}

@@ -1,0 +1,134 @@
+package org.beziertracer.app;
+
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.Objects;
+
+import org.beziertracer.intersect.Method;
+import org.beziertracer.render.ShadingMode;
+
+/**
+ * The toolbox state as one immutable value: which {@link Toggle}s are on, the value of every
+ * {@link Level}, the intersection {@link Method} and the {@link LightPlacement}. Typed once (no
+ * strings); {@link RenderChoices} turns it into what the renderer takes. Every change makes a new
+ * value, so a snapshot can be handed to other threads.
+ */
+public final class Settings {
+
+    private final EnumSet<Toggle> on;
+    private final int[] levels;
+    private final Method method;
+    private final LightPlacement light;
+
+    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light) {
+        this.on = on;
+        this.levels = levels;
+        this.method = Objects.requireNonNull(method);
+        this.light = Objects.requireNonNull(light);
+    }
+
+    /** The settings of a fresh app. */
+    public static Settings defaults() {
+        EnumSet<Toggle> on = EnumSet.noneOf(Toggle.class);
+        for (Toggle t : Toggle.values()) {
+            if (t.initial()) {
+                on.add(t);
+            }
+        }
+        int[] levels = new int[Level.values().length];
+        for (Level l : Level.values()) {
+            levels[l.ordinal()] = l.initial();
+        }
+        return new Settings(on, levels, Method.CLIPPING, LightPlacement.SCENE);
+    }
+
+    public boolean on(Toggle t) { return on.contains(t); }
+
+    public int level(Level l) { return levels[l.ordinal()]; }
+
+    public Method method() { return method; }
+
+    public LightPlacement light() { return light; }
+
+    public Settings with(Toggle t, boolean value) {
+        EnumSet<Toggle> copy = EnumSet.copyOf(on);
+        if (value) {
+            copy.add(t);
+        } else {
+            copy.remove(t);
+        }
+        return new Settings(copy, levels, method, light);
+    }
+
+    /** @throws IllegalArgumentException one line, when {@code value} is outside the level's range */
+    public Settings with(Level l, int value) {
+        int[] copy = levels.clone();
+        copy[l.ordinal()] = l.check(value);
+        return new Settings(EnumSet.copyOf(on), copy, method, light);
+    }
+
+    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light); }
+
+    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p); }
+
+    /** Horizontal field of view of the {@link Level#PERSPECTIVE} position. */
+    public double fovDegrees() {
+        return level(Level.PERSPECTIVE) * OrbitView.MAX_FOV_DEGREES / 100.0;
+    }
+
+    /** The {@link Level#PERSPECTIVE} position of a field of view (inverse of {@link #fovDegrees()}). */
+    public static int perspectiveOf(double fovDegrees) {
+        return (int) Math.round(Math.min(OrbitView.MAX_FOV_DEGREES, fovDegrees) * 100 / OrbitView.MAX_FOV_DEGREES);
+    }
+
+    /** 0 (exact surface) or the K of the tessellated mode. */
+    public int tessellate() {
+        return on(Toggle.TESSELLATED) ? level(Level.TESSELLATION) : 0;
+    }
+
+    /** What the status bar shows for the intersection: the method, or "tessellated K". */
+    public String intersectionLabel() {
+        return on(Toggle.TESSELLATED) ? "tessellated " + level(Level.TESSELLATION) : method.label();
+    }
+
+    /** Normals win over Phong; neither is flat. */
+    public ShadingMode shading() {
+        return on(Toggle.NORMALS) ? ShadingMode.NORMALS : on(Toggle.PHONG) ? ShadingMode.PHONG : ShadingMode.FLAT;
+    }
+
+    /** Samples per pixel rendered: the chosen level while super-sampling, else 1. */
+    public int samplesPerPixel() {
+        return on(Toggle.SUPER_SAMPLING) ? level(Level.SAMPLES_PER_PIXEL) : 1;
+    }
+
+    /** True when control points are shown and can be picked (always in the wireframe view). */
+    public boolean pointsShown() {
+        return on(Toggle.CONTROL_POINTS) || !on(Toggle.RAY_TRACE);
+    }
+
+    /** True when the control polygon is drawn (always in the wireframe view). */
+    public boolean polygonShown() {
+        return on(Toggle.CONTROL_POLYGON) || !on(Toggle.RAY_TRACE);
+    }
+
+    /** True when the projected iso-curves are drawn (always in the wireframe view). */
+    public boolean isoCurvesShown() {
+        return on(Toggle.WIREFRAME) || !on(Toggle.RAY_TRACE);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Settings s && s.on.equals(on) && Arrays.equals(s.levels, levels) && s.method == method
+                && s.light == light;
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(on, Arrays.hashCode(levels), method, light);
+    }
+
+    @Override
+    public String toString() {
+        return "Settings" + on + Arrays.toString(levels) + method + "/" + light;
+    }
+}

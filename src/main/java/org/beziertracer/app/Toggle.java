@@ -1,0 +1,37 @@
+package org.beziertracer.app;
+
+/**
+ * The on/off settings of the toolbox (memoir annex 2 plus our extras), each with its value in a
+ * fresh app. {@link Settings} holds the set of those that are on.
+ */
+public enum Toggle {
+    /** The ray-traced picture; off: the wireframe view (overlay on a plain background). */
+    RAY_TRACE(true),
+    CONTROL_POLYGON(true),
+    /** Control points drawn and pickable. */
+    CONTROL_POINTS(true),
+    /** Phong lighting; off: flat, unlit colour. */
+    PHONG(true),
+    /** Procedural checker in (u, v). */
+    TEXTURE(false),
+    /** Colour = (n + 1) / 2 of the unit normal (wins over Phong). */
+    NORMALS(false),
+    /** Iso-curves of the projected wireframe drawn over the ray-traced picture. */
+    WIREFRAME(false),
+    /** Several jittered samples per pixel ({@link Level#SAMPLES_PER_PIXEL}). */
+    SUPER_SAMPLING(false),
+    SHADOWS(true),
+    /** Whitted reflection and refraction rays (depth 5; off: depth 0). */
+    REFLECTIONS(true),
+    /** Pre-split patches in a sub-patch BVH; off: whole patches in a list. */
+    BVH(true),
+    /** Every patch as a uniform K×K triangle mesh ({@link Level#TESSELLATION}) instead of the exact surface. */
+    TESSELLATED(false);
+
+    private final boolean initial;
+
+    Toggle(boolean initial) { this.initial = initial; }
+
+    /** On in a fresh app. */
+    public boolean initial() { return initial; }
+}

@@ -1,0 +1,27 @@
+package org.beziertracer.app;
+
+import java.nio.file.Path;
+
+/** The questions the controller asks the user; swapped out in tests. Event thread only. */
+public interface UserDialogs {
+
+    /** Answer to "save your changes?". */
+    enum Choice { SAVE, DISCARD, CANCEL }
+
+    /** A file to open, or null when cancelled. */
+    Path chooseOpen();
+
+    /**
+     * A file to write, or null when cancelled.
+     *
+     * @param title      dialog title
+     * @param extensions accepted extensions, the first the default
+     */
+    Path chooseSave(String title, String... extensions);
+
+    /** Unsaved edits: save, discard or cancel? */
+    Choice confirmDiscard(String documentName);
+
+    /** Shows an error: a title and the one-line message. */
+    void error(String title, String message);
+}

@@ -1,0 +1,76 @@
+package org.beziertracer.cli;
+
+import java.io.PrintWriter;
+
+import org.beziertracer.render.RenderProgress;
+
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import me.tongfei.progressbar.ProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBarStyle;
+
+/**
+ * {@code render}'s progress bar (me.tongfei:progressbar): task name, percent, bar, samples traced,
+ * elapsed time and ETA ({@code render  37% [=====>    ] 2841/7680 k samples (0:00:02 / 0:00:03)})
+ * on one line of standard error, redrawn in place five times a second, ended by a newline on
+ * {@link #close()}. Over {@code --repeat K} frames it shows the K frames as one task. Thread-safe:
+ * the render workers call {@link #progress} (one at a time), the library's timer thread draws.
+ */
+final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
+    static final int REFRESH_MILLIS = 200;
+
+    private final ProgressBar bar;
+    private final int frameCount;
+    private int frame = -1;
+    private int generation;
+
+    /** A bar drawn on {@code err}, at most {@code columns} wide, for {@code frameCount} frames. */
+    ProgressBarDisplay(PrintWriter err, int columns, int frameCount) {
+        this.frameCount = frameCount;
+        this.bar = new ProgressBarBuilder().setTaskName("render").setInitialMax(0)
+                .setStyle(ProgressBarStyle.ASCII).setUpdateIntervalMillis(REFRESH_MILLIS)
+                .setUnit(" k samples", 1000)
+                .setConsumer(new LineConsumer(err, columns)).build();
+    }
+
+    @Override
+    public synchronized void progress(int generation, long done, long total) {
+        if (frame < 0 || generation != this.generation) {
+            frame++;
+            this.generation = generation;
+            bar.maxHint(total * frameCount);
+        }
+        bar.stepTo(frame * total + done);
+    }
+
+    @Override
+    public void close() {
+        bar.close();
+    }
+
+    /** Draws each line over the last one with a carriage return; a newline at the end. */
+    private static final class LineConsumer implements ProgressBarConsumer {
+        private final PrintWriter err;
+        private final int columns;
+
+        LineConsumer(PrintWriter err, int columns) {
+            this.err = err;
+            this.columns = columns;
+        }
+
+        @Override
+        public int getMaxRenderedLength() { return columns - 1; }
+
+        @Override
+        public void accept(String line) {
+            err.print('\r' + line);
+            err.flush();
+        }
+
+        @Override
+        public void close() {
+            err.println();
+            err.flush();
+        }
+    }
+}

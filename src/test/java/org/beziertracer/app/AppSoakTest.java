@@ -1,0 +1,116 @@
+package org.beziertracer.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * The soak without a display: the app layer with its real threads and the real render engine, a
+ * single-thread executor standing in for the event thread, and a few thousand seeded random
+ * commands (see {@link SoakActions}) issued in bursts faster than frames complete. Then: nothing
+ * escaped on any thread and no error reached the dialogs; once idle, the picture equals a fresh
+ * render of the final state pixel for pixel; the heap is within 2× of what it was after the first
+ * model load. The GUI soak ({@code AppSoakGuiTest}) does the same through the window.
+ */
+class AppSoakTest {
+
+    /** Checkpoints: after each round of commands the app must go idle on a fresh render of its state. */
+    static final int ROUNDS = 8;
+    /** Commands issued (a shorter run than the GUI soak's). */
+    static final int COMMANDS = Integer.getInteger("soak.commands", 2000);
+    /** The model loaded first, and again at the end before the heap is measured. */
+    static final String FIRST_MODEL = "teapot-room";
+    /** Picture size in device pixels. */
+    static final int WIDTH = 160, HEIGHT = 120;
+
+    /** Dialogs that record errors and answer "discard" to the unsaved-edits question. */
+    static final class RecordingDialogs implements UserDialogs {
+        final List<String> errors = Collections.synchronizedList(new ArrayList<>());
+        int discards;
+
+        @Override
+        public Path chooseOpen() { return null; }
+
+        @Override
+        public Path chooseSave(String title, String... extensions) { return null; }
+
+        @Override
+        public Choice confirmDiscard(String documentName) {
+            discards++;
+            return Choice.DISCARD;
+        }
+
+        @Override
+        public void error(String title, String message) { errors.add(title + ": " + message); }
+    }
+
+    @Test
+    void thousandsOfRandomCommandsEndOnFreshRendersWithNoErrorAndABoundedHeap() throws Exception {
+        long seed = SoakChecks.seed("AppSoakTest");
+        long t0 = System.nanoTime();
+        ExecutorService uiThread = Executors.newSingleThreadExecutor(r -> new Thread(r, "soak-ui"));
+        SoakChecks.OnUi onUi = new SoakChecks.OnUi() {
+            @Override
+            public <T> T call(Callable<T> task) throws Exception {
+                return uiThread.submit(task).get(60, TimeUnit.SECONDS);
+            }
+        };
+        RecordingDialogs dialogs = new RecordingDialogs();
+        try (SoakChecks.Uncaught uncaught = SoakChecks.Uncaught.install()) {
+            AppModel app = onUi.call(() -> {
+                AppModel a = new AppModel(new RayTraceEngine(), dialogs, AppThreads.start(uiThread));
+                a.view().resize(WIDTH, HEIGHT, 1);
+                a.files().openBuiltIn(FIRST_MODEL);
+                return a;
+            });
+            try {
+                assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads");
+                long heapAfterLoad = SoakChecks.settledHeap();
+                SoakActions actions = new SoakActions(app, seed, () -> {}, true);
+                Random pace = new Random(seed ^ 0x5DEECE66DL);
+                SoakChecks.Final last = null;
+                for (int round = 1; round <= ROUNDS; round++) {
+                    actions.issue(uiThread, COMMANDS / ROUNDS, pace);
+                    last = SoakChecks.idleState(onUi, app, actions, 40_000);
+                    String where = " (round " + round + " of " + ROUNDS + ", seed " + seed + ")";
+                    assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread" + where);
+                    assertEquals(List.of(), dialogs.errors, "no error reached the dialogs (render, prep, edit, load)" + where);
+                    assertNull(last.mismatch(last.freshRender()), "the picture is a fresh render of the state" + where);
+                }
+                long checked = System.nanoTime();
+                onUi.call(() -> {
+                    app.settings().replace(Settings.defaults());
+                    app.files().openBuiltIn(FIRST_MODEL);
+                    return null;
+                });
+                assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads again");
+                long heapAfterRun = SoakChecks.settledHeap();
+                System.out.printf("AppSoakTest: %d commands (%s) and %d checkpoints in %.1f s; %d discards; heap %.1f MB "
+                                + "after the first load, %.1f MB after the run; total %.1f s; last state %s%n",
+                        actions.total(), onUi.call(actions::summary), ROUNDS, (checked - t0) / 1e9, dialogs.discards,
+                        heapAfterLoad / 1e6, heapAfterRun / 1e6, (System.nanoTime() - t0) / 1e9, last.describe());
+                assertTrue(heapAfterRun <= 2 * heapAfterLoad, "heap " + heapAfterRun + " after the run, "
+                        + heapAfterLoad + " after the first load (seed " + seed + ")");
+            } finally {
+                onUi.call(() -> {
+                    app.close();
+                    return null;
+                });
+            }
+        } finally {
+            uiThread.shutdownNow();
+        }
+    }
+}

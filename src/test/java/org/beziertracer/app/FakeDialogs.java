@@ -1,0 +1,31 @@
+package org.beziertracer.app;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.beziertracer.UserMessages;
+
+/** Scripted {@link UserDialogs} for controller tests: records errors, answers prompts as told. */
+final class FakeDialogs implements UserDialogs {
+    final List<String> errors = new ArrayList<>();
+    Path open;
+    Path save;
+    Choice discard = Choice.CANCEL;
+    int prompts;
+
+    @Override
+    public Path chooseOpen() { return open; }
+
+    @Override
+    public Path chooseSave(String title, String... extensions) { return save; }
+
+    @Override
+    public Choice confirmDiscard(String documentName) {
+        prompts++;
+        return discard;
+    }
+
+    @Override
+    public void error(String title, String message) { errors.add(UserMessages.check(message)); }
+}

@@ -1,0 +1,168 @@
+package org.beziertracer.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+import org.beziertracer.geometry.Patches;
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.CameraSpec;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+class OverlayBuilderTest {
+
+    private static Scene randomPatch() {
+        return NetEdits.randomize(Models.patch(), 11);
+    }
+
+    private static ScreenProjector fit(Scene s, double fov, int w, int h) {
+        return new ScreenProjector(OrbitView.fit(s.controlBounds(), fov).camera((double) w / h), w, h);
+    }
+
+    private static OverlayGeometry build(Scene s, ScreenProjector p, int iso) {
+        return OverlayBuilder.build(new OverlayRequest(s, p, true, true, iso, 1));
+    }
+
+    @Test
+    void pickFindsTheNearestControlPointWithinTheRadius() {
+        Scene s = randomPatch();
+        ScreenProjector p = fit(s, 40, 800, 600);
+        OverlayGeometry g = build(s, p, 0);
+        double[] at = new double[3];
+        for (int j = 0; j < 4; j++) {
+            for (int i = 0; i < 4; i++) {
+                var q = s.patches().get(0);
+                p.project(q.get(i, j, 0), q.get(i, j, 1), q.get(i, j, 2), at);
+                Handle got = g.pick(at[0] + 2, at[1] - 1, 6);
+                assertNotNull(got, "pick near P" + i + j);
+                assertEquals(new PointRef(0, i, j), got.ref(), "pick near P" + i + j);
+                assertEquals(at[0], got.x(), 1e-3);
+            }
+        }
+        assertNull(g.pick(-100, -100, 6));
+    }
+
+    @Test
+    void orthographicWireframeIsTheProjectionOfTheSurface() {
+        // A parallel projection is affine, and Bézier surfaces are affine invariant: the cheap 2-D
+        // evaluation on projected control points is then exact.
+        Scene s = randomPatch();
+        CameraSpec ortho = OrbitView.fit(s.controlBounds(), 0).camera(1);
+        ScreenProjector p = new ScreenProjector(ortho, 500, 500);
+        int k = 6;
+        List<float[]> curves = build(s, p, k).isoCurves();
+        assertEquals(2 * (k + 1), curves.size());
+        double[] out = new double[3];
+        for (int b = 0; b <= k; b++) {
+            float[] line = curves.get(b);
+            for (int a = 0; a <= k; a++) {
+                Vec3 q = Patches.evaluate(s.patches().get(0), (double) a / k, (double) b / k);
+                p.project(q.x(), q.y(), q.z(), out);
+                assertEquals(out[0], line[2 * a], 1e-3);
+                assertEquals(out[1], line[2 * a + 1], 1e-3);
+            }
+        }
+    }
+
+    @Test
+    void thePolygonJoinsNeighboursAlongRowsAndColumns() {
+        Scene s = randomPatch();
+        OverlayGeometry g = build(s, fit(s, 40, 640, 480), 0);
+        assertEquals(3 * 4 + 4 * 3, g.segmentCount(), "a bicubic net: 12 row and 12 column segments");
+        assertEquals(0, g.isoCurves().size(), "no iso-curves asked for");
+        OverlayGeometry none = OverlayBuilder.build(new OverlayRequest(s, fit(s, 40, 640, 480), false, false, 0, 1));
+        assertEquals(0, none.handleCount());
+        assertEquals(0, none.segmentCount());
+        assertEquals(16, none.pointCount(), "the count is of the model, drawn or not");
+    }
+
+    /** A grid of side × side flat bicubic patches, one unit each, in z = 0. */
+    static Scene grid(int side) {
+        return Scene.builder().patches(BigModels.grid(side * side)).build();
+    }
+
+    @Test
+    void aDenseModelGetsABoundedOverlayThatThinsByScreenDensity() {
+        Scene s = grid(100); // 10 000 patches, 160 000 points, on a big picture: more cells than the budget
+        ScreenProjector far = fit(s, 40, 1600, 1200);
+        OverlayGeometry g = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 12, 1));
+        assertTrue(g.handleCount() <= OverlayBuilder.HANDLE_BUDGET, "handles " + g.handleCount());
+        assertTrue(g.handleCount() > OverlayBuilder.HANDLE_BUDGET / 4, "the screen still fills with handles: "
+                + g.handleCount());
+        assertTrue(g.thinned());
+        assertTrue(g.segmentCount() <= OverlayBuilder.SEGMENT_BUDGET, "segments " + g.segmentCount());
+        long curvePoints = g.isoCurves().stream().mapToLong(c -> c.length / 2).sum();
+        assertTrue(curvePoints <= OverlayBuilder.CURVE_POINT_BUDGET, "curve points " + curvePoints);
+        assertEquals(160_000, g.pointCount());
+        // No two handles in one cell (merged cells are whole multiples of the first)
+        double cell = Math.ceil(2 * OverlayBuilder.HANDLE_RADIUS);
+        Set<Long> cells = new HashSet<>();
+        for (int k = 0; k < g.handleCount(); k++) {
+            long key = (long) Math.floor(g.handleX(k) / cell) * 100_000 + (long) Math.floor(g.handleY(k) / cell);
+            assertTrue(cells.add(key), "one handle per cell at most");
+        }
+    }
+
+    @Test
+    void zoomedInEveryPointOnScreenIsDrawn() {
+        Scene s = grid(100);
+        // Look straight down at one corner patch from close by, orthographic, 40 pixels per unit
+        CameraSpec close = new CameraSpec(new Vec3(1.5, 1.5, 10), new Vec3(1.5, 1.5, 0), new Vec3(0, 1, 0), 0, 20);
+        ScreenProjector p = new ScreenProjector(close, 800, 800);
+        OverlayGeometry g = build(s, p, 0);
+        // Points at multiples of 1/3; shared borders coincide and show one handle. The picture spans
+        // x, y in [−8.5, 11.5] at 40 pixels per unit, plus a margin of two 7-pixel cells.
+        int across = 0;
+        for (int x = 0; x <= 300; x++) {
+            double sx = (x / 3.0 - 1.5 + 10) * 40;
+            if (sx >= -14 && sx < 814) {
+                across++;
+                for (int y = 0; y <= 300; y++) {
+                    double sy = (1.5 - y / 3.0 + 10) * 40;
+                    if (sy > -14 && sy <= 814) {
+                        assertNotNull(g.pick(sx, sy, 1), "point (" + x + "/3, " + y + "/3) has a handle");
+                    }
+                }
+            }
+        }
+        int onScreen = across * across;
+        assertEquals(onScreen, g.handleCount(), "one handle per distinct point on screen");
+        assertFalse(g.segmentCount() == 0);
+    }
+
+    @Test
+    void pointsBehindTheEyeHideTheirPatch() {
+        Scene s = Models.teapot();
+        var box = s.controlBounds();
+        CameraSpec inside = new CameraSpec(box.center(), box.center().add(new Vec3(1, 0, 0)), Vec3.Z, 60, 1);
+        OverlayGeometry g = build(s, new ScreenProjector(inside, 400, 300), 4);
+        for (int k = 0; k < g.handleCount(); k++) {
+            var ref = g.handle(k).ref();
+            var patch = s.patches().get(ref.patch());
+            double[] out = new double[3];
+            for (int j = 0; j <= patch.degreeV(); j++) {
+                for (int i = 0; i <= patch.degreeU(); i++) {
+                    assertTrue(new ScreenProjector(inside, 400, 300).project(patch.get(i, j, 0), patch.get(i, j, 1),
+                            patch.get(i, j, 2), out), "a drawn patch lies wholly in front of the eye");
+                }
+            }
+        }
+    }
+
+    @Test
+    void theBudgetKeepsTheBiggestPatchesFirst() {
+        float[] extent = {100, 1, 50, -1, 2};
+        assertEquals(0, ExtentBudget.threshold(extent, p -> 10, 40), "all four visible patches fit");
+        double t = ExtentBudget.threshold(extent, p -> 10, 25);
+        assertTrue(t > 2 && t <= 50, "the two biggest fit, the small ones not: " + t);
+        assertEquals(Double.POSITIVE_INFINITY, ExtentBudget.threshold(extent, p -> 10, 5));
+    }
+}

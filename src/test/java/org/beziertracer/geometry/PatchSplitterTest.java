@@ -1,0 +1,137 @@
+package org.beziertracer.geometry;
+
+import static org.beziertracer.Tolerances.ROUNDING;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import java.util.Random;
+
+import org.beziertracer.model.BezierPatch;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@link PatchSplitter}: the pieces tile the parameter square with halvings, each piece is the
+ * parent restricted to its box, and splitting stops exactly when a piece is flat enough or the
+ * depth cap is reached.
+ */
+class PatchSplitterTest {
+
+    private final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+
+    static BezierPatch randomPatch(Random rnd) {
+        int n = 1 + rnd.nextInt(7), m = 1 + rnd.nextInt(7);
+        return new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, Math.pow(10, rnd.nextInt(5) - 2)));
+    }
+
+    @Test
+    void piecesTileTheSquareAndReproduceTheParent() {
+        Random rnd = new Random(2015);
+        for (int trial = 0; trial < 200; trial++) {
+            BezierPatch patch = randomPatch(rnd);
+            int n = patch.degreeU(), m = patch.degreeV();
+            SplitOptions options = new SplitOptions(true, 0.02 + 0.3 * rnd.nextDouble(), rnd.nextInt(9));
+            PatchPieces pieces = PatchSplitter.split(patch, options);
+            String where = "trial " + trial + " " + TestNets.degrees(n, m, 3) + " " + options;
+            assertEquals(n, pieces.degreeU(), where);
+            assertEquals(m, pieces.degreeV(), where);
+            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepth(), pieces.count() + " pieces: " + where);
+            double area = 0;
+            double[] parentNet = patch.copyNet();
+            double tol = ROUNDING * TestNets.size(parentNet, 0, parentNet.length);
+            for (int p = 0; p < pieces.count(); p++) {
+                double u0 = pieces.boxes()[4 * p], u1 = pieces.boxes()[4 * p + 1];
+                double v0 = pieces.boxes()[4 * p + 2], v1 = pieces.boxes()[4 * p + 3];
+                assertTrue(isHalving(u1 - u0) && isHalving(v1 - v0), "box widths are halvings: " + where);
+                area += (u1 - u0) * (v1 - v0);
+                for (int q = 0; q < p; q++) {
+                    assertTrue(disjoint(pieces.boxes(), p, q), "pieces " + q + " and " + p + " overlap: " + where);
+                }
+                // The piece at its own (s,t) is the parent at the mapped (u,v)
+                for (int k = 0; k < 4; k++) {
+                    double s = rnd.nextDouble(), t = rnd.nextDouble();
+                    double[] a = TestNets.eval(pieces.nets(), p * pieces.netLength(), n, m, 3, s, t);
+                    double[] b = TestNets.eval(parentNet, 0, n, m, 3, u0 + s * (u1 - u0), v0 + t * (v1 - v0));
+                    assertTrue(TestNets.maxDiff(a, b) <= tol, "piece " + p + " at (" + s + "," + t + ") off by "
+                            + TestNets.maxDiff(a, b) + ": " + where);
+                }
+            }
+            assertEquals(1, area, ROUNDING, "the boxes cover the square: " + where);
+        }
+    }
+
+    private static boolean isHalving(double width) {
+        double k = -Math.log(width) / Math.log(2);
+        return width > 0 && k == Math.rint(k);
+    }
+
+    private static boolean disjoint(double[] boxes, int p, int q) {
+        return boxes[4 * p + 1] <= boxes[4 * q] || boxes[4 * q + 1] <= boxes[4 * p]
+                || boxes[4 * p + 3] <= boxes[4 * q + 2] || boxes[4 * q + 3] <= boxes[4 * p + 2];
+    }
+
+    @Test
+    void aPieceIsSplitExactlyWhenItIsNotFlatAndAboveTheDepthCap() {
+        Random rnd = new Random(2016);
+        double[] box = new double[6];
+        for (int trial = 0; trial < 200; trial++) {
+            BezierPatch patch = randomPatch(rnd);
+            int n = patch.degreeU(), m = patch.degreeV();
+            SplitOptions options = new SplitOptions(true, 0.02 + 0.3 * rnd.nextDouble(), 1 + rnd.nextInt(8));
+            PatchPieces pieces = PatchSplitter.split(patch, options);
+            for (int p = 0; p < pieces.count(); p++) {
+                int off = p * pieces.netLength();
+                double width = pieces.boxes()[4 * p + 1] - pieces.boxes()[4 * p];
+                double height = pieces.boxes()[4 * p + 3] - pieces.boxes()[4 * p + 2];
+                int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
+                NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
+                double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessTolerance() * diagonal;
+                String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
+                assertTrue(flat || depth == options.maxDepth(), "a piece neither flat nor at the cap: " + where);
+                assertTrue(depth <= options.maxDepth(), where);
+            }
+            // The parent of each piece (its box doubled in the direction it was last halved) was not
+            // flat: a flat patch is never split
+            if (pieces.count() == 1) {
+                continue;
+            }
+            double[] net = patch.copyNet();
+            NetMeasures.controlBounds(net, 0, n, m, box);
+            double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessTolerance() * diagonal,
+                    "a flat patch was split: trial " + trial);
+        }
+    }
+
+    private static double sq(double x) { return x * x; }
+
+    @Test
+    void theLongerControlPolygonIsHalvedFirst() {
+        // 4 units long in u, 1 in v, bent in z so it is not flat: the first halving is in u
+        double[] net = new double[3 * 3 * 3];
+        for (int j = 0; j < 3; j++) {
+            for (int i = 0; i < 3; i++) {
+                int k = 3 * (j * 3 + i);
+                net[k] = 2 * i;
+                net[k + 1] = 0.5 * j;
+                net[k + 2] = i == 1 ? 3 : 0;
+            }
+        }
+        PatchPieces pieces = PatchSplitter.split(new BezierPatch(2, 2, net), new SplitOptions(true, 0.01, 1));
+        assertEquals(2, pieces.count());
+        assertArrayEquals(new double[] {0, 0.5, 0, 1, 0.5, 1, 0, 1}, Arrays.copyOf(pieces.boxes(), 8), 0);
+    }
+
+    @Test
+    void disabledOrDepthZeroKeepsTheWholePatch() {
+        BezierPatch patch = randomPatch(new Random(3));
+        for (SplitOptions options : new SplitOptions[] {SplitOptions.wholePatches(), new SplitOptions(true, 1e-9, 0)}) {
+            PatchPieces pieces = PatchSplitter.split(patch, options);
+            assertEquals(1, pieces.count(), options.toString());
+            assertArrayEquals(new double[] {0, 1, 0, 1}, pieces.boxes(), 0, options.toString());
+            assertArrayEquals(patch.copyNet(), pieces.nets(), 0, options.toString());
+        }
+    }
+}

@@ -1,0 +1,43 @@
+package org.beziertracer.geometry;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+class SplitOptionsTest {
+
+    @Test
+    void defaultsSplitAdaptivelyAndWholePatchesDoNot() {
+        SplitOptions d = SplitOptions.defaults();
+        assertTrue(d.enabled());
+        assertEquals(0.05, d.flatnessTolerance());
+        assertEquals(6, d.maxDepth());
+        SplitOptions w = SplitOptions.wholePatches();
+        assertFalse(w.enabled());
+        assertEquals(0, w.maxDepth());
+    }
+
+    @Test
+    void depthLimitsAreInclusive() {
+        assertEquals(0, new SplitOptions(true, 0.1, 0).maxDepth());
+        assertEquals(16, new SplitOptions(true, 0.1, 16).maxDepth());
+        assertEquals(Double.MIN_VALUE, new SplitOptions(true, Double.MIN_VALUE, 3).flatnessTolerance());
+    }
+
+    @Test
+    void badValuesAreRefusedWithTheirValueInTheMessage() {
+        for (double bad : new double[] {0, -0.0, -1, Double.NaN, Double.POSITIVE_INFINITY}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> new SplitOptions(true, bad, 3), "flatness " + bad);
+            assertTrue(e.getMessage().startsWith("flatness tolerance must be positive"), e.getMessage());
+        }
+        for (int bad : new int[] {-1, 17}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> new SplitOptions(true, 0.1, bad), "depth " + bad);
+            assertEquals("split depth must be 0..16, got " + bad, e.getMessage());
+        }
+    }
+}
