@@ -37,7 +37,8 @@ public final class PatchSplitter {
      */
     private static final class Recursion {
         final int n, m, len;
-        final SplitOptions options;
+        final int maxDepth;
+        final double flatness;
         final Builder out;
         final double[][] lo, hi;
         final double[] box = new double[6];
@@ -46,9 +47,10 @@ public final class PatchSplitter {
             this.n = n;
             this.m = m;
             this.len = (n + 1) * (m + 1) * 3;
-            this.options = options;
+            this.maxDepth = options.maxDepthFor(n, m);
+            this.flatness = options.flatnessFor(n, m);
             this.out = out;
-            int levels = options.maxDepth() + 1;
+            int levels = maxDepth + 1;
             lo = new double[levels][len];
             hi = new double[levels][len];
         }
@@ -61,8 +63,7 @@ public final class PatchSplitter {
             Bounds.ofPoints(net, 0, (n + 1) * (m + 1), box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
             double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (depth >= options.maxDepth()
-                    || NetMeasures.flatness(net, 0, n, m) <= options.flatnessTolerance() * size) {
+            if (depth >= maxDepth || NetMeasures.flatness(net, 0, n, m) <= flatness * size) {
                 out.add(net, u0, u1, v0, v1);
                 return;
             }

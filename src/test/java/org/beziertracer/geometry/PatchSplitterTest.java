@@ -36,7 +36,7 @@ class PatchSplitterTest {
             String where = "trial " + trial + " " + TestNets.degrees(n, m, 3) + " " + options;
             assertEquals(n, pieces.degreeU(), where);
             assertEquals(m, pieces.degreeV(), where);
-            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepth(), pieces.count() + " pieces: " + where);
+            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepthFor(n, m), pieces.count() + " pieces: " + where);
             double area = 0;
             double[] parentNet = patch.copyNet();
             double tol = ROUNDING * TestNets.size(parentNet, 0, parentNet.length);
@@ -87,10 +87,10 @@ class PatchSplitterTest {
                 int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
                 NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
                 double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessTolerance() * diagonal;
+                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
                 String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
-                assertTrue(flat || depth == options.maxDepth(), "a piece neither flat nor at the cap: " + where);
-                assertTrue(depth <= options.maxDepth(), where);
+                assertTrue(flat || depth == options.maxDepthFor(n, m), "a piece neither flat nor at the cap: " + where);
+                assertTrue(depth <= options.maxDepthFor(n, m), where);
             }
             // The parent of each piece (its box doubled in the direction it was last halved) was not
             // flat: a flat patch is never split
@@ -100,7 +100,7 @@ class PatchSplitterTest {
             double[] net = patch.copyNet();
             NetMeasures.controlBounds(net, 0, n, m, box);
             double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessTolerance() * diagonal,
+            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessFor(n, m) * diagonal,
                     "a flat patch was split: trial " + trial);
         }
     }
