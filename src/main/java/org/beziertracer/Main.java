@@ -5,7 +5,8 @@ import org.beziertracer.ui.BezierTracerApp;
 
 /**
  * Entry point. With no arguments it launches the desktop app (or, on a machine without a display,
- * prints how to use the command line); with arguments it runs a command-line tool. The root
+ * prints how to use the command line), with one model file or built-in name the app on that model;
+ * with a command it runs a command-line tool. The root
  * package is the only one that sees both {@code cli} and {@code ui}, so it hands the app's
  * launcher to the command line.
  */

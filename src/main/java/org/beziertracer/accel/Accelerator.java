@@ -54,6 +54,9 @@ public interface Accelerator {
 
     int primCount();
 
+    /** Heap held by this structure's arrays, in bytes (what it keeps, not what its build used). */
+    long bytes();
+
     /** Wall-clock time spent building (or refitting) this instance, in milliseconds. */
     double buildMillis();
 

@@ -1,278 +1,204 @@
 package org.beziertracer.accel;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.RecursiveAction;
 
 /**
- * Top-down binned surface-area-heuristic builder for {@link Bvh}.
+ * Top-down binned surface-area-heuristic builder for {@link Bvh}, parallel over subtrees.
  *
  * <p>Method: I. Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", IEEE
  * Symposium on Interactive Ray Tracing, 2007. Each node's primitive centroids are binned into
- * {@code binCount} equal intervals per axis of the centroid bounds (one pass for all three axes);
- * a left and a right sweep evaluate the SAH at every bin border; the cheapest border wins. Node
- * layout and in-place partition of one index array follow tinybvh by J. Bikker.
+ * {@code binCount} equal intervals of the centroid bounds along their widest axis ({@link
+ * SahBinner}; fewer bins for nodes with fewer primitives); a right and a left sweep evaluate the
+ * SAH at every bin border; the cheapest border wins. The children's boxes are the unions of their bins' boxes,
+ * and their centroid bounds are gathered while the node's indices are partitioned in place, so
+ * each level costs one binning pass and one partition pass. Node layout and the in-place
+ * partition of one index array follow tinybvh by J. Bikker. Independent subtrees over at least
+ * {@link BvhBuild#PARALLEL_PRIMS} primitives are built as fork-join tasks (the "binned SAH per
+ * subtree in parallel" of Wald 2007, §4). The primitives' boxes and centroids move with their
+ * indices, so every pass reads memory in order.
+ *
+ * <p>Nodes take the deterministic slots of {@link BvhBuild}, so the result does not depend on
+ * the scheduling.
  *
  * <p>Rules: a node with one primitive is a leaf; a node with at most {@code maxLeafSize}
  * primitives becomes a leaf when that is no dearer than the best split. A larger node is always
  * split: by the SAH when the centroids are spread out, otherwise (all centroids equal, e.g.
  * identical boxes) at the middle of its index range, so the build always terminates with leaves
- * of at most {@code maxLeafSize}. The build is iterative (explicit work stack), so even a
+ * of at most {@code maxLeafSize}. Each task is iterative (explicit work stack), so even a
  * degenerate, list-like tree cannot overflow the Java stack.
  *
- * <p>Not thread-safe; one instance per build (use {@link Bvh#build}).
  */
-final class BinnedSahBuilder {
+final class BinnedSahBuilder extends BvhBuild {
 
     /** SAH cost of visiting a node (one box test), relative to {@link #PRIMITIVE_COST}. */
     static final double TRAVERSAL_COST = 1.0;
     /** SAH cost of one leaf callback: a sub-patch test is several times dearer than a box test. */
     static final double PRIMITIVE_COST = 4.0;
 
-    private final double[] primBounds;
-    private final int primCount;
-    private final int maxLeafSize;
-    private final int binCount;
-
-    /** Twice the centre of each primitive box ({@code min + max}), 3 per primitive. */
-    private final double[] centroids;
-    private final int[] prims;
-    private final double[] nodeBounds;
-    private final int[] leftFirst;
-    private final int[] count;
-    private int nodeCount;
-    private int depth;
-
-    // Per-node scratch
-    private final double[] centroidMin = new double[3];
-    private final double[] binScale = new double[3];
-    private final int[] binPrims;
-    private final double[] binBoxes;
-    private final double[] rightArea;
-    private final int[] rightPrims;
-    private final double[] sweepBox = new double[6];
-    private int bestAxis;
-    private int bestPlane;
-    private double bestCost;
+    /** In leaf order: twice the centre of the primitive's box ({@code min + max}), 3 each. */
+    final float[] centroids;
+    final int binCount;
 
     private BinnedSahBuilder(double[] primBounds, int primCount, BvhOptions opts) {
-        this.primBounds = primBounds;
-        this.primCount = primCount;
-        this.maxLeafSize = opts.maxLeafSize();
+        super(primBounds, identity(primCount), opts);
         this.binCount = opts.binCount();
-        int capacity = Math.max(1, 2 * primCount - 1);
-        centroids = new double[3 * primCount];
-        prims = new int[primCount];
-        nodeBounds = new double[6 * capacity];
-        leftFirst = new int[capacity];
-        count = new int[capacity];
-        binPrims = new int[3 * binCount];
-        binBoxes = new double[3 * binCount * 6];
-        rightArea = new double[binCount];
-        rightPrims = new int[binCount];
+        centroids = new float[3 * primCount];
+        for (int p = 0; p < primCount; p++) {
+            for (int a = 0; a < 3; a++) {
+                centroids[3 * p + a] = (float) (primBounds[6 * p + a] + primBounds[6 * p + 3 + a]);
+            }
+        }
+    }
+
+    private static int[] identity(int n) {
+        int[] order = new int[n];
+        for (int p = 0; p < n; p++) {
+            order[p] = p;
+        }
+        return order;
     }
 
     static Bvh build(double[] primBounds, int primCount, BvhOptions opts) {
+        return build(primBounds, primCount, opts, true);
+    }
+
+    /** As {@link #build(double[], int, BvhOptions)}; {@code parallel = false}: on the calling thread only. */
+    static Bvh build(double[] primBounds, int primCount, BvhOptions opts, boolean parallel) {
         long start = System.nanoTime();
         Bvh.checkBounds(primBounds, primCount);
-        BinnedSahBuilder b = new BinnedSahBuilder(primBounds, primCount, opts);
-        b.run();
-        double millis = (System.nanoTime() - start) * 1e-6;
-        return new Bvh(Arrays.copyOf(b.nodeBounds, 6 * b.nodeCount),
-                Arrays.copyOf(b.leftFirst, b.nodeCount), Arrays.copyOf(b.count, b.nodeCount),
-                b.prims, b.depth, millis);
-    }
-
-    private void run() {
-        for (int p = 0; p < primCount; p++) {
-            prims[p] = p;
-            for (int a = 0; a < 3; a++) {
-                centroids[3 * p + a] = primBounds[6 * p + a] + primBounds[6 * p + 3 + a];
-            }
-        }
-        nodeCount = 1;
-        leftFirst[0] = 0;
-        count[0] = primCount;
         if (primCount == 0) {
-            System.arraycopy(new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                    Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
-                    Double.NEGATIVE_INFINITY}, 0, nodeBounds, 0, 6);
-            depth = 1;
-            return;
+            return empty(start);
         }
-        // Work stack of (node, level) pairs; pending nodes never exceed primCount.
-        int[] work = new int[2 * Math.max(2, primCount)];
-        int sp = 0;
-        work[sp++] = 0;
-        work[sp++] = 1;
-        while (sp > 0) {
-            int level = work[--sp];
-            int node = work[--sp];
-            depth = Math.max(depth, level);
-            int first = leftFirst[node], n = count[node];
-            double area = computeBounds(node, first, n);
-            if (n <= 1) {
-                continue;
-            }
-            boolean found = findSplit(first, n, area);
-            if (n <= maxLeafSize && (!found || PRIMITIVE_COST * n * area <= bestCost)) {
-                continue;
-            }
-            int mid = found ? partition(first, n) : first + n / 2;
-            if (mid == first || mid == first + n) {
-                mid = first + n / 2; // cannot happen with a valid split; guard against rounding
-            }
-            int left = nodeCount;
-            nodeCount += 2;
-            leftFirst[left] = first;
-            count[left] = mid - first;
-            leftFirst[left + 1] = mid;
-            count[left + 1] = first + n - mid;
-            leftFirst[node] = left;
-            count[node] = 0;
-            work[sp++] = left + 1;
-            work[sp++] = level + 1;
-            work[sp++] = left;
-            work[sp++] = level + 1;
+        BinnedSahBuilder b = new BinnedSahBuilder(primBounds, primCount, opts);
+        float[] rootCentroids = new float[6];
+        b.unionOf(0, primCount, b.nodeBounds, 0, rootCentroids);
+        Subtree root = new Subtree(b, 0, 1, 0, primCount, 1, rootCentroids);
+        b.parallel = parallel && primCount >= PARALLEL_PRIMS;
+        if (b.parallel) {
+            root.invoke();
+        } else {
+            root.compute();
         }
+        return b.toBvh(start);
     }
 
     /**
-     * Writes the node box, records the centroid bounds for binning and returns the node's half
-     * surface area.
+     * Union of the boxes at leaf-order positions {@code first .. first+n-1} into {@code box[o..o+5]}
+     * and of their centroids into {@code cbox[0..5]}.
      */
-    private double computeBounds(int node, int first, int n) {
-        double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX;
-        double maxX = Double.NEGATIVE_INFINITY, maxY = maxX, maxZ = maxX;
-        double cMinX = minX, cMinY = minX, cMinZ = minX, cMaxX = maxX, cMaxY = maxX, cMaxZ = maxX;
+    void unionOf(int first, int n, float[] box, int o, float[] cbox) {
+        unionOf(first, n, box, o);
+        setEmpty(cbox, 0);
         for (int i = first; i < first + n; i++) {
-            int p = prims[i], o = 6 * p, c = 3 * p;
-            minX = Math.min(minX, primBounds[o]);
-            minY = Math.min(minY, primBounds[o + 1]);
-            minZ = Math.min(minZ, primBounds[o + 2]);
-            maxX = Math.max(maxX, primBounds[o + 3]);
-            maxY = Math.max(maxY, primBounds[o + 4]);
-            maxZ = Math.max(maxZ, primBounds[o + 5]);
-            cMinX = Math.min(cMinX, centroids[c]);
-            cMinY = Math.min(cMinY, centroids[c + 1]);
-            cMinZ = Math.min(cMinZ, centroids[c + 2]);
-            cMaxX = Math.max(cMaxX, centroids[c]);
-            cMaxY = Math.max(cMaxY, centroids[c + 1]);
-            cMaxZ = Math.max(cMaxZ, centroids[c + 2]);
+            growPoint(cbox, centroids, 3 * i);
         }
-        int o = 6 * node;
-        nodeBounds[o] = minX;
-        nodeBounds[o + 1] = minY;
-        nodeBounds[o + 2] = minZ;
-        nodeBounds[o + 3] = maxX;
-        nodeBounds[o + 4] = maxY;
-        nodeBounds[o + 5] = maxZ;
-        setBinning(0, cMinX, cMaxX);
-        setBinning(1, cMinY, cMaxY);
-        setBinning(2, cMinZ, cMaxZ);
-        return halfArea(nodeBounds, o);
     }
 
-    /** Bin scale for an axis, or 0 when its centroid extent cannot be binned. */
-    private void setBinning(int axis, double cMin, double cMax) {
-        double scale = binCount / (cMax - cMin);
-        centroidMin[axis] = cMin;
-        binScale[axis] = cMax > cMin && Double.isFinite(scale) ? scale : 0;
+    /** Exchanges positions {@code i} and {@code j} of the leaf order (index, box, centroid). */
+    void swap(int i, int j) {
+        int p = prims[i];
+        prims[i] = prims[j];
+        prims[j] = p;
+        for (int k = 0; k < 6; k++) {
+            float t = boxes[6 * i + k];
+            boxes[6 * i + k] = boxes[6 * j + k];
+            boxes[6 * j + k] = t;
+        }
+        for (int k = 0; k < 3; k++) {
+            float t = centroids[3 * i + k];
+            centroids[3 * i + k] = centroids[3 * j + k];
+            centroids[3 * j + k] = t;
+        }
     }
 
-    private int binOf(int prim, int axis) {
-        int b = (int) ((centroids[3 * prim + axis] - centroidMin[axis]) * binScale[axis]);
-        return b < 0 ? 0 : b >= binCount ? binCount - 1 : b;
-    }
+    /** One subtree, built iteratively; its big children become tasks of their own. */
+    static final class Subtree extends RecursiveAction {
+        private static final long serialVersionUID = 1L;
+        final transient BinnedSahBuilder b;
+        final int slot, desc, first, n, level;
+        final float[] centroidBox;
 
-    /**
-     * Bins the node's centroids and finds the cheapest bin border; sets {@link #bestAxis},
-     * {@link #bestPlane} (first bin of the right side) and {@link #bestCost} (SAH cost times the
-     * node area, so flat nodes need no division). False when no axis can be split.
-     */
-    private boolean findSplit(int first, int n, double area) {
-        int bins = binCount;
-        Arrays.fill(binPrims, 0);
-        for (int k = 0; k < binBoxes.length; k += 6) {
-            setEmpty(binBoxes, k);
+        /**
+         * The subtree rooted at node {@code slot} (box already written) over leaf-order positions
+         * {@code first .. first+n-1}, whose descendants take the slots from {@code desc} on, at
+         * depth {@code level}, with the centroid bounds {@code centroidBox}.
+         */
+        Subtree(BinnedSahBuilder b, int slot, int desc, int first, int n, int level, float[] centroidBox) {
+            this.b = b;
+            this.slot = slot;
+            this.desc = desc;
+            this.first = first;
+            this.n = n;
+            this.level = level;
+            this.centroidBox = centroidBox;
         }
-        for (int i = first; i < first + n; i++) {
-            int p = prims[i];
-            for (int a = 0; a < 3; a++) {
-                if (binScale[a] > 0) {
-                    int bin = a * bins + binOf(p, a);
-                    binPrims[bin]++;
-                    grow(binBoxes, 6 * bin, primBounds, 6 * p);
-                }
-            }
-        }
-        bestCost = Double.POSITIVE_INFINITY;
-        bestAxis = -1;
-        double[] box = sweepBox;
-        for (int a = 0; a < 3; a++) {
-            if (binScale[a] == 0) {
-                continue;
-            }
-            // Right sweep: rightArea[b] and rightPrims[b] describe bins b..bins-1.
-            setEmpty(box, 0);
-            int sum = 0;
-            for (int b = bins - 1; b > 0; b--) {
-                int bin = a * bins + b;
-                grow(box, 0, binBoxes, 6 * bin);
-                sum += binPrims[bin];
-                rightPrims[b] = sum;
-                rightArea[b] = sum > 0 ? halfArea(box, 0) : 0;
-            }
-            // Left sweep: plane b puts bins 0..b-1 on the left.
-            setEmpty(box, 0);
-            sum = 0;
-            for (int b = 1; b < bins; b++) {
-                int bin = a * bins + b - 1;
-                grow(box, 0, binBoxes, 6 * bin);
-                sum += binPrims[bin];
-                if (sum == 0 || rightPrims[b] == 0) {
+
+        @Override
+        protected void compute() {
+            SahBinner w = new SahBinner(b);
+            List<Subtree> forked = new ArrayList<>();
+            WorkStack stack = new WorkStack();
+            stack.push(slot, desc, first, n, level, centroidBox);
+            int deepest = 0, made = 0;
+            float[] cbox = new float[6];
+            while (stack.size > 0) {
+                int[] e = stack.pop(cbox);
+                int s = e[0], d = e[1], f = e[2], count = e[3], lvl = e[4];
+                deepest = Math.max(deepest, lvl);
+                made++;
+                int mid = w.split(s, d, f, count, cbox);
+                if (mid < 0) {
+                    b.leaf(s, f, count);
                     continue;
                 }
-                double cost = TRAVERSAL_COST * area
-                        + PRIMITIVE_COST * (halfArea(box, 0) * sum + rightArea[b] * rightPrims[b]);
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestAxis = a;
-                    bestPlane = b;
+                int nl = mid - f, nr = count - nl;
+                b.interior(s, d);
+                if (b.parallel && nl >= PARALLEL_PRIMS) {
+                    Subtree left = new Subtree(b, d, d + 2, f, nl, lvl + 1, w.leftCentroids.clone());
+                    left.fork();
+                    forked.add(left);
+                } else {
+                    stack.push(d, d + 2, f, nl, lvl + 1, w.leftCentroids);
                 }
+                stack.push(d + 1, d + 2 * nl, mid, nr, lvl + 1, w.rightCentroids);
             }
-        }
-        return bestAxis >= 0;
-    }
-
-    /** Partitions the node's indices: bins below {@link #bestPlane} first; returns the border. */
-    private int partition(int first, int n) {
-        int i = first, j = first + n - 1;
-        while (i <= j) {
-            if (binOf(prims[i], bestAxis) < bestPlane) {
-                i++;
-            } else {
-                int t = prims[i];
-                prims[i] = prims[j];
-                prims[j--] = t;
+            for (Subtree t : forked) {
+                t.join();
             }
+            b.made(made, deepest);
         }
-        return i;
     }
 
-    static double halfArea(double[] b, int o) {
-        double dx = b[o + 3] - b[o], dy = b[o + 4] - b[o + 1], dz = b[o + 5] - b[o + 2];
-        return dx * dy + dy * dz + dz * dx;
-    }
+    /** Pending nodes of one task: 5 ints and a centroid box each. */
+    static final class WorkStack {
+        int[] ints = new int[5 * 64];
+        float[] floats = new float[6 * 64];
+        int size;
+        final int[] top = new int[5];
 
-    static void setEmpty(double[] b, int o) {
-        b[o] = b[o + 1] = b[o + 2] = Double.POSITIVE_INFINITY;
-        b[o + 3] = b[o + 4] = b[o + 5] = Double.NEGATIVE_INFINITY;
-    }
+        void push(int slot, int desc, int first, int n, int level, float[] cbox) {
+            if (5 * (size + 1) > ints.length) {
+                ints = Arrays.copyOf(ints, 2 * ints.length);
+                floats = Arrays.copyOf(floats, 2 * floats.length);
+            }
+            int i = 5 * size;
+            ints[i] = slot;
+            ints[i + 1] = desc;
+            ints[i + 2] = first;
+            ints[i + 3] = n;
+            ints[i + 4] = level;
+            System.arraycopy(cbox, 0, floats, 6 * size, 6);
+            size++;
+        }
 
-    /** Grows box {@code dst[d..d+5]} to contain box {@code src[s..s+5]}. */
-    static void grow(double[] dst, int d, double[] src, int s) {
-        for (int k = 0; k < 3; k++) {
-            dst[d + k] = Math.min(dst[d + k], src[s + k]);
-            dst[d + 3 + k] = Math.max(dst[d + 3 + k], src[s + 3 + k]);
+        int[] pop(float[] cbox) {
+            size--;
+            System.arraycopy(ints, 5 * size, top, 0, 5);
+            System.arraycopy(floats, 6 * size, cbox, 0, 6);
+            return top;
         }
     }
 }

@@ -6,11 +6,17 @@ package org.beziertracer.accel;
  * @param maxLeafSize at most this many primitives per leaf ({@code >= 1}); the SAH may stop earlier
  * @param binCount number of centroid bins per axis for the binned SAH ({@code 2..256}; 12–16 is the
  *     usual choice, see Wald 2007)
+ * @param mortonPrims builds over at least this many primitives use the Morton-ordered builder
+ *     ({@link MortonBuilder}) instead of the binned SAH ({@code >= 1}; {@link Integer#MAX_VALUE}:
+ *     never)
  */
-public record BvhOptions(int maxLeafSize, int binCount) {
+public record BvhOptions(int maxLeafSize, int binCount, int mortonPrims) {
 
     /** Largest accepted {@link #binCount()}. */
     public static final int MAX_BIN_COUNT = 256;
+
+    /** Default {@link #mortonPrims()}: the binned SAH up to this size (see docs/performance.md). */
+    public static final int MORTON_PRIMS = 1 << 18;
 
     public BvhOptions {
         if (maxLeafSize < 1) {
@@ -20,10 +26,23 @@ public record BvhOptions(int maxLeafSize, int binCount) {
             throw new IllegalArgumentException(
                     "binCount must be in 2.." + MAX_BIN_COUNT + ", got " + binCount);
         }
+        if (mortonPrims < 1) {
+            throw new IllegalArgumentException("mortonPrims must be >= 1, got " + mortonPrims);
+        }
     }
 
-    /** Four primitives per leaf at most, sixteen bins. */
+    /** These leaf and bin settings, with the default {@link #mortonPrims()}. */
+    public BvhOptions(int maxLeafSize, int binCount) {
+        this(maxLeafSize, binCount, MORTON_PRIMS);
+    }
+
+    /** Four primitives per leaf at most, sixteen bins, Morton order from {@value #MORTON_PRIMS} primitives. */
     public static BvhOptions defaults() {
         return new BvhOptions(4, 16);
+    }
+
+    /** These options with another {@link #mortonPrims()}. */
+    public BvhOptions withMortonPrims(int prims) {
+        return new BvhOptions(maxLeafSize, binCount, prims);
     }
 }

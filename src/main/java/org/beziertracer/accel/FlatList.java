@@ -3,37 +3,41 @@ package org.beziertracer.accel;
 import static org.beziertracer.accel.RayBox.MISS;
 
 import org.beziertracer.math.Aabb;
+import org.beziertracer.math.HeapBytes;
 
 /**
  * The "no hierarchy" accelerator: every query slab-tests every primitive box in index order and
  * calls back for those the ray enters before the current {@code tMax}. Used when the sub-patch BVH
  * is switched off, to measure what the {@link Bvh} buys, and as a reference in tests.
  *
- * <p>Layout: a private copy of the boxes, six doubles per primitive. Immutable and shareable
+ * <p>Layout: the boxes rounded outward to floats (as in {@link Bvh}), six per primitive. Immutable and shareable
  * between threads like {@link Bvh}; needs no stack ({@link #stackSize()} is 0, any array, even
  * {@code null}, may be passed).
  */
 public final class FlatList implements Accelerator {
 
-    private final double[] primBounds;
+    private final float[] primBounds;
     private final int primCount;
     private final double buildMillis;
 
-    private FlatList(double[] primBounds, int primCount, double buildMillis) {
+    private FlatList(float[] primBounds, int primCount, double buildMillis) {
         this.primBounds = primBounds;
         this.primCount = primCount;
         this.buildMillis = buildMillis;
     }
 
     /**
-     * Copies {@code 6 * primCount} box values.
+     * Copies {@code 6 * primCount} box values, rounded outward to floats.
      *
      * @throws IllegalArgumentException for a short array or a non-finite or inverted box
      */
     public static FlatList build(double[] primBounds, int primCount) {
         long start = System.nanoTime();
         Bvh.checkBounds(primBounds, primCount);
-        double[] copy = java.util.Arrays.copyOf(primBounds, 6 * primCount);
+        float[] copy = new float[6 * primCount];
+        for (int p = 0; p < primCount; p++) {
+            RayBox.roundOutward(primBounds, 6 * p, copy, 6 * p);
+        }
         return new FlatList(copy, primCount, (System.nanoTime() - start) * 1e-6);
     }
 
@@ -86,16 +90,24 @@ public final class FlatList implements Accelerator {
     }
 
     @Override
+    public long bytes() {
+        return HeapBytes.of(primBounds);
+    }
+
+    @Override
     public double buildMillis() {
         return buildMillis;
     }
 
     @Override
     public Aabb bounds() {
-        double[] box = new double[6];
-        BinnedSahBuilder.setEmpty(box, 0);
+        if (primCount == 0) {
+            return Aabb.EMPTY;
+        }
+        float[] box = new float[6];
+        BvhBuild.setEmpty(box, 0);
         for (int p = 0; p < primCount; p++) {
-            BinnedSahBuilder.grow(box, 0, primBounds, 6 * p);
+            BvhBuild.grow(box, 0, primBounds, 6 * p);
         }
         return new Aabb(box[0], box[1], box[2], box[3], box[4], box[5]);
     }

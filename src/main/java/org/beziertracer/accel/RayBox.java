@@ -1,8 +1,11 @@
 package org.beziertracer.accel;
 
 /**
- * Ray–box slab test on boxes stored as six doubles {@code minX, minY, minZ, maxX, maxY, maxZ} at an
- * offset in a flat array. Stateless and allocation-free.
+ * Ray–box slab test on boxes stored as six numbers {@code minX, minY, minZ, maxX, maxY, maxZ} at an
+ * offset in a flat array: {@code double[]} for exact boxes ({@link #entry}), {@code float[]} for
+ * the hierarchy's boxes, which are rounded outward when they are made (so a float box contains
+ * the double box it stands for). Stateless and allocation-free; the arithmetic is in double either
+ * way.
  *
  * <p><b>Zero direction components.</b> The ray comes as origin and reciprocal direction; a zero
  * component gives {@code invD = ±Infinity}. Per axis the near plane is chosen by the sign of
@@ -16,7 +19,8 @@ package org.beziertracer.accel;
  * <p><b>Robustness.</b> Each slab exit distance is multiplied by {@code 1 + 2γ₃} (γₙ = nε/(1-nε))
  * so a ray that touches a box is not lost to rounding (Pharr, Jakob, Humphreys, <i>Physically Based
  * Rendering</i>, 3rd ed., §3.9.2). Because rounding is monotone, a box that contains another is hit
- * whenever the inner one is, so a hierarchy of unions never culls what a leaf test would accept.
+ * whenever the inner one is, so a hierarchy of unions (and of outward-rounded float boxes) never
+ * culls what a leaf test would accept.
  */
 public final class RayBox {
 
@@ -36,6 +40,15 @@ public final class RayBox {
      */
     public static double entry(double[] boxes, int offset, double ox, double oy, double oz,
             double invDx, double invDy, double invDz, double tMin, double tMax) {
+        int sx = nearOffset(invDx), sy = nearOffset(invDy), sz = nearOffset(invDz);
+        int o = offset;
+        return interval(boxes[o + sx], boxes[o + 3 - sx], boxes[o + 1 + sy], boxes[o + 4 - sy],
+                boxes[o + 2 + sz], boxes[o + 5 - sz], ox, oy, oz, invDx, invDy, invDz, tMin, tMax);
+    }
+
+    /** {@link #entry} on a float box (as stored by {@link Bvh} and {@link FlatList}). */
+    public static double entry(float[] boxes, int offset, double ox, double oy, double oz,
+            double invDx, double invDy, double invDz, double tMin, double tMax) {
         return slab(boxes, offset, ox, oy, oz, invDx, invDy, invDz,
                 nearOffset(invDx), nearOffset(invDy), nearOffset(invDz), tMin, tMax);
     }
@@ -47,27 +60,60 @@ public final class RayBox {
     }
 
     /**
-     * Slab test with the near-plane offsets ({@link #nearOffset}) precomputed once per ray, for
-     * the traversal loops.
+     * Slab test on a float box with the near-plane offsets ({@link #nearOffset}) precomputed once
+     * per ray, for the traversal loops.
      */
-    static double slab(double[] b, int o, double ox, double oy, double oz,
+    static double slab(float[] b, int o, double ox, double oy, double oz,
             double invDx, double invDy, double invDz, int sx, int sy, int sz,
+            double tMin, double tMax) {
+        return interval(b[o + sx], b[o + 3 - sx], b[o + 1 + sy], b[o + 4 - sy], b[o + 2 + sz],
+                b[o + 5 - sz], ox, oy, oz, invDx, invDy, invDz, tMin, tMax);
+    }
+
+    /** The slab intersection for the box planes the ray enters ({@code near*}) and leaves ({@code far*}). */
+    private static double interval(double nearX, double farX, double nearY, double farY, double nearZ,
+            double farZ, double ox, double oy, double oz, double invDx, double invDy, double invDz,
             double tMin, double tMax) {
         double near = tMin, far = tMax;
         // NaN (origin on a plane of a zero-direction axis) fails every comparison: plane ignored.
-        double lo = (b[o + sx] - ox) * invDx;
-        double hi = (b[o + 3 - sx] - ox) * invDx * ROBUST_EXIT;
+        double lo = (nearX - ox) * invDx;
+        double hi = (farX - ox) * invDx * ROBUST_EXIT;
         if (lo > near) near = lo;
         if (hi < far) far = hi;
-        lo = (b[o + 1 + sy] - oy) * invDy;
-        hi = (b[o + 4 - sy] - oy) * invDy * ROBUST_EXIT;
+        lo = (nearY - oy) * invDy;
+        hi = (farY - oy) * invDy * ROBUST_EXIT;
         if (lo > near) near = lo;
         if (hi < far) far = hi;
-        lo = (b[o + 2 + sz] - oz) * invDz;
-        hi = (b[o + 5 - sz] - oz) * invDz * ROBUST_EXIT;
+        lo = (nearZ - oz) * invDz;
+        hi = (farZ - oz) * invDz * ROBUST_EXIT;
         if (lo > near) near = lo;
         if (hi < far) far = hi;
         // near == +Infinity only for an origin outside a slab of a zero-direction axis.
         return near <= far && near < MISS ? near : MISS;
+    }
+
+    /** The largest float not above {@code x} (a box minimum rounded outward). */
+    public static float down(double x) {
+        float f = (float) x;
+        return f > x ? Math.nextDown(f) : f;
+    }
+
+    /** The smallest float not below {@code x} (a box maximum rounded outward). */
+    public static float up(double x) {
+        float f = (float) x;
+        return f < x ? Math.nextUp(f) : f;
+    }
+
+    /**
+     * Writes box {@code src[s..s+5]} (doubles) rounded outward to floats at {@code dst[d..d+5]}:
+     * the float box contains the double box.
+     */
+    public static void roundOutward(double[] src, int s, float[] dst, int d) {
+        dst[d] = down(src[s]);
+        dst[d + 1] = down(src[s + 1]);
+        dst[d + 2] = down(src[s + 2]);
+        dst[d + 3] = up(src[s + 3]);
+        dst[d + 4] = up(src[s + 4]);
+        dst[d + 5] = up(src[s + 5]);
     }
 }

@@ -12,39 +12,53 @@ import org.beziertracer.render.Failures;
 /**
  * The app without its windows: it owns the open {@link Document}, the {@link SettingsModel
  * settings}, the {@link ViewModel view} and its picture, the {@link OverlayModel overlay}, the
- * {@link StatusModel status}, the selection and the render engine, and offers the commands as
- * small classes ({@link FileCommands}, {@link EditCommands}, {@link PointerTool}). A window calls
- * those one-liners and repaints from the immutable snapshots; it is told of changes through
+ * {@link StatusModel status}, the selection, the model's {@link Topology} and the render engine,
+ * and offers the commands as small classes ({@link FileCommands}, {@link EditCommands},
+ * {@link SelectionCommands}, {@link Inspector}, {@link ImageExport}, {@link PointerTool}). A window
+ * calls those one-liners and repaints from the immutable snapshots; it is told of changes through
  * {@link #addListener}.
  *
  * <p><b>Threads:</b> all state belongs to the UI thread of {@link AppThreads}; whatever grows with
- * the model (reading files, copying the patch list for an edit, projecting control points,
- * building the render snapshot) runs on the workers and the render engine's threads and comes
- * back through the UI executor. Imports nothing from AWT or Swing.
+ * the model (reading files, copying the patch list for an edit, projecting control points, finding
+ * welded points, building the render snapshot) runs on the workers and the render engine's threads
+ * and comes back through the UI executor. Imports nothing from AWT or Swing.
  */
 public final class AppModel {
+
+    /** Most selected points drawn highlighted one by one (more: the drawn handles that are selected). */
+    static final int SELECTED_BUDGET = OverlayBuilder.HANDLE_BUDGET;
 
     private final AppThreads threads;
     private final PictureEngine engine;
     private final UserDialogs dialogs;
+    private final AppPreferences prefs;
     private final List<Runnable> listeners = new ArrayList<>();
     private final Document document;
     private final SettingsModel settings;
     private final ViewModel view;
     private final StatusModel status;
     private final OverlayModel overlay;
+    private final TopologyModel topology;
     private final SceneEditor editor;
     private final BackgroundTasks viewTasks;
     private final BackgroundTasks io;
     private final EditCommands edits;
     private final FileCommands files;
+    private final SelectionCommands selections;
+    private final Inspector inspector;
+    private final ImageExport export;
     private final PointerTool pointer;
     private Selection selection = Selection.EMPTY;
 
-    public AppModel(PictureEngine engine, UserDialogs dialogs, AppThreads threads) {
+    /**
+     * @param prefs where recent files (and the desktop's theme) are remembered; tests pass a node of
+     *              their own
+     */
+    public AppModel(PictureEngine engine, UserDialogs dialogs, AppThreads threads, AppPreferences prefs) {
         this.threads = threads;
         this.engine = engine;
         this.dialogs = dialogs;
+        this.prefs = prefs;
         SceneDocument start = ModelLoader.builtIn("patch");
         document = new Document(start.scene(), "patch");
         settings = new SettingsModel(s -> settingsChanged());
@@ -53,15 +67,22 @@ public final class AppModel {
         status = new StatusModel(threads.ui(), this::notifyListeners);
         overlay = new OverlayModel(threads.overlay(), threads.ui(), view::repaint, this::notifyListeners,
                 e -> threads.ui().execute(() -> failed("Drawing the control points failed", e)));
+        overlay.onBuilt(this::selectionBuilt);
+        topology = new TopologyModel(threads.topology(), threads.ui(), e -> threads.ui().execute(() ->
+                status.message("welded points not found: " + Failures.describe(e))));
         editor = new SceneEditor(threads.edits(), threads.ui(), new EditorTarget());
         viewTasks = new BackgroundTasks(threads.edits(), threads.ui());
         edits = new EditCommands(this, editor);
         io = new BackgroundTasks(threads.io(), threads.ui());
         files = new FileCommands(this, io, new DocumentLoader(io, new LoaderTarget()));
+        selections = new SelectionCommands(this, viewTasks);
+        inspector = new Inspector(this);
+        export = new ImageExport(this, io);
         pointer = new PointerTool(this);
         engine.onStatus(status::report);
         engine.onError(msg -> threads.ui().execute(() -> dialogs.error("Rendering failed", msg)));
         requestOverlay(false);
+        topology.request(document.scene(), smooth());
     }
 
     // ------------------------------------------------------------------ parts
@@ -80,7 +101,15 @@ public final class AppModel {
 
     public EditCommands edits() { return edits; }
 
+    public SelectionCommands selections() { return selections; }
+
+    public Inspector inspector() { return inspector; }
+
+    public ImageExport export() { return export; }
+
     public PointerTool pointer() { return pointer; }
+
+    public AppPreferences prefs() { return prefs; }
 
     /** The selected control points. */
     public Selection selection() { return selection; }
@@ -101,9 +130,10 @@ public final class AppModel {
         }, e -> failed("Reset View failed", e));
     }
 
-    /** True while anything is pending: an edit, a load or save, an overlay, a render (tests wait on this). */
+    /** True while anything is pending: an edit, a load or save, an overlay, welds, a render (tests wait on this). */
     public boolean busy() {
-        return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy();
+        return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
+                || topology.busy();
     }
 
     /** Stops rendering and the workers. */
@@ -115,6 +145,9 @@ public final class AppModel {
     // ------------------------------------------------------------------ reactions
 
     SceneEditor editor() { return editor; }
+
+    /** The model's welds and joins as known now (see {@link Topology} on using an older one). */
+    Topology topology() { return topology.current(); }
 
     void notifyListeners() {
         for (Runnable l : listeners) {
@@ -129,11 +162,13 @@ public final class AppModel {
         dialogs.error(title, Failures.describe(e));
     }
 
+    private boolean smooth() { return settings.current().on(Toggle.SMOOTH_JOINS); }
+
     /** Starts a progressive render of the current state (coalesced; never renders here). */
     void render() {
         Picture p = view.picture();
         if (p != null && settings.current().on(Toggle.RAY_TRACE)) {
-            engine.submit(RenderRequest.of(document.scene(), view.camera(), settings.current(), p));
+            engine.submit(RenderRequest.of(document.scene(), view.camera(), view.view().framing(), settings.current(), p));
         }
         view.repaint();
     }
@@ -145,7 +180,43 @@ public final class AppModel {
         } else {
             overlay.request(r);
         }
-        overlay.selected(selection.handles(document.scene(), view.projector()));
+        overlay.selected(selectedHandles());
+        overlay.lights(lightMarkers());
+    }
+
+    /**
+     * The selected points as drawn now: each projected, for a selection of up to
+     * {@link #SELECTED_BUDGET} points; for a bigger one, the drawn handles that are selected.
+     */
+    private List<Handle> selectedHandles() {
+        if (selection.size() <= SELECTED_BUDGET) {
+            return selection.drawn(document.scene(), view.projector(), SELECTED_BUDGET);
+        }
+        OverlayGeometry g = overlay.geometry();
+        List<Handle> out = new ArrayList<>();
+        for (int k = 0; k < g.handleCount(); k++) {
+            Handle h = g.handle(k);
+            if (selection.contains(h.ref())) {
+                out.add(h);
+            }
+        }
+        return out;
+    }
+
+    private void selectionBuilt() {
+        if (selection.size() > SELECTED_BUDGET) {
+            overlay.selected(selectedHandles());
+        }
+    }
+
+    private List<LightMarker> lightMarkers() {
+        Settings s = settings.current();
+        if (!s.on(Toggle.SHOW_LIGHT)) {
+            return List.of();
+        }
+        var camera = view.camera();
+        return LightMarker.of(LightRig.shown(s, document.scene(), camera, view.view().framing()), view.projector(),
+                s.light() != LightPlacement.SCENE, view.scale());
     }
 
     private void viewMoved() {
@@ -160,6 +231,7 @@ public final class AppModel {
         }
         requestOverlay(false);
         render();
+        topology.request(document.scene(), smooth());
         notifyListeners();
     }
 
@@ -169,6 +241,7 @@ public final class AppModel {
         overlay.hover(null);
         requestOverlay(false);
         render();
+        topology.request(document.scene(), smooth());
         notifyListeners();
     }
 
@@ -183,17 +256,18 @@ public final class AppModel {
     /** The selection is now {@code s} (widgets that show it are told). */
     void select(Selection s) {
         selection = s;
-        overlay.selected(s.handles(document.scene(), view.projector()));
+        overlay.selected(selectedHandles());
         notifyListeners();
     }
 
-    /** A drag that started from {@code base} ended: one undoable edit (unless the model moved on). */
-    void dragEnded(Scene base, long epoch) {
+    /** A drag that started from {@code base} ended: one undoable edit called {@code name} (unless the model moved on). */
+    void dragEnded(Scene base, long epoch, String name) {
         if (document.epoch() == epoch) {
-            document.history().commit("Move control point", base);
+            document.history().commit(name, base);
             document.bump();
+            topology.request(document.scene(), smooth());
         }
-        select(Selection.EMPTY);
+        select(selection);
     }
 
     private final class EditorTarget implements SceneEditor.Target {
@@ -204,6 +278,7 @@ public final class AppModel {
         public void previewed() {
             requestOverlay(false);
             render();
+            notifyListeners();
         }
 
         @Override
@@ -223,18 +298,24 @@ public final class AppModel {
     private final class LoaderTarget implements DocumentLoader.Target {
         @Override
         public void opened(DocumentLoader.Loaded l) {
-            Settings s = RenderChoices.fromScene(settings.current(), l.document().settings());
-            var camera = l.document().scene().camera();
+            Scene scene = l.document().scene();
+            Settings s = RenderChoices.lightFor(RenderChoices.fromScene(settings.current(), l.document().settings()),
+                    !scene.lights().isEmpty());
+            var camera = scene.camera();
             if (camera.isPresent()) {
                 s = s.with(Level.PERSPECTIVE, Settings.perspectiveOf(camera.get().fovDegrees()));
             }
             settings.replaceQuietly(s);
-            document.replace(l.document().scene(), l.name(), l.source());
-            view.replace(ViewModel.home(l.document().scene(), l.bounds(), s.fovDegrees()));
+            document.replace(scene, l.name(), l.source());
+            view.replace(ViewModel.home(scene, l.bounds(), s.fovDegrees()));
             selection = Selection.EMPTY;
             overlay.hover(null);
             requestOverlay(true);
             render();
+            topology.request(scene, smooth());
+            if (l.source() != null) {
+                prefs.addRecent(l.source());
+            }
             status.message("opened " + l.name());
         }
 

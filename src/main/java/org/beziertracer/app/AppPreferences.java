@@ -1,10 +1,14 @@
 package org.beziertracer.app;
 
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.prefs.Preferences;
 
 /**
- * What the app remembers between runs, in one {@link Preferences} node: the theme (and, later,
- * recent files). The desktop app uses the user's node {@value #NODE}; tests inject a node of their
+ * What the app remembers between runs, in one {@link Preferences} node: the theme and the recent
+ * files (File → Open Recent, the last {@value #MAX_RECENT}, newest first). The desktop app uses the user's node {@value #NODE}; tests inject a node of their
  * own (an in-memory one), so they never write the user's preferences. A node that cannot be read
  * or written (no preferences store) is treated as empty, and a choice then lasts for the run only.
  */
@@ -13,6 +17,9 @@ public final class AppPreferences {
     /** The user's node of the desktop app (the same as before this class existed). */
     public static final String NODE = "org/beziertracer/ui";
     static final String THEME = "theme";
+    static final String RECENT = "recent.";
+    /** Files File → Open Recent lists. */
+    public static final int MAX_RECENT = 8;
 
     private final Preferences node;
 
@@ -34,6 +41,45 @@ public final class AppPreferences {
 
     public void setDarkTheme(boolean dark) {
         put(THEME, dark ? "dark" : "light");
+    }
+
+    /** The files opened or saved last, newest first (at most {@value #MAX_RECENT}). */
+    public List<Path> recentFiles() {
+        List<Path> out = new ArrayList<>();
+        for (int k = 0; k < MAX_RECENT; k++) {
+            String v = get(RECENT + k, null);
+            if (v != null && !v.isEmpty()) {
+                try {
+                    out.add(Path.of(v));
+                } catch (InvalidPathException e) {
+                    // a value this system cannot read as a path: left out
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Puts {@code file} first in the recent files (once), keeping the newest {@value #MAX_RECENT}. */
+    public void addRecent(Path file) {
+        Path abs = file.toAbsolutePath().normalize();
+        List<Path> list = new ArrayList<>(recentFiles());
+        list.remove(abs);
+        list.add(0, abs);
+        storeRecent(list);
+    }
+
+    /** Takes {@code file} off the recent files (it could not be opened). */
+    public void removeRecent(Path file) {
+        List<Path> list = new ArrayList<>(recentFiles());
+        if (list.remove(file.toAbsolutePath().normalize()) | list.remove(file)) {
+            storeRecent(list);
+        }
+    }
+
+    private void storeRecent(List<Path> list) {
+        for (int k = 0; k < MAX_RECENT; k++) {
+            put(RECENT + k, k < list.size() ? list.get(k).toString() : "");
+        }
     }
 
     private String get(String key, String fallback) {

@@ -7,22 +7,24 @@ import java.util.concurrent.Executors;
 
 /**
  * Where the app's work runs. {@code ui} is the thread that owns all mutable app state (the Swing
- * event thread in the desktop app); the three workers take what grows with the model:
- * {@code edits} (drag previews, whole-model edits), {@code io} (open, save, export) and
- * {@code overlay} (projecting control points). Results come back through {@code ui}. Tests use
- * {@link #direct()}, which runs everything at once on the caller's thread.
+ * event thread in the desktop app); the four workers take what grows with the model:
+ * {@code edits} (drag previews, whole-model edits, selecting), {@code io} (open, save, export),
+ * {@code overlay} (projecting control points) and {@code topology} (finding welded points and
+ * cross-border rows). Results come back through {@code ui}. Tests use {@link #direct()}, which
+ * runs everything at once on the caller's thread.
  */
-public record AppThreads(Executor ui, Executor edits, Executor io, Executor overlay) {
+public record AppThreads(Executor ui, Executor edits, Executor io, Executor overlay, Executor topology) {
 
     /** Everything runs inline, on the caller's thread (unit tests: deterministic, no waiting). */
     public static AppThreads direct() {
         Executor now = Runnable::run;
-        return new AppThreads(now, now, now, now);
+        return new AppThreads(now, now, now, now, now);
     }
 
     /** One daemon thread per worker, results delivered through {@code ui}. */
     public static AppThreads start(Executor ui) {
-        return new AppThreads(ui, worker("model-edits"), worker("model-io"), worker("overlay-prep"));
+        return new AppThreads(ui, worker("model-edits"), worker("model-io"), worker("overlay-prep"),
+                worker("model-topology"));
     }
 
     private static ExecutorService worker(String name) {
@@ -35,7 +37,7 @@ public record AppThreads(Executor ui, Executor edits, Executor io, Executor over
 
     /** Stops the workers this record started (jobs in flight are interrupted). */
     public void close() {
-        for (Executor e : List.of(edits, io, overlay)) {
+        for (Executor e : List.of(edits, io, overlay, topology)) {
             if (e instanceof ExecutorService s) {
                 s.shutdownNow();
             }

@@ -67,8 +67,8 @@ final class DocumentLoader {
     private void ended(Task t) {
         if (running == t) {
             running = null;
-            target.status().task(null);
         }
+        target.status().endTask(t);
     }
 
     /** True while a load runs. */

@@ -1,20 +1,27 @@
 package org.beziertracer.app;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
 import java.util.function.Supplier;
 
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.AtomicFiles;
+import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.FileFormats;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Failures;
 
 /**
- * The File and Models menus: open (asking about unsaved edits first), save, save as, export, quit.
- * Files are read and written off the UI thread ({@link DocumentLoader}, {@link BackgroundTasks});
- * what follows a save (closing, opening another model) waits for it. Every failure is a one-line
- * dialog. UI thread only.
+ * The File and Models menus: open (asking about unsaved edits first) — from the file dialog, Open
+ * Recent, a file dropped on the window or the command line — save, save as, export, quit. Files
+ * are read and written off the UI thread ({@link DocumentLoader}, {@link BackgroundTasks}); what
+ * follows a save (closing, opening another model) waits for it. Every failure is a one-line
+ * dialog. Files opened or saved go first in the recent files ({@link AppPreferences}). UI thread
+ * only.
  */
 public final class FileCommands {
 
@@ -44,8 +51,7 @@ public final class FileCommands {
     }
 
     private void load(Path p) {
-        Path name = p.getFileName();
-        loader.load(name == null ? p.toString() : name.toString(), () -> ModelLoader.load(p), p);
+        loader.load(name(p), () -> ModelLoader.load(p), p);
     }
 
     /**
@@ -55,6 +61,48 @@ public final class FileCommands {
      */
     public void open(String name, Callable<SceneDocument> read) {
         confirmDiscard(() -> loader.load(name, read, null));
+    }
+
+    /** File → Open Recent: {@code p} again; a file that is gone is taken off the list with a one-line error. */
+    public void openRecent(Path p) {
+        if (!Files.isRegularFile(p)) {
+            app.prefs().removeRecent(p);
+            app.notifyListeners();
+            app.dialogs().error("Cannot open " + name(p), p + ": no such file (taken off the recent files)");
+            return;
+        }
+        open(p);
+    }
+
+    /**
+     * Files dropped on the window: opens the first one the format registry can read
+     * ({@link FileFormats}); when none, says which kinds can be opened.
+     */
+    public void openDropped(List<Path> files) {
+        Optional<Path> first = files.stream().filter(f -> FileFormats.find(f.toString()).isPresent()).findFirst();
+        if (first.isPresent()) {
+            open(first.get());
+        } else if (!files.isEmpty()) {
+            Path f = files.get(0);
+            app.dialogs().error("Cannot open " + name(f), f + ": cannot open this kind of file; drop a "
+                    + FileFormats.extensionList(ModelLoader.OPEN_FORMATS) + " file");
+        }
+    }
+
+    /**
+     * What the command line named ({@code java -jar beziertracer.jar FILE_OR_BUILTIN}): a built-in
+     * model or scene by name, else a file.
+     */
+    public void openArgument(String arg) {
+        if (BuiltIns.find(arg).isPresent()) {
+            openBuiltIn(arg);
+        } else {
+            open(Path.of(arg));
+        }
+    }
+
+    private static String name(Path p) {
+        return p.getFileName() == null ? p.toString() : p.getFileName().toString();
     }
 
     /** Models menu: a built-in model or scene. */
@@ -92,6 +140,7 @@ public final class FileCommands {
             return p;
         }, saved -> {
             app.document().saved(scene, p);
+            app.prefs().addRecent(p);
             app.status().message("saved " + p);
             then.run();
         }, e -> failed("Cannot save " + p.getFileName(), e));

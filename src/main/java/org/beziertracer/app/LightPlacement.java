@@ -1,52 +1,56 @@
 package org.beziertracer.app;
 
-import java.util.List;
-
-import org.beziertracer.math.Aabb;
 import org.beziertracer.math.Vec3;
-import org.beziertracer.model.PointLight;
-import org.beziertracer.model.Scene;
 
 /**
- * Where the light is: the scene's own lights, one light at the eye (the memoir's light at the
- * centre of projection; it follows the camera), or one light fixed in the scene at a corner of
- * the model's bounding box scaled out by two radii.
+ * Where the light is, as the toolbox offers it: the scene's own lights; one light that follows
+ * the view — above and to the left of the eye (the default, so that a surface's relief reads at
+ * once), or at the eye itself (the memoir's light at the centre of projection); or one light fixed
+ * in the scene, beside the model. A light that follows the view or is fixed in the scene can be
+ * dragged to another place ({@link LightRig}); the preset's {@link #preset() offset} is where it
+ * starts.
  */
 public enum LightPlacement {
-    SCENE("Scene's lights"),
-    AT_EYE("At the eye"),
-    ABOVE_LEFT("Above left"),
-    ABOVE_RIGHT("Above right"),
-    BELOW("Below");
+    SCENE("Scene's lights", Frame.SCENE, null),
+    /**
+     * The default: up and to the left as seen from the eye, three quarters of the way to the model,
+     * so it lights the model about 45° off the line of sight and, at the default perspective, its
+     * marker shows inside the picture.
+     */
+    EYE_ABOVE_LEFT("Above left of the eye", Frame.VIEW, new Vec3(-0.2, 0.14, 0.75)),
+    AT_EYE("At the eye", Frame.VIEW, Vec3.ZERO),
+    ABOVE_LEFT("Above left", Frame.WORLD, new Vec3(-1, -1, 1.5).normalize().scale(4)),
+    ABOVE_RIGHT("Above right", Frame.WORLD, new Vec3(1, -1, 1.5).normalize().scale(4)),
+    BELOW("Below", Frame.WORLD, new Vec3(0.3, -0.5, -1.5).normalize().scale(4));
+
+    /** What a placement's offset is measured in. */
+    public enum Frame {
+        /** No offset: the scene's own lights (with none, the renderer puts one at the eye). */
+        SCENE,
+        /**
+         * Follows the view: the offset from the eye along the camera's right, up and forward axes,
+         * in eye-to-target distances.
+         */
+        VIEW,
+        /** Fixed in the scene: the offset from the centre of the view's framing, in framing radii. */
+        WORLD
+    }
 
     private final String label;
+    private final Frame frame;
+    private final Vec3 preset;
 
-    LightPlacement(String label) { this.label = label; }
+    LightPlacement(String label, Frame frame, Vec3 preset) {
+        this.label = label;
+        this.frame = frame;
+        this.preset = preset;
+    }
 
     @Override
     public String toString() { return label; }
 
-    /**
-     * The scene to render: {@code scene} itself for {@link #SCENE} (a scene without lights is lit
-     * from the eye by the renderer), no lights for {@link #AT_EYE}, else one fixed light.
-     */
-    public Scene apply(Scene scene) {
-        return switch (this) {
-            case SCENE -> scene;
-            case AT_EYE -> scene.lights().isEmpty() ? scene : scene.toBuilder().lights(List.of()).build();
-            default -> scene.toBuilder().lights(List.of(new PointLight(position(scene.controlBounds())))).build();
-        };
-    }
+    public Frame frame() { return frame; }
 
-    /** Position of a fixed light for a model with these bounds. */
-    Vec3 position(Aabb box) {
-        Vec3 c = box.isEmpty() ? Vec3.ZERO : box.center();
-        double r = box.isEmpty() ? 1 : Math.max(1e-6, box.diagonal());
-        Vec3 dir = switch (this) {
-            case ABOVE_LEFT -> new Vec3(-1, -1, 1.5);
-            case ABOVE_RIGHT -> new Vec3(1, -1, 1.5);
-            default -> new Vec3(0.3, -0.5, -1.5);
-        };
-        return c.add(dir.normalize().scale(2 * r));
-    }
+    /** Where the light starts (in {@link #frame()} units), or null for {@link #SCENE}. */
+    public Vec3 preset() { return preset; }
 }

@@ -33,54 +33,33 @@ public final class NetEdits {
      * {@code R = }{@value #RANDOM_Z_RANGE} scaled by the model's size relative to the default patch
      * (whose control square is 3 units wide). A single patch first goes back to its flat grid, so
      * the result depends only on the seed and the grid size (the memoir's behaviour); several
-     * patches (the teapot) get the offsets added to their current points.
+     * patches (the teapot) get the offsets added to their current points, one offset per handle:
+     * points that coincide ({@link WeldIndex}) move together, so shared borders stay shared.
      */
     public static Scene randomize(Scene scene, long seed) {
         Random random = new Random(seed);
-        List<BezierPatch> patches = new ArrayList<>();
-        double scale = scene.patchCount() == 1 ? 1 : Math.max(1e-9, scene.controlBounds().diagonal() / 4.243) * 0.1;
-        for (BezierPatch p : scene.patches()) {
-            BezierPatch base = scene.patchCount() == 1 ? Models.flatGrid(p.degreeU() + 1, p.degreeV() + 1) : p;
-            double[] net = base.copyNet();
+        if (scene.patchCount() == 1) {
+            BezierPatch p = scene.patches().get(0);
+            double[] net = Models.flatGrid(p.degreeU() + 1, p.degreeV() + 1).copyNet();
             for (int k = 2; k < net.length; k += 3) {
-                net[k] += (2 * random.nextDouble() - 1) * RANDOM_Z_RANGE * scale;
+                net[k] += (2 * random.nextDouble() - 1) * RANDOM_Z_RANGE;
             }
-            patches.add(new BezierPatch(p.degreeU(), p.degreeV(), net));
+            return scene.toBuilder().patches(List.of(NetChange.withNet(p, net))).build();
+        }
+        double scale = Math.max(1e-9, scene.controlBounds().diagonal() / 4.243) * 0.1;
+        WeldIndex welds = WeldIndex.build(scene);
+        double[] offset = new double[welds.pointCount()];
+        List<BezierPatch> patches = new ArrayList<>(scene.patchCount());
+        for (int p = 0, g = 0; p < scene.patchCount(); p++) {
+            BezierPatch patch = scene.patches().get(p);
+            double[] net = patch.copyNet();
+            for (int k = 2; k < net.length; k += 3, g++) {
+                int node = welds.node(g);
+                offset[g] = node == g ? (2 * random.nextDouble() - 1) * RANDOM_Z_RANGE * scale : offset[node];
+                net[k] += offset[g];
+            }
+            patches.add(NetChange.withNet(patch, net));
         }
         return scene.toBuilder().patches(patches).build();
-    }
-
-    /** The scene with control point {@code ref} moved to {@code (x, y, z)}. */
-    public static Scene movePoint(Scene scene, PointRef ref, double x, double y, double z) {
-        BezierPatch p = scene.patches().get(ref.patch());
-        return scene.withPatch(ref.patch(), p.withPoint(ref.i(), ref.j(), x, y, z));
-    }
-
-    /**
-     * The scene with every point of {@code selection} moved by {@code (dx, dy, dz)}: one new patch
-     * per touched patch, the others shared.
-     */
-    public static Scene moveBy(Scene scene, Selection selection, double dx, double dy, double dz) {
-        List<BezierPatch> patches = null;
-        var groups = selection.byPatch();
-        for (List<PointRef> group : groups) {
-            int k = group.get(0).patch();
-            BezierPatch p = scene.patches().get(k);
-            double[] net = p.copyNet();
-            for (PointRef r : group) {
-                net[p.index(r.i(), r.j(), 0)] += dx;
-                net[p.index(r.i(), r.j(), 1)] += dy;
-                net[p.index(r.i(), r.j(), 2)] += dz;
-            }
-            BezierPatch moved = new BezierPatch(p.degreeU(), p.degreeV(), net);
-            if (groups.size() == 1) {
-                return scene.withPatch(k, moved);
-            }
-            if (patches == null) {
-                patches = new ArrayList<>(scene.patches());
-            }
-            patches.set(k, moved);
-        }
-        return patches == null ? scene : scene.toBuilder().patches(patches).build();
     }
 }

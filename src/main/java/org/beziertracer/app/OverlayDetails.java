@@ -1,18 +1,26 @@
 package org.beziertracer.app;
 
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 
 import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.TrimCurves;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.TrimRegion;
 
 /**
  * The control polygon and the memoir's cheap wireframe for the patches chosen by
  * {@link ExtentBudget}: iso-curves evaluated with de Casteljau on the <b>projected</b> 2-D control
  * points (not projectively exact, but fast, and exact for a parallel projection by affine
- * invariance), with fewer subdivisions on patches too small on screen to show them. Not
- * thread-safe (one per build).
+ * invariance; a rational patch through its projected points and its weights), with fewer
+ * subdivisions on patches too small on screen to show them. On a trimmed patch the iso-curves
+ * stop where they leave the trim region (tested at their points on the exact trim curves), and
+ * the trim curves within the patch's part of its surface are drawn too, as curves on the
+ * projected surface. Not thread-safe (one per build).
  */
 final class OverlayDetails {
 
@@ -20,6 +28,14 @@ final class OverlayDetails {
     private final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
     private final List<float[]> polygon = new ArrayList<>();
     private final List<float[]> curves = new ArrayList<>();
+    private final double[] point = new double[3];
+    /** Each trim region's curves and their sampled polylines, made once per build. */
+    private final Map<TrimRegion, TrimCurves> trims = new IdentityHashMap<>();
+    private final Map<TrimRegion, List<double[]>> trimLines = new IdentityHashMap<>();
+    private final double[] trimScratch = new double[TrimCurves.SCRATCH_LENGTH];
+
+    /** Points per trim-curve segment drawn. */
+    static final int TRIM_SAMPLES = 24;
 
     OverlayDetails(PatchProjection projection) {
         this.projection = projection;
@@ -67,7 +83,10 @@ final class OverlayDetails {
                 addPolygon(patch.degreeU(), patch.degreeV());
             }
             if (iso) {
-                addIsoCurves(patch.degreeU(), patch.degreeV(), subdivisions(k, extent[p]));
+                addIsoCurves(patch, subdivisions(k, extent[p]));
+                if (patch.trim() != null) {
+                    addTrimCurves(patch);
+                }
             }
         }
     }
@@ -82,20 +101,85 @@ final class OverlayDetails {
         }
     }
 
-    /** The k + 1 iso-curves of constant v, then the k + 1 of constant u. */
-    private void addIsoCurves(int n, int m, int k) {
+    /** The k + 1 iso-curves of constant v, then the k + 1 of constant u (broken outside a trim region). */
+    private void addIsoCurves(BezierPatch patch, int k) {
         double[] grid = new double[2 * (k + 1) * (k + 1)];
+        boolean[] kept = patch.trim() == null ? null : new boolean[(k + 1) * (k + 1)];
+        TrimCurves trim = patch.trim() == null ? null : trims.computeIfAbsent(patch.trim(), TrimCurves::of);
+        PatchDomain d = patch.domain();
         for (int b = 0; b <= k; b++) {
             for (int a = 0; a <= k; a++) {
-                DeCasteljau.evaluate(projection.xy, 0, n, m, 2, (double) a / k, (double) b / k,
-                        grid, 2 * (b * (k + 1) + a), scratch);
+                double s = (double) a / k, t = (double) b / k;
+                onScreen(patch, s, t, grid, 2 * (b * (k + 1) + a));
+                if (kept != null) {
+                    kept[b * (k + 1) + a] = trim.contains(d.u0() + s * (d.u1() - d.u0()), d.v0() + t * (d.v1() - d.v0()),
+                            trimScratch);
+                }
             }
         }
         for (int b = 0; b <= k; b++) {
-            curves.add(line(grid, k, b * (k + 1), 1));
+            addRuns(grid, kept, k, b * (k + 1), 1);
         }
         for (int a = 0; a <= k; a++) {
-            curves.add(line(grid, k, a, k + 1));
+            addRuns(grid, kept, k, a, k + 1);
+        }
+    }
+
+    /** The trim curves where they cross the patch's part of its surface, on the projected patch. */
+    private void addTrimCurves(BezierPatch patch) {
+        TrimRegion region = patch.trim();
+        List<double[]> lines = trimLines.computeIfAbsent(region,
+                r -> trims.computeIfAbsent(r, TrimCurves::of).polylines(TRIM_SAMPLES));
+        PatchDomain d = patch.domain();
+        double du = d.u1() - d.u0(), dv = d.v1() - d.v0();
+        for (double[] uv : lines) {
+            int count = uv.length / 2;
+            double[] screen = new double[uv.length];
+            boolean[] inside = new boolean[count];
+            for (int i = 0; i < count; i++) {
+                double s = (uv[2 * i] - d.u0()) / du, t = (uv[2 * i + 1] - d.v0()) / dv;
+                inside[i] = s >= 0 && s <= 1 && t >= 0 && t <= 1;
+                if (inside[i]) {
+                    onScreen(patch, s, t, screen, 2 * i);
+                }
+            }
+            addRuns(screen, inside, count - 1, 0, 1);
+        }
+    }
+
+    /** The projected surface point at the patch's own {@code (s,t)} into {@code out[o..o+2)}. */
+    private void onScreen(BezierPatch patch, double s, double t, double[] out, int o) {
+        int n = patch.degreeU(), m = patch.degreeV();
+        if (!projection.rational) {
+            DeCasteljau.evaluate(projection.xy, 0, n, m, 2, s, t, out, o, scratch);
+            return;
+        }
+        DeCasteljau.evaluate(projection.xyw, 0, n, m, 3, s, t, point, 0, scratch);
+        out[o] = point[0] / point[2];
+        out[o + 1] = point[1] / point[2];
+    }
+
+    /**
+     * The k + 1 points {@code first, first + step, …} as polylines: all of them, or (with
+     * {@code kept}) each run of at least two kept points.
+     */
+    private void addRuns(double[] grid, boolean[] kept, int k, int first, int step) {
+        if (kept == null) {
+            curves.add(line(grid, k, first, step));
+            return;
+        }
+        int t = 0;
+        while (t <= k) {
+            while (t <= k && !kept[first + t * step]) {
+                t++;
+            }
+            int start = t;
+            while (t <= k && kept[first + t * step]) {
+                t++;
+            }
+            if (t - start >= 2) {
+                curves.add(line(grid, t - start - 1, first + start * step, step));
+            }
         }
     }
 

@@ -21,6 +21,7 @@ public final class OverlayModel {
     private final AtomicInteger delivering = new AtomicInteger();
     private OverlaySnapshot snapshot = OverlaySnapshot.EMPTY;
     private long builtCount;
+    private Runnable onBuilt = () -> {};
 
     /**
      * @param countChanged runs (UI thread) when a delivered overlay counts other patches or points
@@ -39,8 +40,9 @@ public final class OverlayModel {
         ui.execute(() -> {
             delivering.decrementAndGet();
             OverlayGeometry old = snapshot.geometry();
-            snapshot = new OverlaySnapshot(g, relocate(snapshot.hover(), g), snapshot.selected());
+            snapshot = snapshot.withGeometry(g, relocate(snapshot.hover(), g));
             builtCount++;
+            onBuilt.run();
             repaint.run();
             if (old.pointCount() != g.pointCount() || old.scene() == null
                     || old.scene().patchCount() != g.scene().patchCount()) {
@@ -63,6 +65,9 @@ public final class OverlayModel {
         return null;
     }
 
+    /** Runs {@code r} (UI thread) whenever a built overlay is delivered, before the repaint. */
+    void onBuilt(Runnable r) { onBuilt = r; }
+
     /** Builds the overlay for {@code r} off this thread; the current one stays shown meanwhile. */
     void request(OverlayRequest r) {
         builds.submit(r);
@@ -70,7 +75,7 @@ public final class OverlayModel {
 
     /** Like {@link #request}, but shows nothing until it is built (a newly opened model). */
     void replace(OverlayRequest r) {
-        snapshot = new OverlaySnapshot(OverlayGeometry.EMPTY, null, snapshot.selected());
+        snapshot = snapshot.withGeometry(OverlayGeometry.EMPTY, null);
         repaint.run();
         builds.submit(r);
     }
@@ -88,15 +93,29 @@ public final class OverlayModel {
     /** Sets the hovered handle; repaints when it changed. */
     void hover(Handle h) {
         if (!Objects.equals(h, snapshot.hover())) {
-            snapshot = new OverlaySnapshot(snapshot.geometry(), h, snapshot.selected());
+            snapshot = snapshot.withHover(h);
             repaint.run();
         }
     }
 
     /** The selected points as drawn now; repaints. */
     void selected(List<Handle> handles) {
-        snapshot = new OverlaySnapshot(snapshot.geometry(), snapshot.hover(), handles);
+        snapshot = snapshot.withSelected(handles);
         repaint.run();
+    }
+
+    /** The rubber band being drawn ({@code x0, y0, x1, y1}), or null; repaints. */
+    void band(double[] rectangle) {
+        snapshot = snapshot.withBand(rectangle);
+        repaint.run();
+    }
+
+    /** The light markers to draw (empty: none); repaints when they changed. */
+    void lights(List<LightMarker> markers) {
+        if (!markers.equals(snapshot.lights())) {
+            snapshot = snapshot.withLights(markers);
+            repaint.run();
+        }
     }
 
     /** True while an overlay is being built or on its way to the UI thread (any thread). */

@@ -13,6 +13,13 @@ final class PatchProjection {
     private static final int MAX_POINTS = (BezierPatch.MAX_DEGREE + 1) * (BezierPatch.MAX_DEGREE + 1);
 
     final double[] xy = new double[2 * MAX_POINTS];
+    /**
+     * For a rational patch, its projected homogeneous net: {@code w·x, w·y, w} per point (the
+     * weights carried over to the picture, as the iso-curves of the projected net use them).
+     */
+    final double[] xyw = new double[3 * MAX_POINTS];
+    /** True when the last projected patch is rational ({@link #xyw} filled). */
+    boolean rational;
     final double[] depth = new double[MAX_POINTS];
     private final double[] net = new double[3 * MAX_POINTS];
     private final double[] out = new double[3];
@@ -39,6 +46,15 @@ final class PatchProjection {
             maxX = Math.max(maxX, out[0]);
             minY = Math.min(minY, out[1]);
             maxY = Math.max(maxY, out[1]);
+        }
+        rational = patch.isRational();
+        if (rational) {
+            double[] w = patch.weights();
+            for (int k = 0; k < w.length; k++) {
+                xyw[3 * k] = w[k] * xy[2 * k];
+                xyw[3 * k + 1] = w[k] * xy[2 * k + 1];
+                xyw[3 * k + 2] = w[k];
+            }
         }
         return true;
     }

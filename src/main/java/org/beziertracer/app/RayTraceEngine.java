@@ -29,8 +29,9 @@ import org.beziertracer.render.RenderSession;
  * that arrive while a snapshot is being prepared replace each other and only the latest is
  * rendered.
  *
- * <p><b>Snapshots.</b> {@link SnapshotCache}: the same {@link SceneIntersector} for a camera or
- * shading change, {@link SceneIntersector#withPatch} for a dragged point, a full build otherwise.
+ * <p><b>Snapshots.</b> {@link SnapshotCache}: the same {@link SceneIntersector} for a camera, light
+ * or shading change (the request's lights go into the job, not the scene),
+ * {@link SceneIntersector#withPatches} for a dragged point, a full build otherwise.
  *
  * <p><b>Sink.</b> Tiles of the newest generation are copied into the request's {@link Picture} on
  * the worker threads; nothing here touches a window.
@@ -102,7 +103,7 @@ public final class RayTraceEngine implements PictureEngine {
         try {
             RenderRequest r = n.request();
             long t0 = System.nanoTime();
-            SceneIntersector snapshot = snapshots.prepare(r.scene(), r.light(), r.intersect());
+            SceneIntersector snapshot = snapshots.prepare(r.scene(), r.intersect());
             prepMillis = (System.nanoTime() - t0) / 1e6;
             RenderJob job = r.job(snapshot);
             session.cancel();
@@ -125,11 +126,11 @@ public final class RayTraceEngine implements PictureEngine {
     }
 
     /** What must match for two frame times to be comparable: everything but the BVH switch. */
-    private record TimingKey(Scene scene, LightPlacement light, CameraSpec camera, RenderSettings settings,
-                             IntersectOptions intersect) {
+    private record TimingKey(Scene scene, java.util.List<org.beziertracer.model.PointLight> lights, CameraSpec camera,
+                             RenderSettings settings, IntersectOptions intersect) {
         static TimingKey of(RenderRequest r) {
             RenderSettings s = r.settings();
-            return new TimingKey(r.scene(), r.light(), r.camera(), new RenderSettings(s.width(), s.height(), s.spp(),
+            return new TimingKey(r.scene(), r.lights(), r.camera(), new RenderSettings(s.width(), s.height(), s.spp(),
                     s.sampler(), s.method(), true, s.shading(), s.checker(), s.shadows(), s.maxDepth()),
                     r.intersect().withBvh(true));
         }

@@ -43,12 +43,12 @@ public final class RenderChoices {
 
     /**
      * {@code s} with what a scene file sets taken over: method, BVH, shading, checker, shadows,
-     * depth and samples (snapped to the offered choices); the light goes back to the scene's own.
-     * The file's strings are parsed here, once.
+     * depth and samples (snapped to the offered choices). The file's strings are parsed here, once.
+     * (The light is chosen by {@link #lightFor}.)
      */
     public static Settings fromScene(Settings s, RenderSettings file) {
         ShadingMode shading = ShadingMode.parse(file.shading());
-        Settings out = s.with(Method.parse(file.method())).with(LightPlacement.SCENE)
+        Settings out = s.with(Method.parse(file.method()))
                 .with(Toggle.BVH, file.bvh())
                 .with(Toggle.NORMALS, shading == ShadingMode.NORMALS)
                 .with(Toggle.PHONG, shading != ShadingMode.FLAT)
@@ -57,5 +57,17 @@ public final class RenderChoices {
                 .with(Toggle.REFLECTIONS, file.maxDepth() > 0)
                 .with(Toggle.SUPER_SAMPLING, file.spp() > 1);
         return file.spp() > 1 ? out.with(Level.SAMPLES_PER_PIXEL, Level.SAMPLES_PER_PIXEL.snap(file.spp())) : out;
+    }
+
+    /**
+     * {@code s} with the light for a newly opened scene: a scene with lights of its own is lit by
+     * them; one without keeps the chosen placement, unless that was the scene's lights, which then
+     * gives way to the default light (above left of the eye).
+     */
+    public static Settings lightFor(Settings s, boolean sceneHasLights) {
+        if (sceneHasLights) {
+            return s.light() == LightPlacement.SCENE ? s : s.with(LightPlacement.SCENE);
+        }
+        return s.light() == LightPlacement.SCENE ? s.with(Settings.defaults().light()) : s;
     }
 }

@@ -1,8 +1,11 @@
 package org.beziertracer.app;
 
+import java.util.List;
+
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.CameraSpec;
+import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.render.Camera;
@@ -15,28 +18,29 @@ import org.beziertracer.render.RenderOptions;
  * thread.
  *
  * @param scene     the edited scene
- * @param light     where the light goes ({@link LightPlacement#apply}, on the engine's thread)
+ * @param lights    the lights to shade with ({@link LightRig#lights}), or null for the scene's own
  * @param camera    the view
  * @param settings  size in device pixels, samples, shading, checker, shadows, depth
  * @param intersect method, BVH switch and tessellation, typed
  * @param options   passes per displayed frame and tessellation
  * @param target    the picture to paint into; its size equals the settings' size
  */
-public record RenderRequest(Scene scene, LightPlacement light, CameraSpec camera, RenderSettings settings,
+public record RenderRequest(Scene scene, List<PointLight> lights, CameraSpec camera, RenderSettings settings,
                             IntersectOptions intersect, RenderOptions options, Picture target) {
 
-    /** The request for {@code s} with everything taken from the app's settings. */
-    public static RenderRequest of(Scene scene, CameraSpec camera, Settings s, Picture target) {
-        return new RenderRequest(scene, s.light(), camera, RenderChoices.renderSettings(s, target.width(), target.height()),
-                RenderChoices.intersectOptions(s), RenderChoices.renderOptions(s), target);
+    /** The request for {@code s} with everything taken from the app's settings; {@code framing} places a fixed light. */
+    public static RenderRequest of(Scene scene, CameraSpec camera, Framing framing, Settings s, Picture target) {
+        return new RenderRequest(scene, LightRig.lights(s, camera, framing), camera,
+                RenderChoices.renderSettings(s, target.width(), target.height()), RenderChoices.intersectOptions(s),
+                RenderChoices.renderOptions(s), target);
     }
 
     /**
-     * The render job of this request over {@code snapshot}, the {@link #scene} with its
-     * {@link #light} placed, intersected with {@link #intersect} (the engine's snapshot, or a fresh
-     * build when a test renders the same request from scratch).
+     * The render job of this request over {@code snapshot}, the {@link #scene} intersected with
+     * {@link #intersect} (the engine's snapshot, or a fresh build when a test renders the same
+     * request from scratch), shaded with the request's {@link #lights}.
      */
     public RenderJob job(SceneIntersector snapshot) {
-        return new RenderJob(snapshot, new Camera(camera), settings, options);
+        return new RenderJob(snapshot, new Camera(camera), settings, options, lights);
     }
 }

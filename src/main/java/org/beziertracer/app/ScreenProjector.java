@@ -89,4 +89,26 @@ public final class ScreenProjector {
         double t = p.sub(ray[0]).dot(f) / denom;
         return ray[0].add(ray[1].scale(t));
     }
+
+    /**
+     * The point of the line through {@code p} along the unit vector {@code axis} nearest to the ray
+     * through pixel {@code (x, y)} — where a point dragged along that axis goes; {@code p} itself
+     * when the axis points (almost) along the ray.
+     */
+    public Vec3 onLine(double x, double y, Vec3 p, Vec3 axis) {
+        Vec3[] ray = ray(x, y);
+        Vec3 w = ray[0].sub(p);
+        double b = ray[1].dot(axis), d = ray[1].dot(w), e = axis.dot(w);
+        double denom = 1 - b * b;
+        if (denom < 1e-9) {
+            return p;
+        }
+        return p.add(axis.scale((e - b * d) / denom));
+    }
+
+    /** The unit vector of the screen's x axis (to the right) in the scene. */
+    public Vec3 right() { return r; }
+
+    /** The unit vector of the screen's y axis (up) in the scene. */
+    public Vec3 up() { return u; }
 }

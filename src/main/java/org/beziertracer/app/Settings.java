@@ -5,11 +5,13 @@ import java.util.EnumSet;
 import java.util.Objects;
 
 import org.beziertracer.intersect.Method;
+import org.beziertracer.math.Vec3;
 import org.beziertracer.render.ShadingMode;
 
 /**
  * The toolbox state as one immutable value: which {@link Toggle}s are on, the value of every
- * {@link Level}, the intersection {@link Method} and the {@link LightPlacement}. Typed once (no
+ * {@link Level}, the intersection {@link Method}, the {@link LightPlacement} and — once the light
+ * was dragged — its offset from the placement's preset position. Typed once (no
  * strings); {@link RenderChoices} turns it into what the renderer takes. Every change makes a new
  * value, so a snapshot can be handed to other threads.
  */
@@ -19,12 +21,14 @@ public final class Settings {
     private final int[] levels;
     private final Method method;
     private final LightPlacement light;
+    private final Vec3 lightOffset;
 
-    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light) {
+    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset) {
         this.on = on;
         this.levels = levels;
         this.method = Objects.requireNonNull(method);
         this.light = Objects.requireNonNull(light);
+        this.lightOffset = lightOffset;
     }
 
     /** The settings of a fresh app. */
@@ -39,7 +43,7 @@ public final class Settings {
         for (Level l : Level.values()) {
             levels[l.ordinal()] = l.initial();
         }
-        return new Settings(on, levels, Method.CLIPPING, LightPlacement.SCENE);
+        return new Settings(on, levels, Method.CLIPPING, LightPlacement.EYE_ABOVE_LEFT, null);
     }
 
     public boolean on(Toggle t) { return on.contains(t); }
@@ -50,6 +54,12 @@ public final class Settings {
 
     public LightPlacement light() { return light; }
 
+    /** Where the light is, in the units of its placement's {@link LightPlacement#frame() frame}: dragged there, or the preset. */
+    public Vec3 lightOffset() { return lightOffset != null ? lightOffset : light.preset(); }
+
+    /** True when the light was dragged away from its preset position. */
+    public boolean lightMoved() { return lightOffset != null; }
+
     public Settings with(Toggle t, boolean value) {
         EnumSet<Toggle> copy = EnumSet.copyOf(on);
         if (value) {
@@ -57,19 +67,25 @@ public final class Settings {
         } else {
             copy.remove(t);
         }
-        return new Settings(copy, levels, method, light);
+        return new Settings(copy, levels, method, light, lightOffset);
     }
 
     /** @throws IllegalArgumentException one line, when {@code value} is outside the level's range */
     public Settings with(Level l, int value) {
         int[] copy = levels.clone();
         copy[l.ordinal()] = l.check(value);
-        return new Settings(EnumSet.copyOf(on), copy, method, light);
+        return new Settings(EnumSet.copyOf(on), copy, method, light, lightOffset);
     }
 
-    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light); }
+    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light, lightOffset); }
 
-    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p); }
+    /** Another placement, its light at the preset position. */
+    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p, null); }
+
+    /** The light dragged to {@code offset} (in the placement's frame; ignored for {@link LightPlacement#SCENE}). */
+    public Settings withLightOffset(Vec3 offset) {
+        return new Settings(EnumSet.copyOf(on), levels, method, light, light.preset() == null ? null : offset);
+    }
 
     /** Horizontal field of view of the {@link Level#PERSPECTIVE} position. */
     public double fovDegrees() {
@@ -119,16 +135,16 @@ public final class Settings {
     @Override
     public boolean equals(Object o) {
         return o instanceof Settings s && s.on.equals(on) && Arrays.equals(s.levels, levels) && s.method == method
-                && s.light == light;
+                && s.light == light && Objects.equals(s.lightOffset, lightOffset);
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(on, Arrays.hashCode(levels), method, light);
+        return Objects.hash(on, Arrays.hashCode(levels), method, light, lightOffset);
     }
 
     @Override
     public String toString() {
-        return "Settings" + on + Arrays.toString(levels) + method + "/" + light;
+        return "Settings" + on + Arrays.toString(levels) + method + "/" + light + (lightOffset == null ? "" : lightOffset);
     }
 }

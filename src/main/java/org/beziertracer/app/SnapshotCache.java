@@ -5,30 +5,27 @@ import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.Scene;
 
 /**
- * The render snapshot of the newest request, kept from one request to the next: the scene with its
- * light placed, and the {@link SceneIntersector}, reused when only the camera or shading changed,
- * patched when one patch changed (a dragged point: {@link SceneIntersector#withPatch} re-splits that
- * patch and refits the BVH), rebuilt otherwise. Confined to the engine's prep thread.
+ * The render snapshot of the newest request, kept from one request to the next: the
+ * {@link SceneIntersector}, reused when only the camera, the light or the shading changed, patched
+ * when a few patches changed (a dragged point, maybe shared by several patches:
+ * {@link SceneIntersector#withPatches} re-splits those patches and refits the BVH once), rebuilt
+ * otherwise. Finding what changed compares the patch lists once, by identity (an edit shares the
+ * patches it did not touch). Confined to the engine's prep thread.
  */
 final class SnapshotCache {
 
-    private Scene edited;
-    private LightPlacement light;
-    private Scene lit;
+    /** Most changed patches that are re-split into the old snapshot, as a share of all patches (more: rebuild). */
+    static final int PATCH_SHARE = 8;
+
     private SceneIntersector snapshot;
 
-    /** The snapshot for {@code scene} lit by {@code placement}, with options {@code io}. */
-    SceneIntersector prepare(Scene scene, LightPlacement placement, IntersectOptions io) {
-        if (scene != edited || placement != light) {
-            lit = placement.apply(scene);
-            edited = scene;
-            light = placement;
-        }
-        snapshot = update(snapshot, lit, io);
+    /** The snapshot for {@code scene} with options {@code io}. */
+    SceneIntersector prepare(Scene scene, IntersectOptions io) {
+        snapshot = update(snapshot, scene, io);
         return snapshot;
     }
 
-    /** The snapshot for {@code scene}: reused, patched (one patch changed) or rebuilt. */
+    /** The snapshot for {@code scene}: reused, patched (a few patches changed) or rebuilt. */
     static SceneIntersector update(SceneIntersector old, Scene scene, IntersectOptions io) {
         if (old == null || !old.options().equals(io)) {
             return SceneIntersector.build(scene, io);
@@ -42,18 +39,20 @@ final class SnapshotCache {
                 || !prev.materials().equals(scene.materials()) || !prev.camera().equals(scene.camera())) {
             return SceneIntersector.build(scene, io);
         }
-        int changed = -1;
+        int limit = Math.max(4, scene.patchCount() / PATCH_SHARE);
+        int[] changed = new int[limit];
+        int count = 0;
         for (int k = 0; k < scene.patchCount(); k++) {
             if (prev.patchMaterial(k) != scene.patchMaterial(k)) {
                 return SceneIntersector.build(scene, io);
             }
-            if (!prev.patches().get(k).equals(scene.patches().get(k))) {
-                if (changed >= 0) {
+            if (prev.patches().get(k) != scene.patches().get(k) && !prev.patches().get(k).equals(scene.patches().get(k))) {
+                if (count == limit) {
                     return SceneIntersector.build(scene, io);
                 }
-                changed = k;
+                changed[count++] = k;
             }
         }
-        return changed < 0 ? old : old.withPatch(changed, scene.patches().get(changed));
+        return count == 0 ? old : old.withPatches(scene, java.util.Arrays.copyOf(changed, count));
     }
 }

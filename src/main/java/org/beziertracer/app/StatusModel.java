@@ -16,6 +16,7 @@ public final class StatusModel {
     private final Runnable onChange;
     private final AtomicReference<RenderStatus> pending = new AtomicReference<>();
     private final AtomicBoolean posted = new AtomicBoolean();
+    private final AtomicBoolean progressPosted = new AtomicBoolean();
     private RenderStatus render;
     private String message = "";
     private Task task;
@@ -53,9 +54,29 @@ public final class StatusModel {
 
     void task(Task t) {
         task = t;
+        if (t != null) {
+            t.onProgress(this::progressed);
+        }
         onChange.run();
     }
 
+    /** {@code t} ended: the status bar stops showing it (unless another task took its place). */
+    void endTask(Task t) {
+        if (task == t) {
+            task(null);
+        }
+    }
+
+    /** A task's progress changed (its own thread): one refresh on the UI thread per burst. */
+    private void progressed() {
+        if (progressPosted.compareAndSet(false, true)) {
+            ui.execute(() -> {
+                progressPosted.set(false);
+                onChange.run();
+            });
+        }
+    }
+
     /** True while a report is on its way to the UI thread (any thread). */
-    boolean busy() { return posted.get(); }
+    boolean busy() { return posted.get() || progressPosted.get(); }
 }

@@ -1,14 +1,17 @@
 package org.beziertracer.app;
 
 /**
- * A background job the user may cancel (opening a model). {@link #cancel} marks it cancelled and
- * interrupts its thread, so a read in progress stops at once (file channels close on interrupt);
- * its result, if any, is dropped. Thread-safe.
+ * A background job the user may cancel (opening a model, exporting an image). {@link #cancel} marks
+ * it cancelled and interrupts its thread, so a read or a render in progress stops at once (file
+ * channels close on interrupt); its result, if any, is dropped. A job that knows how far it got
+ * reports it with {@link #progress(double)} (the status bar's bar then fills). Thread-safe.
  */
 public final class Task {
 
     private final String label;
     private volatile boolean cancelled;
+    private volatile double progress = -1;
+    private volatile Runnable onProgress = () -> {};
     private Thread runner;
 
     public Task(String label) {
@@ -19,6 +22,18 @@ public final class Task {
     public String label() { return label; }
 
     public boolean isCancelled() { return cancelled; }
+
+    /** How far the job got, 0..1, or -1 when it cannot tell. */
+    public double progress() { return progress; }
+
+    /** Any thread: the job got this far (0..1). */
+    public void progress(double fraction) {
+        progress = Math.max(0, Math.min(1, fraction));
+        onProgress.run();
+    }
+
+    /** Where progress reports go (the status bar's refresh; called on the job's thread). */
+    void onProgress(Runnable r) { onProgress = r; }
 
     /** Cancels the job; a finished job is not affected. */
     public synchronized void cancel() {

@@ -26,7 +26,13 @@ public enum Toggle {
     /** Pre-split patches in a sub-patch BVH; off: whole patches in a list. */
     BVH(true),
     /** Every patch as a uniform K×K triangle mesh ({@link Level#TESSELLATION}) instead of the exact surface. */
-    TESSELLATED(false);
+    TESSELLATED(false),
+    /** "Keep tangent continuity": moving a point keeps the cross-border rows straight ({@link SmoothMove}). */
+    SMOOTH_JOINS(false),
+    /** The light drawn as a marker in the view, where it can be dragged ({@link LightRig}). */
+    SHOW_LIGHT(false),
+    /** The inspector panel: the selected points' patch, indices and coordinates, editable. */
+    INSPECTOR(true);
 
     private final boolean initial;
 

@@ -24,4 +24,10 @@ public interface UserDialogs {
 
     /** Shows an error: a title and the one-line message. */
     void error(String title, String message);
+
+    /**
+     * File → Export Image…: the size, samples per pixel and sampler, starting from {@code offer};
+     * null when cancelled.
+     */
+    ExportOptions exportOptions(ExportOptions offer);
 }

@@ -1,17 +1,25 @@
 package org.beziertracer.cli;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.function.Consumer;
+
+import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.Echo;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
- * The top-level {@code beziertracer} command: dispatches to the sub-commands, or with no
- * arguments launches the desktop app.
+ * The top-level {@code beziertracer} command: dispatches to the sub-commands; with no arguments
+ * launches the desktop app, and with one argument that names no command — a model or scene file,
+ * or a built-in name — launches the desktop app on it.
  */
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, version = "Bézier Tracer 0.1.0",
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
-                + "With no command, opens the desktop app.",
+                + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
         subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class})
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
 
@@ -21,22 +29,52 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     /** Returned by {@link #run(String[], Runnable)} when the desktop app is open: do not exit. */
     public static final int APP_RUNNING = -1;
 
+    /** Exit code for a model argument that names no file and no built-in model. */
+    public static final int EXIT_USAGE = 2;
+
     /** Runs the command line (without a desktop app) and returns the process exit code. */
     public static int run(String[] args) {
         return run(args, null);
     }
 
     /**
-     * Runs the command line and returns the process exit code; with no arguments opens the
-     * desktop app through {@code desktopApp} (supplied by {@code org.beziertracer.Main}, as this
-     * layer may not import {@code ui}) and returns {@link #APP_RUNNING}.
+     * Runs the command line and returns the process exit code. With no arguments, or with one
+     * that is not a command or an option (a model file or a built-in name), opens the desktop app
+     * through {@code desktopApp} — which takes the model to open, or null — and returns
+     * {@link #APP_RUNNING}; {@code desktopApp} is supplied by {@code org.beziertracer.Main}, as
+     * this layer may not import {@code ui}.
      */
-    public static int run(String[] args, Runnable desktopApp) {
+    public static int run(String[] args, Consumer<String> desktopApp) {
         if (args.length == 0) {
-            return launchApp(desktopApp);
+            return launchApp(desktopApp, null);
         }
         CommandLine cl = commandLine();
+        if (args.length == 1 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
+            String problem = modelProblem(args[0]);
+            if (problem != null) {
+                cl.getErr().println("beziertracer: " + problem);
+                cl.getErr().flush();
+                return EXIT_USAGE;
+            }
+            return launchApp(desktopApp, args[0]);
+        }
         return execute(cl, args);
+    }
+
+    /** Why {@code arg} cannot be opened in the app (one line), or null when it names a file or a built-in. */
+    static String modelProblem(String arg) {
+        if (BuiltIns.find(arg).isPresent()) {
+            return null;
+        }
+        try {
+            if (Files.isRegularFile(Path.of(arg))) {
+                return null;
+            }
+        } catch (InvalidPathException e) {
+            // not a path on this system: reported below
+        }
+        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render; "
+                + "built-ins: " + String.join(", ", BuiltIns.names()) + ")";
     }
 
     /**
@@ -78,7 +116,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         return cl;
     }
 
-    static int launchApp(Runnable desktopApp) {
+    static int launchApp(Consumer<String> desktopApp, String model) {
         if (!DisplayCheck.displayReachable()) {
             System.err.println(DisplayCheck.NO_DISPLAY);
             return EXIT_NO_DISPLAY;
@@ -88,7 +126,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
                     + "use the command line: java -jar target/beziertracer.jar --help");
             return EXIT_NO_DISPLAY;
         }
-        desktopApp.run();
+        desktopApp.accept(model);
         return APP_RUNNING;
     }
 

@@ -19,22 +19,32 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the control-point bounding
- * box and, for a scene, its planes, spheres and lights.
+ * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the rational and trimmed
+ * patches and the free-form surfaces they came from ({@link SurfaceSummary}), the control-point
+ * bounding box and, for a scene, its planes, spheres and lights.
  * <pre>
  * model: teapot-room
  * patches: 32
  * degrees: 3x3 (32)
+ * rational patches: 0
+ * trimmed patches: 0
+ * surfaces: 0
  * control-point bounds: x[-120,141] y[-80,80] z[0,120]
  * objects: 1 plane, 2 spheres, 1 light
+ * sub-patches: 1566
+ * bvh: 3131 nodes, depth 14
+ * build: 12.3 ms (split + BVH)
+ * acceleration data: 1,234,567 bytes (1.2 MB, 38,580 a patch): sub-patches 1,100,000, BVH 134,567
  * </pre>
  * Degrees are listed as {@code nxm (count)}, sorted by u then v degree; the objects line appears
- * when there are any. Anything {@link SceneFiles#load} opens is accepted. A file that cannot be
+ * when there are any. The last line is the heap the acceleration data holds (the sub-patch table
+ * and the BVH of the default settings), not counting the model's patches. Anything {@link SceneFiles#load} opens is accepted. A file that cannot be
  * read ends the command with one error line and exit code 1 (see {@link CliErrors}).
  */
 @Command(name = "info", mixinStandardHelpOptions = true,
-        description = "Prints patch count, degrees, control-point bounding box, sub-patch and BVH figures of a "
-                + "model or scene.")
+        description = "Prints patch count, degrees, rational and trimmed patches, free-form surfaces and their "
+                + "Bézier pieces, control-point bounding box, sub-patch and BVH figures (with the bytes they hold) "
+                + "of a model or scene.")
 final class InfoCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
@@ -50,6 +60,7 @@ final class InfoCommand implements Callable<Integer> {
         out.println("model: " + model);
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
+        SurfaceSummary.lines(scene).forEach(out::println);
         out.println("control-point bounds: " + (scene.patchCount() == 0 ? "none" : scene.controlBounds()));
         if (!scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.lights().isEmpty()) {
             out.println("objects: " + count(scene.planes().size(), "plane") + ", "
@@ -60,8 +71,20 @@ final class InfoCommand implements Callable<Integer> {
         out.println("sub-patches: " + si.subPatchCount());
         out.println("bvh: " + si.nodeCount() + " nodes, depth " + si.depth());
         out.println(String.format(java.util.Locale.ROOT, "build: %.1f ms (split + BVH)", si.buildMillis()));
+        out.println(heldLine(si, scene.patchCount()));
         out.flush();
         return 0;
+    }
+
+    /**
+     * {@code acceleration data: 1,234,567 bytes (1.2 MB, 38,580 a patch): sub-patches 1,100,000,
+     * BVH 134,567}: the heap the built structures hold, not counting the model's own patches.
+     */
+    static String heldLine(SceneIntersector si, int patchCount) {
+        long leaves = si.leafBytes(), nodes = si.accelBytes(), total = leaves + nodes;
+        return String.format(java.util.Locale.ROOT, "acceleration data: %,d bytes (%.1f MB, %,d a patch): "
+                + "sub-patches %,d, BVH %,d", total, total / (1024.0 * 1024.0),
+                patchCount == 0 ? 0 : total / patchCount, leaves, nodes);
     }
 
     private static String count(int n, String what) {

@@ -115,27 +115,10 @@ final class TraceCommand implements Callable<Integer> {
                         si.surfacePoint(ctx, hit, sp);
                     }
                     traceNanos += System.nanoTime() - t0;
-                    line.setLength(0);
-                    line.append(rays).append(',');
                     if (found) {
                         hits++;
-                        line.append("1,").append(hit.t).append(',');
-                        if (hit.kind == Hit.PATCH) {
-                            line.append(hit.index);
-                        }
-                        line.append(',')
-                                .append(hit.u).append(',').append(hit.v).append(',')
-                                .append(sp.px).append(',').append(sp.py).append(',').append(sp.pz).append(',')
-                                .append(sp.nx).append(',').append(sp.ny).append(',').append(sp.nz);
-                    } else {
-                        line.append("0,,,,,,,,,,");
                     }
-                    if (objects) {
-                        line.append(',');
-                        if (found) {
-                            line.append(KINDS[hit.kind]).append(' ').append(hit.index);
-                        }
-                    }
+                    csvLine(line, rays, found ? hit : null, sp, objects);
                     line.append('\n');
                     out.append(line);
                     rays++;
@@ -153,6 +136,30 @@ final class TraceCommand implements Callable<Integer> {
                     ctx.solverCalls / Math.max(1.0, rays), ctx.clipIterations / Math.max(1.0, rays)));
         }
         return 0;
+    }
+
+    /** One CSV line (without its newline) for ray number {@code ray}: its hit, or empty fields for a miss. */
+    private static void csvLine(StringBuilder line, long ray, Hit hit, SurfacePoint sp, boolean objects) {
+        line.setLength(0);
+        line.append(ray).append(',');
+        if (hit != null) {
+            line.append("1,").append(hit.t).append(',');
+            if (hit.kind == Hit.PATCH) {
+                line.append(hit.index);
+            }
+            line.append(',')
+                    .append(hit.u).append(',').append(hit.v).append(',')
+                    .append(sp.px).append(',').append(sp.py).append(',').append(sp.pz).append(',')
+                    .append(sp.nx).append(',').append(sp.ny).append(',').append(sp.nz);
+        } else {
+            line.append("0,,,,,,,,,,");
+        }
+        if (objects) {
+            line.append(',');
+            if (hit != null) {
+                line.append(KINDS[hit.kind]).append(' ').append(hit.index);
+            }
+        }
     }
 
     private Writer openOutput() throws IOException {

@@ -98,7 +98,7 @@ final class DeCasteljau3 {
                                         double[] out, int outOff, double[] scratch, int scratchOff) {
         if (n == 3 && m == 3) {
             for (int c = 0; c < 3; c++) {
-                bicubicWithDerivatives(net, off + c, u, v, out, outOff + c);
+                bicubicWithDerivatives(net, off + c, 3, u, v, out, outOff + c, 3);
             }
             return;
         }
@@ -158,34 +158,48 @@ final class DeCasteljau3 {
     }
 
     /**
-     * One coordinate of a bicubic net (points 3 doubles apart, rows 12) at {@code (u,v)}: value,
-     * {@code ∂/∂u} and {@code ∂/∂v} into {@code out[o]}, {@code out[o+3]}, {@code out[o+6]}; the
-     * same operations as the generic path, on locals.
+     * {@link DeCasteljau#evaluateWithDerivatives(double[], int, int, int, int, double, double,
+     * double[], int, double[], int)} of a bicubic homogeneous net ({@code dim = 4}): the value and
+     * both derivatives of each of the four coordinates, in the generic layout, with the same
+     * operations on locals.
      */
-    private static void bicubicWithDerivatives(double[] p, int o, double u, double v, double[] out, int oo) {
+    static void bicubic4WithDerivatives(double[] net, int off, double u, double v, double[] out, int outOff) {
+        for (int c = 0; c < 4; c++) {
+            bicubicWithDerivatives(net, off + c, 4, u, v, out, outOff + c, 4);
+        }
+    }
+
+    /**
+     * One coordinate of a bicubic net (points {@code ps} doubles apart, rows {@code 4·ps}) at
+     * {@code (u,v)}: value, {@code ∂/∂u} and {@code ∂/∂v} into {@code out[oo]},
+     * {@code out[oo+os]}, {@code out[oo+2·os]}; the same operations as the generic path, on locals.
+     */
+    private static void bicubicWithDerivatives(double[] p, int o, int ps, double u, double v, double[] out, int oo,
+                                               int os) {
+        int p1 = ps, p2 = 2 * ps, p3 = 3 * ps, rs = 4 * ps;
         double su = 1 - u;
         // Every row in u down to level 2: a_j = b_0^2, b_j = b_1^2 of row j
         double a0, a1, a2, a3, b0, b1, b2, b3;
         {
-            double l0 = su * p[o] + u * p[o + 3], l1 = su * p[o + 3] + u * p[o + 6], l2 = su * p[o + 6] + u * p[o + 9];
+            double l0 = su * p[o] + u * p[o + p1], l1 = su * p[o + p1] + u * p[o + p2], l2 = su * p[o + p2] + u * p[o + p3];
             a0 = su * l0 + u * l1;
             b0 = su * l1 + u * l2;
         }
         {
-            int r = o + 12;
-            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            int r = o + rs;
+            double l0 = su * p[r] + u * p[r + p1], l1 = su * p[r + p1] + u * p[r + p2], l2 = su * p[r + p2] + u * p[r + p3];
             a1 = su * l0 + u * l1;
             b1 = su * l1 + u * l2;
         }
         {
-            int r = o + 24;
-            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            int r = o + 2 * rs;
+            double l0 = su * p[r] + u * p[r + p1], l1 = su * p[r + p1] + u * p[r + p2], l2 = su * p[r + p2] + u * p[r + p3];
             a2 = su * l0 + u * l1;
             b2 = su * l1 + u * l2;
         }
         {
-            int r = o + 36;
-            double l0 = su * p[r] + u * p[r + 3], l1 = su * p[r + 3] + u * p[r + 6], l2 = su * p[r + 6] + u * p[r + 9];
+            int r = o + 3 * rs;
+            double l0 = su * p[r] + u * p[r + p1], l1 = su * p[r + p1] + u * p[r + p2], l2 = su * p[r + p2] + u * p[r + p3];
             a3 = su * l0 + u * l1;
             b3 = su * l1 + u * l2;
         }
@@ -198,7 +212,7 @@ final class DeCasteljau3 {
         double lo = sv * b00 + v * b01;
         double hi = sv * b10 + v * b11;
         out[oo] = su * lo + u * hi;
-        out[oo + 3] = 3 * (hi - lo);
-        out[oo + 6] = 3 * (su * (b01 - b00) + u * (b11 - b10));
+        out[oo + os] = 3 * (hi - lo);
+        out[oo + 2 * os] = 3 * (su * (b01 - b00) + u * (b11 - b10));
     }
 }

@@ -13,22 +13,25 @@ public final class DegreeElevation {
 
     private DegreeElevation() {}
 
-    /** The patch with degree in u raised by one; throws if it is already {@link BezierPatch#MAX_DEGREE}. */
+    /**
+     * The patch with degree in u raised by one (a rational patch through its homogeneous net; the
+     * domain is kept, the origin dropped); throws if it is already {@link BezierPatch#MAX_DEGREE}.
+     */
     public static BezierPatch elevateU(BezierPatch p) {
-        int n = p.degreeU(), m = p.degreeV();
+        int n = p.degreeU(), m = p.degreeV(), dim = Patches.dim(p);
         BezierPatch.checkDegree("u", n + 1);
-        double[] dest = new double[(n + 2) * (m + 1) * 3];
-        elevateU(p.copyNet(), 0, n, m, 3, dest, 0);
-        return new BezierPatch(n + 1, m, dest);
+        double[] dest = new double[(n + 2) * (m + 1) * dim];
+        elevateU(Patches.workingNet(p), 0, n, m, dim, dest, 0);
+        return BezierPatch.fromNet(n + 1, m, dest, dim, p.domain(), null);
     }
 
-    /** The patch with degree in v raised by one; throws if it is already {@link BezierPatch#MAX_DEGREE}. */
+    /** The patch with degree in v raised by one; as {@link #elevateU}. */
     public static BezierPatch elevateV(BezierPatch p) {
-        int n = p.degreeU(), m = p.degreeV();
+        int n = p.degreeU(), m = p.degreeV(), dim = Patches.dim(p);
         BezierPatch.checkDegree("v", m + 1);
-        double[] dest = new double[(n + 1) * (m + 2) * 3];
-        elevateV(p.copyNet(), 0, n, m, 3, dest, 0);
-        return new BezierPatch(n, m + 1, dest);
+        double[] dest = new double[(n + 1) * (m + 2) * dim];
+        elevateV(Patches.workingNet(p), 0, n, m, dim, dest, 0);
+        return BezierPatch.fromNet(n, m + 1, dest, dim, p.domain(), null);
     }
 
     /**

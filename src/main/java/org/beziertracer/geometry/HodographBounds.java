@@ -37,6 +37,65 @@ final class HodographBounds {
     }
 
     /**
+     * The same data for a rational net: Euclidean points {@code xyz[off..]} and their weights
+     * {@code w[wOff..]}. The first derivative of the rational patch {@code S = A/W} (homogeneous
+     * parts {@code A = Σ w P B}, {@code W = Σ w B}) is {@code S_u = N_u / W} with
+     * {@code N_u = (A_u·W − A·W_u) / W}. The single-root test only asks whether
+     * {@code F1u(ξ1)·F2v(ξ2) − F1v(ξ1)·F2u(ξ2)} can vanish, and dividing the derivatives at
+     * {@code ξ1} and at {@code ξ2} by the positive {@code W} there does not change its sign; so
+     * the balls here bound {@code N_u/n} and {@code N_v/m}. Expanding the products of Bernstein
+     * sums, {@code A_u·W − A·W_u = n·Σ c·V} with non-negative coefficients {@code c} summing to
+     * {@code W} and the vectors {@code V = w_q·(P_q − P_k) − w_p·(P_p − P_k)} for every pair
+     * {@code p, q} of u-neighbours and every point {@code k}; so {@code N_u/n} lies in the convex
+     * hull of those {@code V} (for equal weights they are the polynomial hodograph's differences).
+     * The ball is the one around their box.
+     */
+    static void computeRational(double[] xyz, int off, double[] w, int wOff, int n, int m, double[] out, int o) {
+        double ra = rationalBall(xyz, off, w, wOff, n, m, 1, out, o);
+        double rb = rationalBall(xyz, off, w, wOff, n, m, n + 1, out, o + 3);
+        double la = Math.sqrt(out[o] * out[o] + out[o + 1] * out[o + 1] + out[o + 2] * out[o + 2]);
+        double lb = Math.sqrt(out[o + 3] * out[o + 3] + out[o + 4] * out[o + 4] + out[o + 5] * out[o + 5]);
+        out[o + 6] = ra;
+        out[o + 7] = rb;
+        out[o + 8] = 1e-10 * (la + ra) * (lb + rb);
+    }
+
+    /**
+     * Centre (to {@code out[o..o+3)}) and radius of the ball around the box of the vectors
+     * {@code V} of {@link #computeRational} for neighbours {@code step} apart (1: along u; the
+     * points of a row: along v).
+     */
+    private static double rationalBall(double[] xyz, int off, double[] w, int wOff, int n, int m, int step,
+                                       double[] out, int o) {
+        int row = n + 1, points = (n + 1) * (m + 1);
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0; i <= n; i++) {
+                int p = j * row + i, q = p + step;
+                if ((step == 1 && i == n) || (step != 1 && j == m)) {
+                    continue;
+                }
+                double wp = w[wOff + p], wq = w[wOff + q], d = wq - wp;
+                for (int c = 0; c < 3; c++) {
+                    double a = wq * xyz[off + 3 * q + c] - wp * xyz[off + 3 * p + c];
+                    for (int k = 0; k < points; k++) {
+                        double v = a - d * xyz[off + 3 * k + c];
+                        lo[c] = Math.min(lo[c], v);
+                        hi[c] = Math.max(hi[c], v);
+                    }
+                }
+            }
+        }
+        double r2 = 0;
+        for (int c = 0; c < 3; c++) {
+            out[o + c] = 0.5 * (lo[c] + hi[c]);
+            r2 += 0.25 * (hi[c] - lo[c]) * (hi[c] - lo[c]);
+        }
+        return Math.sqrt(r2);
+    }
+
+    /**
      * Ball around the differences {@code net[p + step] − net[p]} for {@code cols} points per row
      * and {@code rows + 1} rows ({@code rowStride} doubles apart): centre to {@code ab[c..c+3)},
      * returns the radius. With {@code step = 3} and n columns of differences per row this is the

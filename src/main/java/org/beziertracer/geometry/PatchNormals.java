@@ -32,6 +32,12 @@ package org.beziertracer.geometry;
  * <p>If no step gives a regular point (the whole patch is a curve or a point), the normal of
  * the control net's diagonals {@code (P_nm − P_00) × (P_0m − P_n0)} is used, and if that too
  * vanishes, {@code +z}. The result is therefore never NaN and never zero for a finite net.
+ *
+ * <h2>Rational patches</h2>
+ * Every method has a {@code dim} form: {@code dim = 3} is a polynomial net, {@code dim = 4} a
+ * homogeneous rational net ({@link RationalDeCasteljau}), whose derivatives come from the
+ * quotient rule; the degenerate-point method is the same (a sphere's poles are collapsed edges of
+ * its rational patches), the extent and the diagonal normal use the Euclidean points.
  */
 public final class PatchNormals {
 
@@ -53,11 +59,18 @@ public final class PatchNormals {
      */
     public static void unitNormal(double[] net, int off, int n, int m, double u, double v,
                                   double[] out, int outOff, double[] scratch) {
-        double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent(net, off, n, m);
-        if (crossAt(net, off, n, m, u, v, out, outOff, scratch, threshold)) {
+        unitNormal(net, off, n, m, 3, u, v, out, outOff, scratch);
+    }
+
+    /** {@link #unitNormal(double[], int, int, int, double, double, double[], int, double[])} for
+     *  {@code dim = 3} (polynomial) or {@code dim = 4} (homogeneous rational) nets. */
+    public static void unitNormal(double[] net, int off, int n, int m, int dim, double u, double v,
+                                  double[] out, int outOff, double[] scratch) {
+        double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent(net, off, n, m, dim);
+        if (crossAt(net, off, n, m, dim, u, v, out, outOff, scratch, threshold)) {
             return;
         }
-        limitNormal(net, off, n, m, u, v, out, outOff, scratch, threshold);
+        limitNormal(net, off, n, m, dim, u, v, out, outOff, scratch, threshold);
     }
 
     /**
@@ -77,15 +90,21 @@ public final class PatchNormals {
      */
     public static void unitNormal(double[] net, int off, int n, int m, double u, double v, double[] deriv,
                                   double squaredExtent, double[] out, int outOff, double[] scratch) {
+        unitNormal(net, off, n, m, 3, u, v, deriv, squaredExtent, out, outOff, scratch);
+    }
+
+    /** The previous method for {@code dim = 3} (polynomial) or {@code dim = 4} (homogeneous rational) nets. */
+    public static void unitNormal(double[] net, int off, int n, int m, int dim, double u, double v, double[] deriv,
+                                  double squaredExtent, double[] out, int outOff, double[] scratch) {
         double threshold = DEGENERATE_RELATIVE * n * m * squaredExtent;
         double ux = deriv[3], uy = deriv[4], uz = deriv[5];
         double vx = deriv[6], vy = deriv[7], vz = deriv[8];
         if (!store(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx, threshold, out, outOff)) {
-            limitNormal(net, off, n, m, u, v, out, outOff, scratch, threshold);
+            limitNormal(net, off, n, m, dim, u, v, out, outOff, scratch, threshold);
         }
     }
 
-    private static void limitNormal(double[] net, int off, int n, int m, double u, double v,
+    private static void limitNormal(double[] net, int off, int n, int m, int dim, double u, double v,
                                     double[] out, int outOff, double[] scratch, double threshold) {
         // Degenerate: step toward the centre (or, at the centre, toward an interior point)
         double tu = 0.5, tv = 0.5;
@@ -95,31 +114,44 @@ public final class PatchNormals {
         }
         for (double delta : INWARD_STEPS) {
             double su = u + delta * (tu - u), sv = v + delta * (tv - v);
-            if (crossAt(net, off, n, m, su, sv, out, outOff, scratch, threshold)) {
+            if (crossAt(net, off, n, m, dim, su, sv, out, outOff, scratch, threshold)) {
                 return;
             }
         }
-        netNormal(net, off, n, m, out, outOff);
+        netNormal(net, off, n, m, dim, out, outOff);
     }
 
     /**
      * Cross product {@code S_u × S_v} at {@code (u,v)} into {@code out}; normalises it and
      * returns true when its length exceeds {@code threshold} (and is finite), else false.
      */
-    private static boolean crossAt(double[] net, int off, int n, int m, double u, double v,
+    private static boolean crossAt(double[] net, int off, int n, int m, int dim, double u, double v,
                                    double[] out, int outOff, double[] scratch, double threshold) {
-        DeCasteljau.evaluateWithDerivatives(net, off, n, m, 3, u, v, scratch, DERIV, scratch, WORK);
+        if (dim == 4) {
+            RationalDeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, scratch, DERIV, scratch, WORK);
+        } else {
+            DeCasteljau.evaluateWithDerivatives(net, off, n, m, 3, u, v, scratch, DERIV, scratch, WORK);
+        }
         double ux = scratch[3], uy = scratch[4], uz = scratch[5];
         double vx = scratch[6], vy = scratch[7], vz = scratch[8];
         double x = uy * vz - uz * vy, y = uz * vx - ux * vz, z = ux * vy - uy * vx;
         return store(x, y, z, threshold, out, outOff);
     }
 
-    /** Normal of the net's diagonals, else +z. */
+    /** Normal of the net's diagonals ({@code dim} 3), else +z. */
     static void netNormal(double[] net, int off, int n, int m, double[] out, int outOff) {
-        int p00 = off, pn0 = off + 3 * n, p0m = off + 3 * m * (n + 1), pnm = p0m + 3 * n;
-        double ax = net[pnm] - net[p00], ay = net[pnm + 1] - net[p00 + 1], az = net[pnm + 2] - net[p00 + 2];
-        double bx = net[p0m] - net[pn0], by = net[p0m + 1] - net[pn0 + 1], bz = net[p0m + 2] - net[pn0 + 2];
+        netNormal(net, off, n, m, 3, out, outOff);
+    }
+
+    /** Normal of the net's diagonals (Euclidean corners), else +z. */
+    private static void netNormal(double[] net, int off, int n, int m, int dim, double[] out, int outOff) {
+        int p00 = off, pn0 = off + dim * n, p0m = off + dim * m * (n + 1), pnm = p0m + dim * n;
+        double ax = coordinate(net, pnm, dim, 0) - coordinate(net, p00, dim, 0);
+        double ay = coordinate(net, pnm, dim, 1) - coordinate(net, p00, dim, 1);
+        double az = coordinate(net, pnm, dim, 2) - coordinate(net, p00, dim, 2);
+        double bx = coordinate(net, p0m, dim, 0) - coordinate(net, pn0, dim, 0);
+        double by = coordinate(net, p0m, dim, 1) - coordinate(net, pn0, dim, 1);
+        double bz = coordinate(net, p0m, dim, 2) - coordinate(net, pn0, dim, 2);
         if (!store(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, 0, out, outOff)) {
             out[outOff] = 0;
             out[outOff + 1] = 0;
@@ -139,14 +171,24 @@ public final class PatchNormals {
         return true;
     }
 
+    /** Euclidean coordinate {@code c} of the point at {@code net[p]} ({@code dim} 3, or 4 homogeneous). */
+    private static double coordinate(double[] net, int p, int dim, int c) {
+        return dim == 4 ? net[p + c] / net[p + 3] : net[p + c];
+    }
+
     /** Square of the largest extent of the control-point box. */
     public static double squaredExtent(double[] net, int off, int n, int m) {
+        return squaredExtent(net, off, n, m, 3);
+    }
+
+    /** Square of the largest extent of the (Euclidean) control-point box of a {@code dim} 3 or 4 net. */
+    public static double squaredExtent(double[] net, int off, int n, int m, int dim) {
         double ext = 0;
         int count = (n + 1) * (m + 1);
         for (int c = 0; c < 3; c++) {
             double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (int k = 0, p = off + c; k < count; k++, p += 3) {
-                double x = net[p];
+            for (int k = 0, p = off; k < count; k++, p += dim) {
+                double x = coordinate(net, p, dim, c);
                 if (x < lo) lo = x;
                 if (x > hi) hi = x;
             }

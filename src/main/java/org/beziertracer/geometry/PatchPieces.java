@@ -6,12 +6,18 @@ package org.beziertracer.geometry;
  *
  * <ul>
  *   <li>{@code nets}: the control nets one after another, each {@code (n+1)(m+1)*3} doubles in
- *       the {@code BezierPatch} layout (u fastest);</li>
+ *       the {@code BezierPatch} layout (u fastest) — Euclidean points, also for a rational patch;</li>
  *   <li>{@code boxes}: 4 doubles per piece, {@code u0, u1, v0, v1}: its parameter box inside the
- *       parent patch.</li>
+ *       parent patch;</li>
+ *   <li>{@code weights}: null for a polynomial patch, else {@code (n+1)(m+1)} weights per piece,
+ *       in the order of the points;</li>
+ *   <li>{@code trimTest}: null for an untrimmed patch, else per piece whether its hits must be
+ *       tested against the trim loops (pieces wholly inside need not; pieces wholly outside are
+ *       not here at all).</li>
  * </ul>
  */
-public record PatchPieces(int degreeU, int degreeV, int count, double[] nets, double[] boxes) {
+public record PatchPieces(int degreeU, int degreeV, int count, double[] nets, double[] boxes, double[] weights,
+                          boolean[] trimTest) {
     /** Doubles per control net. */
     public int netLength() { return (degreeU + 1) * (degreeV + 1) * 3; }
 }

@@ -4,6 +4,7 @@ import java.util.Arrays;
 
 import org.beziertracer.math.Bounds;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
 
 /**
  * Pre-splits a patch with de Casteljau into sub-patches until each is flat enough for Bézier
@@ -11,74 +12,174 @@ import org.beziertracer.model.BezierPatch;
  * sub-patches and in Tejima, Fujita and Matsuoka, "Direct ray tracing of full-featured
  * subdivision surfaces with Bézier clipping", JCGT 4(1), 2015 (pre-subdivision of patches).
  *
- * <p>Each step halves the parametric direction whose control polygon is longer. Run at build
- * time only (allocates a few arrays per patch, none per halving).
+ * <p>Each step halves the parametric direction whose control polygon is longer. A rational patch
+ * is halved through its homogeneous net ({@link RationalDeCasteljau}); a piece counts as flat
+ * when its Euclidean net is flat and its weights are within {@link #WEIGHT_SPREAD} of each other
+ * (the weights of a piece converge to equal values as it shrinks). A trimmed patch's pieces are
+ * classified against its trim loops ({@link TrimCurves#classify}, on the piece's box in the
+ * surface's parameters grown by {@link #TRIM_MARGIN} on each side, so that hits a solver reports
+ * slightly outside a leaf are covered): a piece wholly outside is dropped, with all its
+ * descendants; a piece wholly inside needs no trim test for its hits; a piece a trim curve crosses
+ * is split on to the depth cap. A piece whose control-box diagonal is below a minimum size is not
+ * halved either (the scene-relative stop that {@link SubPatchTable} sets, so that a model of many
+ * small patches is not split many-fold). Run at build time only (allocates a few arrays per patch,
+ * none per halving).
  */
 public final class PatchSplitter {
     private PatchSplitter() {}
 
+    /** Growth of a piece's parameter box, as a fraction of its size on each side, for trim classification. */
+    static final double TRIM_MARGIN = 0.05;
+    /**
+     * Largest ratio between a rational piece's weights before it is split further: pieces whose
+     * weights vary less have derivatives of steadier length, so the single-root test of
+     * {@link HodographBounds#computeRational} succeeds as often as on polynomial pieces. (On
+     * {@code FreeFormBench}'s rational tiles, 1.1–1.25 cost about the same per ray, 10–25 % less
+     * than no such limit; 1.2 keeps the leaf count moderate.)
+     */
+    static final double WEIGHT_SPREAD = 1.2;
+
     public static PatchPieces split(BezierPatch patch, SplitOptions options) {
+        return split(patch, options, 0);
+    }
+
+    /**
+     * As {@link #split(BezierPatch, SplitOptions)}, and a piece whose control-box diagonal is below
+     * {@code minSize} (model units) is not halved.
+     */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, double minSize) {
+        return split(patch, options, patch.trim() == null ? null : TrimCurves.of(patch.trim()), minSize);
+    }
+
+    /** As {@link #split(BezierPatch, SplitOptions)}, with the patch's trim curves built by the caller (or null). */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim) {
+        return split(patch, options, trim, 0);
+    }
+
+    /** With the caller's trim curves (or null) and the scene-relative stop {@code minSize}. */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim, double minSize) {
         int n = patch.degreeU(), m = patch.degreeV();
-        int len = (n + 1) * (m + 1) * 3;
-        double[] net = patch.copyNet();
-        if (!options.enabled() || options.maxDepth() == 0) {
-            return new PatchPieces(n, m, 1, net, new double[] {0, 1, 0, 1});
-        }
-        Builder out = new Builder(len);
-        new Recursion(n, m, options, out).run(net);
-        return new PatchPieces(n, m, out.count, Arrays.copyOf(out.nets, out.count * len),
-                Arrays.copyOf(out.boxes, out.count * 4));
+        int dim = Patches.dim(patch);
+        Builder out = new Builder((n + 1) * (m + 1), dim == 4, trim != null);
+        Recursion r = new Recursion(n, m, dim, options, minSize, out, trim, patch.domain());
+        r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED);
+        return out.pieces(n, m);
     }
 
     /**
      * The depth-first halving with all working memory allocated once per patch: level
      * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
-     * the lower half's subtree uses deeper levels.
+     * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
+     * reaches it (a patch that stays whole allocates none).
      */
     private static final class Recursion {
-        final int n, m, len;
+        final int n, m, dim, points;
+        final SplitOptions options;
+        /** The degree-aware depth cap and flatness tolerance ({@link SplitOptions#maxDepthFor}, {@link SplitOptions#flatnessFor}). */
         final int maxDepth;
         final double flatness;
+        final double minSize;
         final Builder out;
+        final TrimCurves trim;
+        final PatchDomain domain;
         final double[][] lo, hi;
         final double[] box = new double[6];
+        final double[] euclid, weights, trimScratch;
 
-        Recursion(int n, int m, SplitOptions options, Builder out) {
+        Recursion(int n, int m, int dim, SplitOptions options, double minSize, Builder out, TrimCurves trim,
+                  PatchDomain domain) {
             this.n = n;
             this.m = m;
-            this.len = (n + 1) * (m + 1) * 3;
+            this.dim = dim;
+            this.points = (n + 1) * (m + 1);
+            this.options = options;
             this.maxDepth = options.maxDepthFor(n, m);
             this.flatness = options.flatnessFor(n, m);
+            this.minSize = minSize;
             this.out = out;
-            int levels = maxDepth + 1;
-            lo = new double[levels][len];
-            hi = new double[levels][len];
+            this.trim = trim;
+            this.domain = domain;
+            int levels = options.enabled() ? maxDepth + 1 : 1;
+            lo = new double[levels][];
+            hi = new double[levels][];
+            euclid = new double[3 * points];
+            weights = new double[points];
+            trimScratch = trim == null ? null : new double[TrimCurves.SCRATCH_LENGTH];
         }
 
-        void run(double[] net) {
-            visit(net, 0, 1, 0, 1, 0);
-        }
-
-        private void visit(double[] net, double u0, double u1, double v0, double v1, int depth) {
-            Bounds.ofPoints(net, 0, (n + 1) * (m + 1), box);
-            double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
-            double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (depth >= maxDepth || NetMeasures.flatness(net, 0, n, m) <= flatness * size) {
-                out.add(net, u0, u1, v0, v1);
+        void visit(double[] net, double u0, double u1, double v0, double v1, int depth, int trimState) {
+            if (trimState == TrimCurves.MIXED) {
+                trimState = classify(u0, u1, v0, v1);
+                if (trimState == TrimCurves.OUTSIDE) {
+                    return;
+                }
+            }
+            double[] xyz = net;
+            if (dim == 4) {
+                RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
+                xyz = euclid;
+            }
+            if (done(xyz, depth, trimState)) {
+                out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
                 return;
             }
+            if (lo[depth + 1] == null) {
+                lo[depth + 1] = new double[points * dim];
+                hi[depth + 1] = new double[points * dim];
+            }
             double[] a = lo[depth + 1], b = hi[depth + 1];
-            if (polygonLength(net, n, m, true) >= polygonLength(net, n, m, false)) {
+            if (polygonLength(xyz, n, m, true) >= polygonLength(xyz, n, m, false)) {
                 double um = 0.5 * (u0 + u1);
-                DeCasteljau.splitU(net, 0, n, m, 3, 0.5, a, 0, b, 0);
-                visit(a, u0, um, v0, v1, depth + 1);
-                visit(b, um, u1, v0, v1, depth + 1);
+                DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+                visit(a, u0, um, v0, v1, depth + 1, trimState);
+                visit(b, um, u1, v0, v1, depth + 1, trimState);
             } else {
                 double vm = 0.5 * (v0 + v1);
-                DeCasteljau.splitV(net, 0, n, m, 3, 0.5, a, 0, b, 0);
-                visit(a, u0, u1, v0, vm, depth + 1);
-                visit(b, u0, u1, vm, v1, depth + 1);
+                DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+                visit(a, u0, u1, v0, vm, depth + 1, trimState);
+                visit(b, u0, u1, vm, v1, depth + 1, trimState);
             }
+        }
+
+        /**
+         * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
+         * trim curve crosses is split on to the depth cap, so that most hits fall in pieces wholly
+         * inside (no trim test) and the pieces that need the test are small.
+         */
+        private boolean done(double[] xyz, int depth, int trimState) {
+            if (!options.enabled() || depth >= maxDepth) {
+                return true;
+            }
+            if (trimState == TrimCurves.MIXED) {
+                return false;
+            }
+            Bounds.ofPoints(xyz, 0, points, box);
+            double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
+            double size = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (size < minSize) {
+                return true;
+            }
+            double tolerance = flatness;
+            if (NetMeasures.flatness(xyz, 0, n, m) > tolerance * size) {
+                return false;
+            }
+            if (dim == 4) {
+                double wMin = Double.POSITIVE_INFINITY, wMax = 0;
+                for (int k = 0; k < points; k++) {
+                    wMin = Math.min(wMin, weights[k]);
+                    wMax = Math.max(wMax, weights[k]);
+                }
+                return wMax <= WEIGHT_SPREAD * wMin;
+            }
+            return true;
+        }
+
+        /** The piece's class against the trim loops, on its box in surface parameters (grown by the margin). */
+        private int classify(double u0, double u1, double v0, double v1) {
+            double gu = TRIM_MARGIN * (u1 - u0), gv = TRIM_MARGIN * (v1 - v0);
+            double su = domain.u1() - domain.u0(), sv = domain.v1() - domain.v0();
+            return trim.classify(domain.u0() + su * (u0 - gu), domain.u0() + su * (u1 + gu),
+                    domain.v0() + sv * (v0 - gv), domain.v0() + sv * (v1 + gv), trimScratch);
         }
     }
 
@@ -100,29 +201,51 @@ public final class PatchSplitter {
     }
 
     private static final class Builder {
-        final int len;
-        double[] nets;
-        double[] boxes = new double[64];
+        final int points;
+        final boolean rational, trimmed;
+        double[] nets, weights;
+        double[] boxes = new double[8];
+        boolean[] trimTest;
         int count;
 
-        Builder(int len) {
-            this.len = len;
-            this.nets = new double[16 * len];
+        Builder(int points, boolean rational, boolean trimmed) {
+            this.points = points;
+            this.rational = rational;
+            this.trimmed = trimmed;
+            // room for two pieces: most patches of a big model stay whole or split once
+            this.nets = new double[2 * 3 * points];
+            this.weights = rational ? new double[2 * points] : null;
+            this.trimTest = trimmed ? new boolean[2] : null;
         }
 
-        void add(double[] net, double u0, double u1, double v0, double v1) {
+        void add(double[] net, double[] w, double u0, double u1, double v0, double v1, boolean test) {
+            int len = 3 * points;
             if ((count + 1) * len > nets.length) {
                 nets = Arrays.copyOf(nets, nets.length * 2);
+                weights = rational ? Arrays.copyOf(weights, weights.length * 2) : null;
+                trimTest = trimmed ? Arrays.copyOf(trimTest, trimTest.length * 2) : null;
             }
             if ((count + 1) * 4 > boxes.length) {
                 boxes = Arrays.copyOf(boxes, boxes.length * 2);
             }
             System.arraycopy(net, 0, nets, count * len, len);
+            if (rational) {
+                System.arraycopy(w, 0, weights, count * points, points);
+            }
+            if (trimmed) {
+                trimTest[count] = test;
+            }
             boxes[4 * count] = u0;
             boxes[4 * count + 1] = u1;
             boxes[4 * count + 2] = v0;
             boxes[4 * count + 3] = v1;
             count++;
+        }
+
+        PatchPieces pieces(int n, int m) {
+            return new PatchPieces(n, m, count, Arrays.copyOf(nets, count * 3 * points), Arrays.copyOf(boxes, count * 4),
+                    rational ? Arrays.copyOf(weights, count * points) : null,
+                    trimmed ? Arrays.copyOf(trimTest, count) : null);
         }
     }
 }

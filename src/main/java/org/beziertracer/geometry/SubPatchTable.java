@@ -1,47 +1,86 @@
 package org.beziertracer.geometry;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.stream.IntStream;
 
 import org.beziertracer.math.Bounds;
+import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
+import org.beziertracer.model.TrimRegion;
 
 /**
- * Every sub-patch of every patch of a scene, in flat arrays indexed by sub-patch number
- * {@code s = 0..count-1}. Immutable; shared by render threads.
+ * Every sub-patch (leaf) of every patch of a scene, in flat arrays indexed by sub-patch number
+ * {@code s = 0..count-1}, the leaves of patch {@code k} being {@code firstOf[k] ..
+ * firstOf[k+1]-1}. Immutable; shared by render threads.
  *
+ * <p><b>Per leaf</b> (about 106 bytes, and its net unless it is the whole patch):
  * <ul>
  *   <li>{@code parent[s]}: index of the patch in the scene;</li>
  *   <li>{@code degreeU[s]}, {@code degreeV[s]}: degrees (those of the parent);</li>
- *   <li>{@code netOffset[s]}: where its control net starts in {@code nets} (layout of
- *       {@code BezierPatch}: u fastest, 3 doubles a point);</li>
- *   <li>{@code boxes[4s..4s+3]}: {@code u0, u1, v0, v1}, its parameter box in the parent;</li>
- *   <li>{@code bounds[6s..6s+5]}: the axis-aligned box of its control points, which contains
- *       the sub-patch by the convex-hull property.</li>
+ *   <li>{@code netOffset[s]}: where its Euclidean control net starts in {@link #nets} (layout of
+ *       {@code BezierPatch}: u fastest, 3 doubles a point); a leaf that is its whole polynomial,
+ *       untrimmed patch shares the patch's net ({@code netOffset[s] == patchNetOffset[k]});</li>
+ *   <li>{@code boxes[4s..4s+3]}: {@code u0, u1, v0, v1}, its parameter box in the parent, as
+ *       floats (halvings of [0,1]: exact);</li>
+ *   <li>{@code diagonal[s]}: the diagonal of its control-point box;</li>
+ *   <li>{@code uniqueness[9s..]}: the ray-independent single-root data of
+ *       {@link HodographBounds}.</li>
  * </ul>
+ * The leaves' control-point boxes (which contain them by the convex-hull property, for a rational
+ * patch too: its Euclidean points, the weights being positive) are not kept:
+ * {@link #bounds(int, int)} makes them for a BVH build or refit.
  *
- * <p>An edit of one patch re-splits only that patch ({@link #withPatch}); the other patches'
- * pieces are reused.
+ * <p><b>Per patch</b>: {@code firstOf}, degrees, {@code patchSquaredExtent}, {@link #patchDim},
+ * {@link #patchDomain}, {@link #patchTrim} and its whole net in {@link #nets} at
+ * {@code patchNetOffset[k]} (padded to a multiple of 3 doubles), followed by its leaves' nets
+ * when they are not the patch itself. {@link #patchNets} is the same array as {@link #nets}.
+ *
+ * <p><b>Rational patches</b> keep Euclidean leaf nets and their weights in {@link #weights} (null
+ * when no patch is rational); the whole patch's net is then homogeneous ({@link #patchDim} 4, see
+ * {@link RationalDeCasteljau}). <b>Trimmed patches</b> have their {@link TrimCurves} and
+ * parameter domain; their leaves wholly outside the trim region are not in the table at all, and
+ * {@link #trimTest} says which of the others need their hits tested.
+ *
+ * <p><b>Scene-relative split</b>: besides {@link SplitOptions}, a piece whose control-box diagonal
+ * is below {@link #minSize()} is not split ({@link PatchSplitter}); the size is chosen so the
+ * scene gets about {@link #LEAF_BUDGET} leaves' worth of surface, which leaves small scenes as the
+ * options say and keeps a model of 100,000 patches at one or two leaves a patch.
+ *
+ * <p>An edit re-splits only the edited patches ({@link #withPatches}); the other patches' leaves
+ * are copied as they are.
  */
 public final class SubPatchTable {
 
     /** Scenes with at least this many patches are split in parallel. */
     static final int PARALLEL_PATCHES = 64;
+    /**
+     * Leaves' worth of surface a scene gets: pieces smaller than {@code τ}, with
+     * {@code τ² = Σ (patch control-box diagonal)² / LEAF_BUDGET}, are not split.
+     */
+    public static final int LEAF_BUDGET = 1 << 17;
+    /** Retained bytes per leaf besides its net: parent, degrees, net offset, box, diagonal, uniqueness. */
+    static final int LEAF_BYTES = 4 + 2 + 4 + 4 * 4 + 8 + HodographBounds.STRIDE * 8;
+    /** Retained bytes per patch besides its net: offsets, degrees, first leaf, squared extent, dim, domain. */
+    static final int PATCH_BYTES = 4 + 4 + 4 + 4 + 8 + 4 + 4 * 8;
 
     private final List<BezierPatch> patches;
-    private final PatchPieces[] pieces;
     private final SplitOptions options;
+    private final double minSize;
     public final int count;
     public final int[] parent;
-    public final int[] degreeU;
-    public final int[] degreeV;
+    public final byte[] degreeU;
+    public final byte[] degreeV;
     public final int[] netOffset;
+    /** Every control net: per patch its whole net, then its leaves' nets when they are not the patch itself. */
     public final double[] nets;
-    public final double[] boxes;
-    public final double[] bounds;
+    public final float[] boxes;
+    /** Diagonal of each leaf's control-point box. */
+    public final double[] diagonal;
     /** First sub-patch of each patch; {@code firstOf[patchCount] == count}. */
     public final int[] firstOf;
-    /** The whole patches' control nets, one after another (for the final Newton polish and evaluation). */
+    /** The whole patches' control nets (for the final Newton polish and evaluation): {@link #nets}. */
     public final double[] patchNets;
     /** Where patch {@code k}'s net starts in {@link #patchNets}. */
     public final int[] patchNetOffset;
@@ -55,138 +94,417 @@ public final class SubPatchTable {
     public final double[] uniqueness;
     /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
     public final double[] patchSquaredExtent;
+    /** 3: patch {@code k}'s net in {@link #patchNets} is Euclidean; 4: homogeneous (a rational patch). */
+    public final int[] patchDim;
+    /**
+     * Null when no patch is rational; else one weight per control point of {@link #nets}, the
+     * weight of point {@code i} of sub-patch {@code s} at {@code weights[netOffset[s]/3 + i]} (1
+     * for polynomial patches).
+     */
+    public final double[] weights;
+    /** Null when no patch is trimmed; else per sub-patch whether its hits need the trim test. */
+    public final boolean[] trimTest;
+    /** Per patch its trim curves, or null when untrimmed. */
+    public final TrimCurves[] patchTrim;
+    /** Per patch {@code u0, u1, v0, v1}: its part of its surface's parameter domain ({@code 0,1,0,1} when plain). */
+    public final double[] patchDomain;
 
-    private SubPatchTable(List<BezierPatch> patches, PatchPieces[] pieces, SplitOptions options) {
+    /** Empty arrays for {@code patchCount} patches and {@code leaves} leaves, nets of {@code netDoubles}. */
+    private SubPatchTable(List<BezierPatch> patches, SplitOptions options, double minSize, int leaves,
+                          int netDoubles, boolean rational, TrimCurves[] trims) {
         this.patches = List.copyOf(patches);
-        this.pieces = pieces;
         this.options = options;
-        patchNetOffset = new int[pieces.length];
-        patchDegreeU = new int[pieces.length];
-        patchDegreeV = new int[pieces.length];
-        int patchDoubles = 0;
-        for (int k = 0; k < pieces.length; k++) {
-            patchNetOffset[k] = patchDoubles;
-            patchDegreeU[k] = pieces[k].degreeU();
-            patchDegreeV[k] = pieces[k].degreeV();
-            patchDoubles += pieces[k].netLength();
-        }
-        patchNets = new double[patchDoubles];
-        patchSquaredExtent = new double[pieces.length];
-        for (int k = 0; k < pieces.length; k++) {
-            this.patches.get(k).copyNetInto(patchNets, patchNetOffset[k]);
-            patchSquaredExtent[k] = PatchNormals.squaredExtent(patchNets, patchNetOffset[k],
-                    patchDegreeU[k], patchDegreeV[k]);
-        }
-        int total = 0;
-        int doubles = 0;
-        for (PatchPieces p : pieces) {
-            total += p.count();
-            doubles += p.nets().length;
-        }
-        count = total;
-        parent = new int[total];
-        degreeU = new int[total];
-        degreeV = new int[total];
-        netOffset = new int[total];
-        nets = new double[doubles];
-        boxes = new double[4 * total];
-        bounds = new double[6 * total];
-        uniqueness = new double[HodographBounds.STRIDE * total];
-        firstOf = new int[pieces.length + 1];
-        double[] box = new double[6];
-        int s = 0, off = 0;
-        for (int k = 0; k < pieces.length; k++) {
-            PatchPieces p = pieces[k];
-            firstOf[k] = s;
-            System.arraycopy(p.nets(), 0, nets, off, p.nets().length);
-            System.arraycopy(p.boxes(), 0, boxes, 4 * s, 4 * p.count());
-            int len = p.netLength();
-            for (int i = 0; i < p.count(); i++, s++, off += len) {
-                parent[s] = k;
-                degreeU[s] = p.degreeU();
-                degreeV[s] = p.degreeV();
-                netOffset[s] = off;
-                Bounds.ofPoints(nets, off, len / 3, box);
-                System.arraycopy(box, 0, bounds, 6 * s, 6);
-                HodographBounds.compute(nets, off, p.degreeU(), p.degreeV(), uniqueness,
-                        HodographBounds.STRIDE * s, box);
+        this.minSize = minSize;
+        int patchCount = patches.size();
+        count = leaves;
+        parent = new int[leaves];
+        degreeU = new byte[leaves];
+        degreeV = new byte[leaves];
+        netOffset = new int[leaves];
+        boxes = new float[4 * leaves];
+        diagonal = new double[leaves];
+        uniqueness = new double[HodographBounds.STRIDE * leaves];
+        nets = new double[netDoubles];
+        patchNets = nets;
+        firstOf = new int[patchCount + 1];
+        patchNetOffset = new int[patchCount];
+        patchDegreeU = new int[patchCount];
+        patchDegreeV = new int[patchCount];
+        patchSquaredExtent = new double[patchCount];
+        patchDim = new int[patchCount];
+        patchDomain = new double[4 * patchCount];
+        patchTrim = trims;
+        weights = rational ? new double[netDoubles / 3] : null;
+        trimTest = anyTrim(trims) ? new boolean[leaves] : null;
+    }
+
+    private static boolean anyTrim(TrimCurves[] trims) {
+        for (TrimCurves t : trims) {
+            if (t != null) {
+                return true;
             }
         }
-        firstOf[pieces.length] = s;
+        return false;
     }
 
-    /** Splits every patch. */
+    /** Splits every patch (the trim curves of each distinct trim region are built once). */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
+        double minSize = minSize(patches, options);
+        TrimCurves[] trims = TrimCurves.forPatches(patches);
+        // The pieces that are not the patch itself only: a patch that stays whole is copied from
+        // itself, so a model of a million small patches holds no second copy of its nets while built
         PatchPieces[] pieces = new PatchPieces[patches.size()];
-        // Patches split independently; large scenes use the common fork-join pool (build time only)
+        boolean parallel = pieces.length >= PARALLEL_PATCHES;
         IntStream range = IntStream.range(0, pieces.length);
-        (pieces.length >= PARALLEL_PATCHES ? range.parallel() : range)
-                .forEach(k -> pieces[k] = PatchSplitter.split(patches.get(k), options));
-        return new SubPatchTable(patches, pieces, options);
+        (parallel ? range.parallel() : range).forEach(k -> pieces[k] = kept(
+                PatchSplitter.split(patches.get(k), options, trims[k], minSize)));
+        int leaves = 0;
+        long doubles = 0;
+        boolean rational = false;
+        for (int k = 0; k < pieces.length; k++) {
+            leaves += leafCount(pieces[k]);
+            doubles += regionLength(patches.get(k), pieces[k]);
+            rational |= patches.get(k).isRational();
+        }
+        SubPatchTable t = new SubPatchTable(patches, options, minSize, leaves, checkedLength(doubles), rational, trims);
+        int s = 0, off = 0;
+        for (int k = 0; k < pieces.length; k++) {
+            t.firstOf[k] = s;
+            t.patchNetOffset[k] = off;
+            s += leafCount(pieces[k]);
+            off += (int) regionLength(patches.get(k), pieces[k]);
+        }
+        t.firstOf[pieces.length] = s;
+        IntStream fill = IntStream.range(0, pieces.length);
+        (parallel ? fill.parallel() : fill).forEach(k -> t.fill(k, pieces[k]));
+        return t;
     }
 
-    /** Patches split for real by {@link #estimateCount}; more are sampled evenly. */
+    /** The pieces to keep: null when the patch is one whole polynomial, untrimmed leaf (it shares its net). */
+    private static PatchPieces kept(PatchPieces p) {
+        return p.count() == 1 && p.weights() == null && p.trimTest() == null ? null : p;
+    }
+
+    /** Leaves of a patch: its pieces, or 1 for a patch that stays whole ({@code null}). */
+    private static int leafCount(PatchPieces p) {
+        return p == null ? 1 : p.count();
+    }
+
+    /** Doubles of a patch's own net in {@link #nets}: homogeneous for a rational patch, padded to a multiple of 3. */
+    private static long patchLength(BezierPatch patch) {
+        long d = (long) Patches.dim(patch) * patch.pointCount();
+        return (d + 2) / 3 * 3;
+    }
+
+    /**
+     * Doubles patch {@code patch} takes in {@link #nets}: its whole net, and its leaves' nets when
+     * they are not the patch itself ({@code pieces} non-null).
+     */
+    private static long regionLength(BezierPatch patch, PatchPieces pieces) {
+        return patchLength(patch) + (pieces == null ? 0 : 3L * patch.pointCount() * pieces.count());
+    }
+
+    private static int checkedLength(long doubles) {
+        if (doubles > Integer.MAX_VALUE - 8) {
+            throw new IllegalArgumentException("the sub-patch nets need " + doubles
+                    + " numbers, more than one array can hold");
+        }
+        return (int) doubles;
+    }
+
+    /** The parameter box of a whole patch. */
+    private static final double[] WHOLE = {0, 1, 0, 1};
+
+    /** Writes patch {@code k}'s region (its offsets already set) from its pieces (null: whole). */
+    private void fill(int k, PatchPieces p) {
+        BezierPatch patch = patches.get(k);
+        int n = patch.degreeU(), m = patch.degreeV(), points = patch.pointCount(), len = 3 * points;
+        int off = patchNetOffset[k], s0 = firstOf[k], leaves = leafCount(p), dim = Patches.dim(patch);
+        if (dim == 3) {
+            patch.copyNetInto(nets, off);
+        } else {
+            double[] h = Patches.workingNet(patch);
+            System.arraycopy(h, 0, nets, off, h.length);
+        }
+        patchDegreeU[k] = n;
+        patchDegreeV[k] = m;
+        patchDim[k] = dim;
+        patchSquaredExtent[k] = PatchNormals.squaredExtent(nets, off, n, m, dim);
+        PatchDomain d = patch.domain();
+        patchDomain[4 * k] = d.u0();
+        patchDomain[4 * k + 1] = d.u1();
+        patchDomain[4 * k + 2] = d.v0();
+        patchDomain[4 * k + 3] = d.v1();
+        int leafBase = off + (int) patchLength(patch);
+        if (p != null) {
+            System.arraycopy(p.nets(), 0, nets, leafBase, leaves * len);
+        }
+        double[] pieceBoxes = p == null ? WHOLE : p.boxes();
+        double[] box = new double[6];
+        for (int i = 0; i < leaves; i++) {
+            int s = s0 + i, o = p == null ? off : leafBase + i * len;
+            parent[s] = k;
+            degreeU[s] = (byte) n;
+            degreeV[s] = (byte) m;
+            netOffset[s] = o;
+            for (int c = 0; c < 4; c++) {
+                boxes[4 * s + c] = (float) pieceBoxes[4 * i + c];
+            }
+            Bounds.ofPoints(nets, o, points, box);
+            double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
+            diagonal[s] = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (p != null && p.weights() != null) {
+                // the derivative bounds of a rational piece come from its homogeneous net
+                System.arraycopy(p.weights(), i * points, weights, o / 3, points);
+                HodographBounds.computeRational(nets, o, weights, o / 3, n, m, uniqueness, HodographBounds.STRIDE * s);
+            } else {
+                HodographBounds.compute(nets, o, n, m, uniqueness, HodographBounds.STRIDE * s, box);
+                if (weights != null) {
+                    Arrays.fill(weights, o / 3, o / 3 + points, 1);
+                }
+            }
+            if (trimTest != null) {
+                trimTest[s] = p != null && p.trimTest() != null && p.trimTest()[i];
+            }
+        }
+    }
+
+    /** {@code u0, u1, v0, v1} of each patch's {@link PatchDomain}, one after another. */
+    public static double[] domains(List<BezierPatch> patches) {
+        double[] out = new double[4 * patches.size()];
+        for (int k = 0; k < patches.size(); k++) {
+            PatchDomain d = patches.get(k).domain();
+            out[4 * k] = d.u0();
+            out[4 * k + 1] = d.u1();
+            out[4 * k + 2] = d.v0();
+            out[4 * k + 3] = d.v1();
+        }
+        return out;
+    }
+
+    /**
+     * The scene-relative stop: {@code τ = sqrt(Σ d_k² / LEAF_BUDGET)} over the patches' control-box
+     * diagonals {@code d_k}; 0 when splitting is off. For a scene of N similar patches of diagonal
+     * d this is {@code d·sqrt(N / LEAF_BUDGET)}: below any leaf's size for small N.
+     */
+    static double minSize(List<BezierPatch> patches, SplitOptions options) {
+        if (!options.enabled() || options.maxDepth() == 0) {
+            return 0;
+        }
+        double sum = 0;
+        for (BezierPatch p : patches) {
+            double d = p.controlBounds().diagonal();
+            sum += d * d;
+        }
+        return Math.sqrt(sum / LEAF_BUDGET);
+    }
+
+    /** A new table with patch {@code index} replaced and re-split; the other patches' leaves are copied. */
+    public SubPatchTable withPatch(int index, BezierPatch patch) {
+        return withPatches(new int[] {index}, List.of(patch));
+    }
+
+    /**
+     * A new table with patches {@code indices[k]} replaced by {@code replacements.get(k)} and
+     * re-split, the other patches' leaves copied: one pass over the table however many patches
+     * changed (an edit that moves a point shared by several patches).
+     */
+    public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements) {
+        var list = new java.util.ArrayList<>(patches);
+        TrimCurves[] trims = patchTrim.clone();
+        boolean rational = weights != null;
+        for (int k = 0; k < indices.length; k++) {
+            int index = indices[k];
+            BezierPatch patch = replacements.get(k);
+            TrimRegion region = patch.trim();
+            if (region == null) {
+                trims[index] = null;
+            } else if (region != patches.get(index).trim() || trims[index] == null) {
+                trims[index] = TrimCurves.of(region);
+            }
+            list.set(index, patch);
+            rational |= patch.isRational();
+        }
+        if (rational != (weights != null) || anyTrim(trims) != (trimTest != null)) {
+            return rebuilt(list, trims);
+        }
+        int[] edited = Arrays.stream(indices).distinct().sorted().toArray();
+        PatchPieces[] pieces = new PatchPieces[edited.length];
+        int[] dLeaves = new int[edited.length];
+        long[] dNets = new long[edited.length];
+        long leaves = count, doubles = nets.length;
+        for (int e = 0; e < edited.length; e++) {
+            int k = edited[e];
+            pieces[e] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize));
+            dLeaves[e] = leafCount(pieces[e]) - (firstOf[k + 1] - firstOf[k]);
+            dNets[e] = regionLength(list.get(k), pieces[e]) - (regionEnd(k) - patchNetOffset[k]);
+            leaves += dLeaves[e];
+            doubles += dNets[e];
+        }
+        SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims);
+        copyAround(t, edited, dLeaves, dNets);
+        for (int e = 0; e < edited.length; e++) {
+            t.fill(edited[e], pieces[e]);
+        }
+        return t;
+    }
+
+    /** A table built afresh from {@code list} with this table's stop (an edit that made the first rational or trimmed patch). */
+    private SubPatchTable rebuilt(List<BezierPatch> list, TrimCurves[] trims) {
+        PatchPieces[] pieces = new PatchPieces[list.size()];
+        long leaves = 0, doubles = 0;
+        boolean rational = false;
+        for (int k = 0; k < pieces.length; k++) {
+            pieces[k] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize));
+            leaves += leafCount(pieces[k]);
+            doubles += regionLength(list.get(k), pieces[k]);
+            rational |= list.get(k).isRational();
+        }
+        SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims);
+        int s = 0, off = 0;
+        for (int k = 0; k < pieces.length; k++) {
+            t.firstOf[k] = s;
+            t.patchNetOffset[k] = off;
+            s += leafCount(pieces[k]);
+            off += (int) regionLength(list.get(k), pieces[k]);
+        }
+        t.firstOf[pieces.length] = s;
+        for (int k = 0; k < pieces.length; k++) {
+            t.fill(k, pieces[k]);
+        }
+        return t;
+    }
+
+    /** End of patch {@code k}'s region in {@link #nets}. */
+    private int regionEnd(int k) {
+        return k + 1 < patchNetOffset.length ? patchNetOffset[k + 1] : nets.length;
+    }
+
+    /**
+     * Copies into {@code t} every patch's offsets and data and every leaf of the patches that were
+     * not edited, shifted past the edited patches' new sizes ({@code edited} sorted).
+     */
+    private void copyAround(SubPatchTable t, int[] edited, int[] dLeaves, long[] dNets) {
+        int fromLeaf = 0, fromNet = 0, shiftL = 0, shiftN = 0;
+        for (int e = 0; e < edited.length; e++) {
+            int k = edited[e];
+            copyRange(t, fromLeaf, firstOf[k] - fromLeaf, fromNet, patchNetOffset[k] - fromNet, shiftL, shiftN);
+            fromLeaf = firstOf[k + 1];
+            fromNet = regionEnd(k);
+            shiftL += dLeaves[e];
+            shiftN += (int) dNets[e];
+        }
+        copyRange(t, fromLeaf, count - fromLeaf, fromNet, nets.length - fromNet, shiftL, shiftN);
+        int patchCount = patchNetOffset.length;
+        shiftL = 0;
+        shiftN = 0;
+        for (int k = 0, e = 0; k < patchCount; k++) {
+            t.firstOf[k] = firstOf[k] + shiftL;
+            t.patchNetOffset[k] = patchNetOffset[k] + shiftN;
+            t.patchDegreeU[k] = patchDegreeU[k];
+            t.patchDegreeV[k] = patchDegreeV[k];
+            t.patchSquaredExtent[k] = patchSquaredExtent[k];
+            t.patchDim[k] = patchDim[k];
+            System.arraycopy(patchDomain, 4 * k, t.patchDomain, 4 * k, 4);
+            if (e < edited.length && edited[e] == k) {
+                shiftL += dLeaves[e];
+                shiftN += (int) dNets[e];
+                e++;
+            }
+        }
+        t.firstOf[patchCount] = t.count;
+    }
+
+    /** Copies {@code n} leaves from {@code from} and {@code len} net doubles from {@code net} into {@code t}, shifted. */
+    private void copyRange(SubPatchTable t, int from, int n, int net, int len, int shiftL, int shiftN) {
+        int to = from + shiftL;
+        System.arraycopy(parent, from, t.parent, to, n);
+        System.arraycopy(degreeU, from, t.degreeU, to, n);
+        System.arraycopy(degreeV, from, t.degreeV, to, n);
+        System.arraycopy(boxes, 4 * from, t.boxes, 4 * to, 4 * n);
+        System.arraycopy(diagonal, from, t.diagonal, to, n);
+        int q = HodographBounds.STRIDE;
+        System.arraycopy(uniqueness, q * from, t.uniqueness, q * to, q * n);
+        if (trimTest != null) {
+            System.arraycopy(trimTest, from, t.trimTest, to, n);
+        }
+        for (int i = 0; i < n; i++) {
+            t.netOffset[to + i] = netOffset[from + i] + shiftN;
+        }
+        System.arraycopy(nets, net, t.nets, net + shiftN, len);
+        if (weights != null) {
+            System.arraycopy(weights, net / 3, t.weights, (net + shiftN) / 3, len / 3);
+        }
+    }
+
+    /**
+     * The control-point boxes of leaves {@code first .. first+n-1}, six doubles each
+     * ({@code minX, minY, minZ, maxX, maxY, maxZ}), in a new array: for a BVH build or refit.
+     */
+    public double[] bounds(int first, int n) {
+        double[] out = new double[6 * n];
+        IntStream range = IntStream.range(0, n);
+        (n >= 1 << 14 ? range.parallel() : range).forEach(i -> {
+            int s = first + i;
+            Bounds.ofPoints(nets, netOffset[s], (degreeU[s] + 1) * (degreeV[s] + 1), out, 6 * i);
+        });
+        return out;
+    }
+
+    /** Patches split for real by {@link #estimate}; more are sampled evenly. */
     static final int ESTIMATE_SAMPLE = 64;
 
     /**
-     * About how many sub-patches {@link #build} would make: exact for up to
-     * {@value #ESTIMATE_SAMPLE} patches, else the mean of that many evenly spaced patches, split
-     * for real, times the patch count. Cheap (allocates only the sample's pieces).
+     * About how many leaves {@link #build} makes and the most heap it holds at once.
+     *
+     * @param leaves exact for up to {@value #ESTIMATE_SAMPLE} patches, else the mean of that many
+     *               evenly spaced patches, split for real, times the patch count
+     * @param bytes  the table's arrays ({@link #bytes()}) plus the pieces the split patches are
+     *               split into first (nets and boxes, dropped once copied)
      */
-    public static long estimateCount(List<BezierPatch> patches, SplitOptions options) {
+    public record Estimate(long leaves, long bytes) {}
+
+    /** {@link Estimate} of {@link #build}{@code (patches, options)}; splits at most {@value #ESTIMATE_SAMPLE} patches. */
+    public static Estimate estimate(List<BezierPatch> patches, SplitOptions options) {
         int n = patches.size();
         if (n == 0) {
-            return 0;
+            return new Estimate(0, 0);
         }
-        if (!options.enabled() || options.maxDepth() == 0) {
-            return n;
-        }
+        double minSize = minSize(patches, options);
         int samples = Math.min(n, ESTIMATE_SAMPLE);
-        long pieces = 0;
+        long leaves = 0, regions = 0, pieceDoubles = 0;
         for (int k = 0; k < samples; k++) {
-            pieces += PatchSplitter.split(patches.get((int) ((long) k * n / samples)), options).count();
+            BezierPatch patch = patches.get((int) ((long) k * n / samples));
+            PatchPieces p = kept(PatchSplitter.split(patch, options, minSize));
+            leaves += leafCount(p);
+            regions += regionLength(patch, p);
+            pieceDoubles += p != null ? p.nets().length + p.boxes().length : 0;
         }
-        return (long) Math.ceil((double) pieces * n / samples);
+        double scale = (double) n / samples;
+        long leafCount = (long) Math.ceil(leaves * scale);
+        long bytes = (long) Math.ceil((regions + pieceDoubles) * 8 * scale)
+                + leafCount * LEAF_BYTES + (long) n * (PATCH_BYTES + 64);
+        return new Estimate(leafCount, bytes);
     }
 
-    /**
-     * About the most heap {@link #build} holds at once for {@code subPatchCount} sub-patches (from
-     * {@link #estimateCount}), in bytes: every array of the table (which keeps the patches'
-     * {@link PatchPieces} too, so each sub-patch net is held twice) plus the patches' own nets.
-     * Keep this in step with the fields above when the layout changes.
-     */
-    public static long estimateBytes(List<BezierPatch> patches, long subPatchCount) {
-        if (patches.isEmpty()) {
-            return 0;
-        }
-        long netDoubles = 0;
-        for (BezierPatch p : patches) {
-            netDoubles += 3L * p.pointCount();
-        }
-        double meanNet = (double) netDoubles / patches.size();
-        long perSubPatch = (long) Math.ceil(2 * 8 * meanNet)      // nets, in the table and in the pieces
-                + 2 * 4 * 8                                         // boxes, in the table and in the pieces
-                + 6 * 8 + HodographBounds.STRIDE * 8               // bounds, uniqueness
-                + 4 * 4;                                            // parent, degreeU, degreeV, netOffset
-        long perPatch = 8 * 3 * 4 + 8 + 4 + 96;                    // patch arrays, extent, firstOf, pieces objects
-        return subPatchCount * perSubPatch + 8 * netDoubles + patches.size() * perPatch;
-    }
-
-    /** A new table with patch {@code index} replaced and re-split; the others are reused. */
-    public SubPatchTable withPatch(int index, BezierPatch patch) {
-        PatchPieces[] copy = pieces.clone();
-        copy[index] = PatchSplitter.split(patch, options);
-        var list = new java.util.ArrayList<>(patches);
-        list.set(index, patch);
-        return new SubPatchTable(list, copy, options);
+    /** Heap held by this table's arrays, in bytes (not the patches themselves). */
+    public long bytes() {
+        return HeapBytes.of(parent) + HeapBytes.of(degreeU) + HeapBytes.of(degreeV) + HeapBytes.of(netOffset)
+                + HeapBytes.of(nets) + HeapBytes.of(boxes) + HeapBytes.of(diagonal) + HeapBytes.of(firstOf)
+                + HeapBytes.of(patchNetOffset) + HeapBytes.of(patchDegreeU) + HeapBytes.of(patchDegreeV)
+                + HeapBytes.of(uniqueness) + HeapBytes.of(patchSquaredExtent) + HeapBytes.of(patchDim)
+                + HeapBytes.of(patchDomain) + HeapBytes.of(weights) + HeapBytes.of(trimTest);
     }
 
     /** Number of sub-patches of patch {@code index}. */
-    public int countOf(int index) { return pieces[index].count(); }
+    public int countOf(int index) { return firstOf[index + 1] - firstOf[index]; }
 
-    public int patchCount() { return pieces.length; }
+    public int patchCount() { return patchNetOffset.length; }
 
     public List<BezierPatch> patches() { return patches; }
 
     public SplitOptions options() { return options; }
+
+    /** The scene-relative stop in force: pieces with a smaller control-box diagonal are not split. */
+    public double minSize() { return minSize; }
 }

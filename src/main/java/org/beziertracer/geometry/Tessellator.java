@@ -11,8 +11,10 @@ import org.beziertracer.model.Mesh;
  *
  * <p>Each patch gets its own {@code (k+1)×(k+1)} grid of vertices at parameters
  * {@code (a/k, b/k)}, vertex {@code b·(k+1) + a} of the patch (u fastest), with positions from
- * {@link DeCasteljau#evaluate}, analytic unit normals from {@link PatchNormals#unitNormal}
- * (including the limit normal at collapsed edges) and the parameters as uvs. Each grid cell
+ * {@link DeCasteljau#evaluate} ({@link RationalDeCasteljau#evaluate} for a rational patch), analytic
+ * unit normals from {@link PatchNormals#unitNormal} (including the limit normal at collapsed
+ * edges) and the patch's own parameters (in {@code [0,1]²}) as uvs. Trim loops are not applied
+ * here: the mesh covers the whole patch. Each grid cell
  * gives two triangles, {@code (a,b),(a+1,b),(a+1,b+1)} and {@code (a,b),(a+1,b+1),(a,b+1)}, so
  * triangles wind counter-clockwise around {@code ∂S/∂u × ∂S/∂v}. Vertices are not shared
  * between patches, and cells at a collapsed edge yield zero-area triangles which are kept so
@@ -60,8 +62,8 @@ public final class Tessellator {
         int tri = 0;
         for (int p = 0; p < patches.size(); p++) {
             BezierPatch patch = patches.get(p);
-            double[] net = patch.copyNet();
-            int n = patch.degreeU(), m = patch.degreeV();
+            double[] net = Patches.workingNet(patch);
+            int n = patch.degreeU(), m = patch.degreeV(), dim = Patches.dim(patch);
             int base = p * perPatchVertices;
             // Vertices
             for (int b = 0; b <= k; b++) {
@@ -69,8 +71,12 @@ public final class Tessellator {
                 for (int a = 0; a <= k; a++) {
                     double u = (double) a / k;
                     int vert = base + b * (k + 1) + a;
-                    DeCasteljau.evaluate(net, 0, n, m, 3, u, v, positions, 3 * vert, scratch);
-                    PatchNormals.unitNormal(net, 0, n, m, u, v, normals, 3 * vert, scratch);
+                    if (dim == 4) {
+                        RationalDeCasteljau.evaluate(net, 0, n, m, u, v, positions, 3 * vert, scratch);
+                    } else {
+                        DeCasteljau.evaluate(net, 0, n, m, 3, u, v, positions, 3 * vert, scratch);
+                    }
+                    PatchNormals.unitNormal(net, 0, n, m, dim, u, v, normals, 3 * vert, scratch);
                     uvs[2 * vert] = u;
                     uvs[2 * vert + 1] = v;
                 }

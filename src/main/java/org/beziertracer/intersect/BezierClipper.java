@@ -33,6 +33,10 @@ import org.beziertracer.geometry.SubPatchTable;
  * the nearest returned, and pieces are pruned by their ray-space bounds (the third coordinate
  * bounds t, so a piece beyond the best hit so far is dropped).
  *
+ * <p>A rational leaf is clipped on its weighted distances {@code w·d} (the zero set of
+ * {@code Σ w_ij·d_ij·B_i(u)·B_j(v)}, Nishita et al.), its weights carried along in the context's
+ * weight arena ({@link RationalNets}); everything else is the same.
+ *
  * <p>Allocation-free: all nets live in the context's arena, a stack of at most
  * {@link TraceContext#MAX_ENTRIES} entries.
  */
@@ -83,6 +87,10 @@ final class BezierClipper {
         double extentEps = CONVERGED_EXTENT * leafSize(tab, s);
         double[] boxes = ctx.entryBoxes;
         ctx.project(tab.nets, tab.netOffset[s], points, ctx.arena, 0);
+        ctx.leafRational = RationalNets.rational(tab, s);
+        if (ctx.leafRational) {
+            RationalNets.weigh(ctx, tab, s, points);
+        }
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         ctx.pieceBestT = tMax;
         ctx.pieceFound = false;
@@ -128,7 +136,11 @@ final class BezierClipper {
      */
     private static boolean missesRay(TraceContext ctx, int base, int points, double slack, double tMin) {
         double[] rb = ctx.rayBounds;
-        Bounds.ofPoints(ctx.arena, base, points, rb);
+        if (ctx.leafRational) {
+            RationalNets.rayBounds(ctx, base / (3 * points), points, rb);
+        } else {
+            Bounds.ofPoints(ctx.arena, base, points, rb);
+        }
         double invLength = ctx.invLength;
         return rb[0] > slack || rb[3] < -slack || rb[1] > slack || rb[4] < -slack
                 || rb[2] * invLength >= ctx.pieceBestT || rb[5] * invLength <= tMin;
@@ -184,13 +196,32 @@ final class BezierClipper {
             }
         }
         if (b - a < 1) {
-            DeCasteljau.restrictU(arena, 0, n, m, 3, a, b);
+            restrict(ctx, 0, 0, n, m, true, a, b);
         }
         if (d - c < 1) {
-            DeCasteljau.restrictV(arena, 0, n, m, 3, c, d);
+            restrict(ctx, 0, 0, n, m, false, c, d);
         }
         boxes[0] = a; boxes[1] = b; boxes[2] = c; boxes[3] = d;
         return 1;
+    }
+
+    /**
+     * Restricts the piece in stack slot {@code w} (its net at {@code ctx.arena[base..]}) to
+     * {@code [a,b]} in u ({@code inU}) or v, and its weights with it when the leaf is rational.
+     */
+    private static void restrict(TraceContext ctx, int base, int w, int n, int m, boolean inU, double a, double b) {
+        if (inU) {
+            DeCasteljau.restrictU(ctx.arena, base, n, m, 3, a, b);
+        } else {
+            DeCasteljau.restrictV(ctx.arena, base, n, m, 3, a, b);
+        }
+        if (ctx.leafRational) {
+            if (inU) {
+                RationalNets.restrictU(ctx, w, n, m, a, b);
+            } else {
+                RationalNets.restrictV(ctx, w, n, m, a, b);
+            }
+        }
     }
 
     /**
@@ -227,7 +258,11 @@ final class BezierClipper {
         if (sp == TraceContext.MAX_ENTRIES) {
             return sp - 1; // stack full: drop this piece (bounded work)
         }
-        split(ctx, arena, base, len, n, m, boxes, b4, u1 - u0 >= v1 - v0);
+        boolean inU = u1 - u0 >= v1 - v0;
+        boolean swapped = split(ctx, arena, base, len, n, m, boxes, b4, inU);
+        if (ctx.leafRational) {
+            RationalNets.split(ctx, w, n, m, inU, swapped);
+        }
         return sp + 1;
     }
 
@@ -245,11 +280,7 @@ final class BezierClipper {
         double a = ctx.clip[0], b = ctx.clip[1];
         double kept = b - a;
         if (kept < 1) {
-            if (alongU) {
-                DeCasteljau.restrictU(arena, base, n, m, 3, a, b);
-            } else {
-                DeCasteljau.restrictV(arena, base, n, m, 3, a, b);
-            }
+            restrict(ctx, base, base / (3 * (n + 1) * (m + 1)), n, m, alongU, a, b);
             int lo = alongU ? b4 : b4 + 2;
             double w0 = boxes[lo], width = boxes[lo + 1] - w0;
             boxes[lo + 1] = w0 + width * b;
@@ -306,7 +337,7 @@ final class BezierClipper {
             u = Math.min(1, Math.max(0, u + (fx * cy - fy * cx) / det));
             v = Math.min(1, Math.max(0, v + (ey * cx - ex * cy) / det));
         }
-        double[] bx = tab.boxes;
+        float[] bx = tab.boxes;
         double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
         if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * u, v0 + (v1 - v0) * v, NEWTON_STEPS,
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
@@ -318,10 +349,7 @@ final class BezierClipper {
 
     /** Diagonal of the leaf's control box. */
     static double leafSize(SubPatchTable tab, int s) {
-        double[] bb = tab.bounds;
-        int o = 6 * s;
-        double ex = bb[o + 3] - bb[o], ey = bb[o + 4] - bb[o + 1], ez = bb[o + 5] - bb[o + 2];
-        return Math.sqrt(ex * ex + ey * ey + ez * ez);
+        return tab.diagonal[s];
     }
 
     /**
@@ -437,10 +465,11 @@ final class BezierClipper {
 
     /**
      * Splits the piece in slot {@code base} in half; the half nearer the ray origin goes to the
-     * next slot (visited first), the other stays.
+     * next slot (visited first), the other stays. Returns true when the upper half stayed (the
+     * halves were swapped).
      */
-    static void split(TraceContext ctx, double[] arena, int base, int len, int n, int m,
-                      double[] boxes, int b4, boolean inU) {
+    static boolean split(TraceContext ctx, double[] arena, int base, int len, int n, int m,
+                         double[] boxes, int b4, boolean inU) {
         double[] tmp = ctx.tmpNet;
         System.arraycopy(arena, base, tmp, 0, len);
         int next = base + len;
@@ -469,6 +498,7 @@ final class BezierClipper {
             boxes[b4] = lu0; boxes[b4 + 1] = lu1; boxes[b4 + 2] = lv0; boxes[b4 + 3] = lv1;
             boxes[n4] = hu0; boxes[n4 + 1] = hu1; boxes[n4 + 2] = hv0; boxes[n4 + 3] = hv1;
         }
+        return swap;
     }
 
     private static double minThird(double[] net, int base, int len) {

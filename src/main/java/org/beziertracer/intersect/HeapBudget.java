@@ -3,7 +3,6 @@ package org.beziertracer.intersect;
 import java.util.Locale;
 
 import org.beziertracer.accel.Bvh;
-import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
 
@@ -35,11 +34,12 @@ public final class HeapBudget {
         var patches = scene.patches();
         if (options.tessellated()) {
             long triangles = 2L * options.tessellate() * options.tessellate() * patches.size();
-            return TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + Bvh.estimateBytes(triangles);
+            return TriangleMesh.estimateBytes(patches.size(), options.tessellate()) + 6 * 8 * triangles
+                    + Bvh.estimateBytes(triangles);
         }
-        SplitOptions split = options.effectiveSplit();
-        long subPatches = SubPatchTable.estimateCount(patches, split);
-        return SubPatchTable.estimateBytes(patches, subPatches) + Bvh.estimateBytes(subPatches);
+        SubPatchTable.Estimate table = SubPatchTable.estimate(patches, options.effectiveSplit());
+        // The table, the leaves' boxes handed to the BVH build, and the build itself
+        return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves());
     }
 
     /**

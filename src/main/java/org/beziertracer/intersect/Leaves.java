@@ -52,8 +52,17 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
     /** Number of primitives. */
     int count();
 
-    /** Their boxes, {@code minX minY minZ maxX maxY maxZ} each, for the accelerator; not to be modified. */
-    double[] bounds();
+    /**
+     * The boxes of primitives {@code first .. first+n-1}, {@code minX minY minZ maxX maxY maxZ}
+     * each, in an array the caller may keep (for an accelerator build or refit).
+     */
+    double[] bounds(int first, int n);
+
+    /** The primitives of patch {@code k}: {@code firstLeaf(k) .. firstLeaf(k)+leafCount(k)-1}. */
+    int firstLeaf(int k);
+
+    /** Number of primitives of patch {@code k}. */
+    int leafCount(int k);
 
     /** Per-ray set-up after {@link TraceContext#setRay}, before the traversal; nothing by default. */
     default void beginRay(TraceContext ctx) {}
@@ -74,6 +83,22 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
      * the accelerator may then be refitted instead of rebuilt.
      */
     Leaves withPatch(Scene edited, int index, double sceneSize);
+
+    /**
+     * {@link #withPatch} for several patches at once ({@code edited} differs from the old scene in
+     * patches {@code indices} only); kinds that can should remake their data once, not once per
+     * patch.
+     */
+    default Leaves withPatches(Scene edited, int[] indices, double sceneSize) {
+        Leaves out = this;
+        for (int index : indices) {
+            out = out.withPatch(edited, index, sceneSize);
+        }
+        return out;
+    }
+
+    /** Heap held by these leaves' data (not the model's patches), in bytes. */
+    long bytes();
 
     /** Sub-patches (BVH leaves) of the exact mode; the number of whole patches for other kinds. */
     int subPatchCount();

@@ -10,7 +10,10 @@ import org.beziertracer.geometry.SubPatchTable;
  * <p>Starts at the leaf's parameter-box centre, iterates on the parent patch in ray space and
  * rejects the result when it leaves the leaf's box (grown by a small margin, so that a root on
  * the border between two leaves is not lost) or does not converge. When the centre start fails,
- * the quarter points of the box are tried in turn and the first converged root kept. It still finds at most the roots those starts lead to: fast, but it can miss where a
+ * the quarter points of the box are tried in turn and the first converged root kept. When every
+ * start fails and the centre start left the box, one more start is made where it left, clamped
+ * into the box: a root just inside the box's border (a patch border, where the box cannot grow)
+ * that the first step overshoots is found that way. It still finds at most the roots those starts lead to: fast, but it can miss where a
  * leaf holds two roots or where every start is far from the root (and at singular points such
  * as the teapot's collapsed lid top, where the Jacobian vanishes). Kept for comparison with
  * clipping.
@@ -31,14 +34,29 @@ final class NewtonSolver {
         double mu = MARGIN * (u1 - u0), mv = MARGIN * (v1 - v0);
         double uLo = Math.max(-1e-9, u0 - mu), uHi = Math.min(1 + 1e-9, u1 + mu);
         double vLo = Math.max(-1e-9, v0 - mv), vHi = Math.min(1 + 1e-9, v1 + mv);
+        double escapeU = Double.NaN, escapeV = Double.NaN;
+        ctx.escapeU = Double.NaN; // set only when the centre start leaves the box (not when it runs out of steps)
         for (int k = 0; k < STARTS.length; k += 2) {
             double u = u0 + STARTS[k] * (u1 - u0), v = v0 + STARTS[k + 1] * (v1 - v0);
             int r = RayPatchNewton.solve(ctx, tab, tab.parent[s], u, v, MAX_STEPS, uLo, uHi, vLo, vHi, tolerance);
-            if (r == RayPatchNewton.CONVERGED && ctx.rootT > tMin && ctx.rootT < tMax) {
-                ctx.rootU = Math.min(1, Math.max(0, ctx.rootU));
-                ctx.rootV = Math.min(1, Math.max(0, ctx.rootV));
+            if (accept(ctx, r, tMin, tMax)) {
                 return true;
             }
+            if (k == 0 && !Double.isNaN(ctx.escapeU)) {
+                escapeU = Math.min(uHi, Math.max(uLo, ctx.escapeU));
+                escapeV = Math.min(vHi, Math.max(vLo, ctx.escapeV));
+            }
+        }
+        return !Double.isNaN(escapeU) && accept(ctx, RayPatchNewton.solve(ctx, tab, tab.parent[s], escapeU, escapeV,
+                MAX_STEPS, uLo, uHi, vLo, vHi, tolerance), tMin, tMax);
+    }
+
+    /** A converged root in {@code (tMin, tMax)}, its parameters clamped to the patch. */
+    private static boolean accept(TraceContext ctx, int result, double tMin, double tMax) {
+        if (result == RayPatchNewton.CONVERGED && ctx.rootT > tMin && ctx.rootT < tMax) {
+            ctx.rootU = Math.min(1, Math.max(0, ctx.rootU));
+            ctx.rootV = Math.min(1, Math.max(0, ctx.rootV));
+            return true;
         }
         return false;
     }

@@ -1,7 +1,7 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.PatchNormals;
+import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
 
@@ -12,8 +12,10 @@ import org.beziertracer.model.Scene;
  * parent patch (reusing the solver's last evaluation when it ended at exactly the hit).
  *
  * <p>A new solver is a subclass with its own {@link #solve} and {@link #with}, named by a
- * {@link Method} constant; a trimmed patch can wrap another {@code PatchLeaves} and reject the roots
- * outside its trim in {@link #solve}; a rational patch overrides {@link #surfacePoint} too.
+ * {@link Method} constant. Rational patches need nothing here beyond their evaluation (the solvers
+ * handle their leaves, {@link RationalNets}); a scene with trimmed patches gets its solver wrapped
+ * in {@link TrimmedLeaves}. Hits of pieces of free-form surfaces report the surface's own (u,v)
+ * ({@link #completeHit}, {@link SurfaceParameters}).
  *
  * <p>Immutable; shared by render threads, each with its own {@link TraceContext}.
  */
@@ -40,7 +42,7 @@ abstract class PatchLeaves implements Leaves {
     /** Pre-splits the scene's patches as {@code options} say and picks the solver of its method. */
     static PatchLeaves build(Scene scene, IntersectOptions options, double sceneSize) {
         SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit());
-        return options.method().leaves.create(table, RELATIVE_TOLERANCE * sceneSize);
+        return TrimmedLeaves.ifTrimmed(options.method().leaves.create(table, RELATIVE_TOLERANCE * sceneSize));
     }
 
     /**
@@ -76,27 +78,41 @@ abstract class PatchLeaves implements Leaves {
         return solve(ctx, s, ctx.tMin, tMax);
     }
 
+    /** A hit on a piece of a free-form surface reports the surface's own (u,v). */
+    @Override
+    public final void completeHit(Hit hit) {
+        SurfaceParameters.toSurface(table.patchDomain, hit);
+    }
+
     /**
-     * Position, derivatives and unit normal on the parent patch at the hit's (u,v); when the
-     * solver's last evaluation was at exactly that point of that patch (Newton ends there), it is
-     * reused instead of evaluated again (bit-identical).
+     * Position, derivatives and unit normal on the parent patch at the hit's (u,v) (a rational
+     * patch through its homogeneous net); when the solver's last evaluation was at exactly that
+     * point of that patch (Newton ends there), it is reused instead of evaluated again
+     * (bit-identical). For a piece of a free-form surface the derivatives are with respect to the
+     * surface's parameters, which the hit reports.
      */
     @Override
     public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
         int k = hit.index;
-        int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
+        int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k], dim = table.patchDim[k];
+        double[] domain = table.patchDomain;
+        boolean plain = SurfaceParameters.unit(domain, k);
+        double u = plain ? hit.u : SurfaceParameters.s(domain, k, hit.u);
+        double v = plain ? hit.v : SurfaceParameters.t(domain, k, hit.v);
         double[] e = ctx.hitEval;
-        if (ctx.hitEvalPatch != k || ctx.hitEvalU != hit.u || ctx.hitEvalV != hit.v) {
+        if (ctx.hitEvalPatch != k || ctx.hitEvalU != u || ctx.hitEvalV != v) {
             // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
             e = ctx.eval;
             ctx.evalPatch = -1;
-            DeCasteljau.evaluateWithDerivatives(table.patchNets, off, n, m, hit.u, hit.v, e, ctx.scratch);
+            RationalDeCasteljau.pointAndDerivatives(table.patchNets, off, n, m, dim, u, v, e, ctx.scratch);
         }
+        double du = plain ? 1 : 1 / (domain[4 * k + 1] - domain[4 * k]);
+        double dv = plain ? 1 : 1 / (domain[4 * k + 3] - domain[4 * k + 2]);
         sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
-        sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
-        sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
+        sp.dpdux = e[3] * du; sp.dpduy = e[4] * du; sp.dpduz = e[5] * du;
+        sp.dpdvx = e[6] * dv; sp.dpdvy = e[7] * dv; sp.dpdvz = e[8] * dv;
         double[] nrm = ctx.normal;
-        PatchNormals.unitNormal(table.patchNets, off, n, m, hit.u, hit.v, e, table.patchSquaredExtent[k], nrm, 0,
+        PatchNormals.unitNormal(table.patchNets, off, n, m, dim, u, v, e, table.patchSquaredExtent[k], nrm, 0,
                 ctx.scratch);
         sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
     }
@@ -104,14 +120,34 @@ abstract class PatchLeaves implements Leaves {
     /** Re-splits only the edited patch ({@link SubPatchTable#withPatch}). */
     @Override
     public final PatchLeaves withPatch(Scene edited, int index, double sceneSize) {
-        return with(table.withPatch(index, edited.patches().get(index)), RELATIVE_TOLERANCE * sceneSize);
+        return TrimmedLeaves.ifTrimmed(with(table.withPatch(index, edited.patches().get(index)),
+                RELATIVE_TOLERANCE * sceneSize));
     }
+
+    /** Re-splits only the edited patches, in one new table ({@link SubPatchTable#withPatches}). */
+    @Override
+    public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
+        java.util.List<org.beziertracer.model.BezierPatch> replacements = new java.util.ArrayList<>(indices.length);
+        for (int index : indices) {
+            replacements.add(edited.patches().get(index));
+        }
+        return with(table.withPatches(indices, replacements), RELATIVE_TOLERANCE * sceneSize);
+    }
+
+    @Override
+    public final long bytes() { return table.bytes(); }
 
     @Override
     public final int count() { return table.count; }
 
     @Override
-    public final double[] bounds() { return table.bounds; }
+    public final double[] bounds(int first, int n) { return table.bounds(first, n); }
+
+    @Override
+    public final int firstLeaf(int k) { return table.firstOf[k]; }
+
+    @Override
+    public final int leafCount(int k) { return table.countOf(k); }
 
     @Override
     public final int subPatchCount() { return table.count; }

@@ -1,6 +1,6 @@
 package org.beziertracer.intersect;
 
-import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
@@ -8,7 +8,9 @@ import org.beziertracer.geometry.SubPatchTable;
  * {@code n1·(S(u,v)−o) = 0} and {@code n2·(S(u,v)−o) = 0}, a 2×2 system whose Jacobian is
  * {@code [n1·Su n1·Sv; n2·Su n2·Sv]} (memoir ch. I 3.3.3.3; Toth, "On ray tracing parametric
  * surfaces", SIGGRAPH 1985). Works on the parent patch's own net, so a root is found to full
- * double precision whatever sub-patch produced the start.
+ * double precision whatever sub-patch produced the start. A rational patch is evaluated through
+ * its homogeneous net with the exact rational Jacobian (the quotient rule,
+ * {@link RationalDeCasteljau#evaluateWithDerivatives}); a polynomial one exactly as before.
  */
 final class RayPatchNewton {
     private RayPatchNewton() {}
@@ -30,11 +32,12 @@ final class RayPatchNewton {
                      double uLo, double uHi, double vLo, double vHi, double tolerance) {
         double[] net = table.patchNets;
         int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
+        int dim = table.patchDim[k];
         double[] e = ctx.eval;
         ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
         int result = DIVERGED;
         for (int step = 0; step <= maxSteps; step++) {
-            DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
+            RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
             double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
             double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
             double f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
@@ -69,12 +72,14 @@ final class RayPatchNewton {
             u += du;
             v += dv;
             if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
+                ctx.escapeU = u; // where the iteration left the box (NewtonSolver may restart there)
+                ctx.escapeV = v;
                 return DIVERGED;
             }
             if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15) {
                 result = CONVERGED;
                 // one more evaluation at the final iterate for t
-                DeCasteljau.evaluateWithDerivatives(net, off, n, m, u, v, e, ctx.scratch);
+                RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
                 qx = e[0] - ctx.ox; qy = e[1] - ctx.oy; qz = e[2] - ctx.oz;
                 f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
                 f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
@@ -121,8 +126,8 @@ final class RayPatchNewton {
         }
         double[] net = table.patchNets;
         double[] g = ctx.refineEval;
-        DeCasteljau.evaluateWithDerivatives(net, table.patchNetOffset[k], table.patchDegreeU[k],
-                table.patchDegreeV[k], u, v, g, ctx.scratch);
+        RationalDeCasteljau.pointAndDerivatives(net, table.patchNetOffset[k], table.patchDegreeU[k],
+                table.patchDegreeV[k], table.patchDim[k], u, v, g, ctx.scratch);
         qx = g[0] - ctx.ox; qy = g[1] - ctx.oy; qz = g[2] - ctx.oz;
         double g1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
         double g2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;

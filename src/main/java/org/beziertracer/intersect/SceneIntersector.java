@@ -63,8 +63,9 @@ public final class SceneIntersector {
     }
 
     private static Accelerator buildAccel(Leaves leaves, IntersectOptions options) {
-        return options.bvh() ? Bvh.build(leaves.bounds(), leaves.count(), options.bvhOptions())
-                : FlatList.build(leaves.bounds(), leaves.count());
+        double[] bounds = leaves.bounds(0, leaves.count());
+        return options.bvh() ? Bvh.build(bounds, leaves.count(), options.bvhOptions())
+                : FlatList.build(bounds, leaves.count());
     }
 
     /**
@@ -73,13 +74,31 @@ public final class SceneIntersector {
      * when the number of leaves is unchanged, else rebuilt.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
+        return withPatches(scene.withPatch(index, patch), new int[] {index});
+    }
+
+    /**
+     * A new snapshot of {@code edited}, a scene that differs from this one's only in the patches
+     * {@code indices} (the same number of patches, planes, spheres and materials): those patches'
+     * leaves are remade in one pass and the BVH is refitted once (rebuilt when the number of leaves
+     * changed). An edit that moves a point shared by several patches builds one new scene and
+     * calls this once, rather than {@link #withPatch} once per copy.
+     */
+    public SceneIntersector withPatches(Scene edited, int[] indices) {
         long t0 = System.nanoTime();
-        Scene edited = scene.withPatch(index, patch);
         double size = sizeOf(edited);
-        Leaves newLeaves = leaves.withPatch(edited, index, size);
+        Leaves newLeaves = leaves.withPatches(edited, indices, size);
         Accelerator newAccel;
         if (newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
-            newAccel = bvh.refit(newLeaves.bounds());
+            // Same number of leaves: only the edited patches' moved; refit the range that covers
+            // their leaves (and the ancestors)
+            int first = Integer.MAX_VALUE, end = 0;
+            for (int index : indices) {
+                first = Math.min(first, newLeaves.firstLeaf(index));
+                end = Math.max(end, newLeaves.firstLeaf(index) + newLeaves.leafCount(index));
+            }
+            int n = Math.max(0, end - first);
+            newAccel = n == 0 ? accel : bvh.refit(newLeaves.bounds(first, n), first, n);
         } else {
             newAccel = buildAccel(newLeaves, options);
         }
@@ -198,6 +217,12 @@ public final class SceneIntersector {
     public int primitiveCount() { return accel.primCount(); }
 
     public int nodeCount() { return accel.nodeCount(); }
+
+    /** Heap held by the leaves' data (sub-patch table or triangle mesh), in bytes. */
+    public long leafBytes() { return leaves.bytes(); }
+
+    /** Heap held by the acceleration structure's nodes (BVH or box list), in bytes. */
+    public long accelBytes() { return accel.bytes(); }
 
     public int depth() { return accel.depth(); }
 

@@ -10,7 +10,8 @@ import org.beziertracer.math.Bounds;
  * the best hit are dropped; a small piece's control mesh is intersected as triangles (two per
  * quad), interpolating t and (u,v). The result is an approximation: its error is the distance
  * between the control mesh and the surface, which shrinks quadratically with the piece size.
- * Kept for comparison.
+ * A rational leaf is halved through its homogeneous ray-space net ({@link RationalNets}) and its
+ * small pieces' Euclidean control meshes are intersected. Kept for comparison.
  */
 final class SubdivisionSolver {
     private SubdivisionSolver() {}
@@ -33,6 +34,10 @@ final class SubdivisionSolver {
         double leafV0 = tab.boxes[4 * s + 2], leafDv = tab.boxes[4 * s + 3] - leafV0;
         double tiny = TINY * BezierClipper.leafSize(tab, s);
         ctx.project(tab.nets, tab.netOffset[s], points, arena, 0);
+        boolean rational = RationalNets.rational(tab, s);
+        if (rational) {
+            RationalNets.weigh(ctx, tab, s, points);
+        }
         boxes[0] = 0; boxes[1] = 1; boxes[2] = 0; boxes[3] = 1;
         int sp = 1, steps = 0;
         ctx.pieceBestT = tMax;
@@ -42,7 +47,11 @@ final class SubdivisionSolver {
             int w = sp - 1, base = w * len, b4 = 4 * w;
             // Ray-space bounds of the piece: the ray must pass through it, within (tMin, best)
             double[] rb = ctx.rayBounds;
-            Bounds.ofPoints(arena, base, points, rb);
+            if (rational) {
+                RationalNets.rayBounds(ctx, w, points, rb);
+            } else {
+                Bounds.ofPoints(arena, base, points, rb);
+            }
             double min1 = rb[0], min2 = rb[1], min3 = rb[2], max1 = rb[3], max2 = rb[4], max3 = rb[5];
             if (min1 > tolerance || max1 < -tolerance || min2 > tolerance || max2 < -tolerance
                     || min3 * invLength >= ctx.pieceBestT || max3 * invLength <= tMin) {
@@ -50,13 +59,19 @@ final class SubdivisionSolver {
                 continue;
             }
             if (Math.max(max1 - min1, max2 - min2) <= tiny || sp == TraceContext.MAX_ENTRIES) {
+                if (rational) {
+                    RationalNets.toEuclidean(ctx, w, points); // the control mesh of Euclidean points
+                }
                 intersectControlMesh(ctx, base, n, m, b4, tMin);
                 sp--;
                 continue;
             }
             // Halve the longer direction (in ray space) and visit the nearer half first
             boolean inU = PatchExtents.rayLengthU(arena, base, n, m) >= PatchExtents.rayLengthV(arena, base, n, m);
-            BezierClipper.split(ctx, arena, base, len, n, m, boxes, b4, inU);
+            boolean swapped = BezierClipper.split(ctx, arena, base, len, n, m, boxes, b4, inU);
+            if (rational) {
+                RationalNets.split(ctx, w, n, m, inU, swapped);
+            }
             sp++;
         }
         if (ctx.pieceFound) {

@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.TrimCurves;
 
 /**
  * Per-thread scratch for ray queries: the current ray and its ray-space frame, the BVH stack,
@@ -40,6 +41,10 @@ public final class TraceContext {
     /** BVH traversal stack; grown (rarely, outside the per-ray loop) when a deeper BVH arrives. */
     int[] stack = new int[256];
     final double[] arena = new double[MAX_ENTRIES * NET_LENGTH];
+    /** The weights of the arena's nets, for rational leaves ({@link RationalNets}); same slots. */
+    final double[] weightArena = new double[MAX_ENTRIES * RationalNets.WEIGHT_SLOT];
+    /** Scratch of the trim test ({@link TrimmedLeaves}). */
+    final double[] trimScratch = new double[TrimCurves.SCRATCH_LENGTH];
     final double[] entryBoxes = new double[MAX_ENTRIES * 4];
     final int[] entryDepth = new int[MAX_ENTRIES];
     final double[] tmpNet = new double[NET_LENGTH];
@@ -82,6 +87,10 @@ public final class TraceContext {
     boolean pieceFound;
     /** Bézier clipping: Newton attempts on single-root pieces of the leaf so far. */
     int clipNewtonTries;
+    /** Bézier clipping: the leaf is rational (its arena nets are weighted, {@link RationalNets}). */
+    boolean leafRational;
+    /** The iterate with which the last diverged Newton solve left its box. */
+    double escapeU, escapeV;
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;

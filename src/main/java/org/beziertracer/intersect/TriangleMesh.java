@@ -3,6 +3,7 @@ package org.beziertracer.intersect;
 import java.util.List;
 
 import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
 
@@ -72,6 +73,14 @@ final class TriangleMesh {
         long mesh = vertices * (3 * 8 + 3 * 8 + 2 * 8) + triangles * (3 * 4 + 4);
         long own = triangles * (9 * 8 + 6 * 8 + 4);
         return 2 * mesh + own;                                 // the mesh's arrays exist twice while it copies them
+    }
+
+    /** Heap held by the mesh and this class's arrays, in bytes. */
+    long bytes() {
+        int v = mesh.vertexCount(), t = mesh.triangleCount();
+        return HeapBytes.array(3L * v, 8) + HeapBytes.array(3L * v, 8) + HeapBytes.array(2L * v, 8)
+                + HeapBytes.array(3L * t, 4) + HeapBytes.array(t, 4)
+                + HeapBytes.of(corners) + HeapBytes.of(bounds) + HeapBytes.of(patchOf);
     }
 
     /** Tessellates every patch with {@code k×k} cells (build time; allocates). */

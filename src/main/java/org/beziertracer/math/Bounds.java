@@ -12,6 +12,11 @@ public final class Bounds {
      * {@code xyz[offset]} into {@code dest[0..5]}.
      */
     public static void ofPoints(double[] xyz, int offset, int count, double[] dest) {
+        ofPoints(xyz, offset, count, dest, 0);
+    }
+
+    /** As {@link #ofPoints(double[], int, int, double[])}, into {@code dest[d..d+5]}. */
+    public static void ofPoints(double[] xyz, int offset, int count, double[] dest, int d) {
         double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX;
         double maxX = Double.NEGATIVE_INFINITY, maxY = maxX, maxZ = maxX;
         for (int k = 0, p = offset; k < count; k++, p += 3) {
@@ -23,7 +28,7 @@ public final class Bounds {
             if (z < minZ) minZ = z;
             if (z > maxZ) maxZ = z;
         }
-        dest[0] = minX; dest[1] = minY; dest[2] = minZ;
-        dest[3] = maxX; dest[4] = maxY; dest[5] = maxZ;
+        dest[d] = minX; dest[d + 1] = minY; dest[d + 2] = minZ;
+        dest[d + 3] = maxX; dest[d + 4] = maxY; dest[d + 5] = maxZ;
     }
 }

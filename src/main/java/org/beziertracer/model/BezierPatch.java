@@ -1,6 +1,7 @@
 package org.beziertracer.model;
 
 import java.util.Arrays;
+import java.util.Objects;
 
 import org.beziertracer.math.Aabb;
 
@@ -13,10 +14,18 @@ import org.beziertracer.math.Aabb;
  * <b>u index varying fastest</b>: point {@code k = j*(n+1) + i} holds {@code P_ij}, and its
  * coordinates are at {@code 3k, 3k+1, 3k+2}. This is the order of the BPT file format.
  *
- * <p>The surface is {@code S(u,v) = Σ_i Σ_j B_i^n(u) B_j^m(v) P_ij} on {@code [0,1]²}.
+ * <p>The surface is {@code S(u,v) = Σ_i Σ_j B_i^n(u) B_j^m(v) P_ij} on {@code [0,1]²}. A
+ * <b>rational</b> patch has a positive weight {@code w_ij} per control point (same order) and is
+ * {@code S(u,v) = Σ w_ij P_ij B_i^n(u) B_j^m(v) / Σ w_ij B_i^n(u) B_j^m(v)}; a patch whose weights
+ * are all exactly 1 is stored as polynomial ({@link #weights()} is null), so it keeps the
+ * polynomial code paths and their results bit for bit.
+ *
+ * <p>A patch cut from a free-form surface also carries its {@link PatchDomain} (the part of the
+ * surface's parameter domain it covers, and the surface's trim loops) and its
+ * {@link PatchOrigin}; a plain patch has neither.
  *
  * <p>Instances are immutable and safe to share between threads: the constructor copies the
- * array and {@link #copyNet()} returns a copy. Degrees run from 1 to {@value #MAX_DEGREE}.
+ * arrays and {@link #copyNet()} returns a copy. Degrees run from 1 to {@value #MAX_DEGREE}.
  */
 public final class BezierPatch {
 
@@ -26,15 +35,31 @@ public final class BezierPatch {
     private final int n;
     private final int m;
     private final double[] net;
+    /** Null for a polynomial patch. */
+    private final double[] weights;
+    /** Null for {@code [0,1]²} untrimmed. */
+    private final PatchDomain domain;
+    private final PatchOrigin origin;
+
+    /** A polynomial patch; see {@link #BezierPatch(int, int, double[], double[], PatchDomain, PatchOrigin)}. */
+    public BezierPatch(int n, int m, double[] net) {
+        this(n, m, net, null, null, null);
+    }
 
     /**
      * @param n   degree in u, 1..{@value #MAX_DEGREE}
      * @param m   degree in v, 1..{@value #MAX_DEGREE}
      * @param net {@code (n+1)(m+1)*3} finite coordinates, u fastest (copied)
-     * @throws IllegalArgumentException for a degree out of range, a wrong array length or a
-     *                                  NaN/infinite coordinate
+     * @param weights null (polynomial) or {@code (n+1)(m+1)} positive finite weights (copied);
+     *                all 1 gives a polynomial patch
+     * @param domain  null or the patch's part of its surface's domain ({@link PatchDomain#UNIT}
+     *                counts as none)
+     * @param origin  null or the free-form surface the patch was cut from
+     * @throws IllegalArgumentException for a degree out of range, a wrong array length, a
+     *                                  NaN/infinite coordinate or a weight that is not positive
+     *                                  and finite
      */
-    public BezierPatch(int n, int m, double[] net) {
+    public BezierPatch(int n, int m, double[] net, double[] weights, PatchDomain domain, PatchOrigin origin) {
         checkDegree("u", n);
         checkDegree("v", m);
         if (net == null) {
@@ -52,9 +77,60 @@ public final class BezierPatch {
                         + ") has a non-finite " + "xyz".charAt(k % 3) + " coordinate: " + net[k]);
             }
         }
+        if (weights != null) {
+            checkWeights(weights, (n + 1) * (m + 1));
+        }
         this.n = n;
         this.m = m;
         this.net = net.clone();
+        this.weights = weights == null || allOnes(weights) ? null : weights.clone();
+        this.domain = domain == null || domain.isUnit() ? null : domain;
+        this.origin = origin;
+    }
+
+    /**
+     * A patch from a net of {@code dim = 3} Euclidean points, or of {@code dim = 4} homogeneous
+     * points {@code (w·x, w·y, w·z, w)} (divided out here).
+     */
+    public static BezierPatch fromNet(int n, int m, double[] net, int dim, PatchDomain domain, PatchOrigin origin) {
+        if (dim == 3) {
+            return new BezierPatch(n, m, net, null, domain, origin);
+        }
+        int count = net.length / 4;
+        double[] xyz = new double[3 * count], w = new double[count];
+        for (int k = 0; k < count; k++) {
+            w[k] = net[4 * k + 3];
+            xyz[3 * k] = net[4 * k] / w[k];
+            xyz[3 * k + 1] = net[4 * k + 1] / w[k];
+            xyz[3 * k + 2] = net[4 * k + 2] / w[k];
+        }
+        return new BezierPatch(n, m, xyz, w, domain, origin);
+    }
+
+    /**
+     * Throws an {@link IllegalArgumentException} unless {@code weights} holds {@code count}
+     * positive finite values.
+     */
+    public static void checkWeights(double[] weights, int count) {
+        if (weights.length != count) {
+            throw new IllegalArgumentException("expected " + count + " weights (one per control point), got "
+                    + weights.length);
+        }
+        for (int k = 0; k < count; k++) {
+            if (!(weights[k] > 0 && weights[k] < Double.POSITIVE_INFINITY)) {
+                throw new IllegalArgumentException("expected positive finite weights, found " + weights[k]
+                        + " for control point " + (k + 1));
+            }
+        }
+    }
+
+    private static boolean allOnes(double[] weights) {
+        for (double w : weights) {
+            if (w != 1) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Throws an {@link IllegalArgumentException} naming the direction when a degree is out of range. */
@@ -87,27 +163,58 @@ public final class BezierPatch {
         System.arraycopy(net, 0, dest, offset, net.length);
     }
 
-    /** A new patch with control point {@code P_ij} moved to {@code (x,y,z)}. */
+    /** True when the patch has weights (not all 1). */
+    public boolean isRational() { return weights != null; }
+
+    /** A copy of the weights (layout of the points), or null for a polynomial patch. */
+    public double[] weights() { return weights == null ? null : weights.clone(); }
+
+    /** Weight of {@code P_ij} (1 for a polynomial patch). */
+    public double weight(int i, int j) { return weights == null ? 1 : weights[j * (n + 1) + i]; }
+
+    /** The patch's part of its surface's parameter domain; {@link PatchDomain#UNIT} when it has none. */
+    public PatchDomain domain() { return domain == null ? PatchDomain.UNIT : domain; }
+
+    /** The trim region of the patch's surface, or null when untrimmed. */
+    public TrimRegion trim() { return domain == null ? null : domain.trim(); }
+
+    /** The free-form surface the patch was cut from, or null. */
+    public PatchOrigin origin() { return origin; }
+
+    /**
+     * A new patch with control point {@code P_ij} moved to {@code (x,y,z)}; weights and domain
+     * are kept, the origin is dropped (the patch no longer matches its surface).
+     */
     public BezierPatch withPoint(int i, int j, double x, double y, double z) {
         double[] copy = net.clone();
         int k = index(i, j, 0);
         copy[k] = x;
         copy[k + 1] = y;
         copy[k + 2] = z;
-        return new BezierPatch(n, m, copy);
+        return withNet(copy);
     }
 
-    /** Axis-aligned box of the control points; by the convex-hull property it contains the surface. */
+    /** A new patch with another net of the same size; weights and domain kept, origin dropped. */
+    public BezierPatch withNet(double[] newNet) {
+        return new BezierPatch(n, m, newNet, weights, domain, null);
+    }
+
+    /**
+     * Axis-aligned box of the control points; by the convex-hull property it contains the surface
+     * (for a rational patch too, its weights being positive).
+     */
     public Aabb controlBounds() { return Aabb.ofPoints(net); }
 
+    /** Equal patches have equal geometry, weights and domain; the origin does not count. */
     @Override
     public boolean equals(Object o) {
-        return o instanceof BezierPatch p && p.n == n && p.m == m && Arrays.equals(p.net, net);
+        return o instanceof BezierPatch p && p.n == n && p.m == m && Arrays.equals(p.net, net)
+                && Arrays.equals(p.weights, weights) && Objects.equals(p.domain, domain);
     }
 
     @Override
-    public int hashCode() { return 31 * (31 * n + m) + Arrays.hashCode(net); }
+    public int hashCode() { return 31 * (31 * (31 * n + m) + Arrays.hashCode(net)) + Arrays.hashCode(weights); }
 
     @Override
-    public String toString() { return "BezierPatch[" + n + "x" + m + "]"; }
+    public String toString() { return "BezierPatch[" + n + "x" + m + (weights == null ? "" : ", rational") + "]"; }
 }

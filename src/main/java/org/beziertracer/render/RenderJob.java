@@ -4,7 +4,10 @@ import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.math.Aabb;
+import java.util.List;
+
 import org.beziertracer.math.Vec3;
+import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
@@ -19,13 +22,24 @@ import org.beziertracer.model.Sphere;
  * (and the tessellation the options ask for);
  * {@link #prepare} does that. An edit of one patch can reuse the old snapshot via
  * {@link SceneIntersector#withPatch} in a new job.
+ *
+ * <p>{@code lights}, when not null, replaces the scene's lights for shading only (the desktop
+ * app's light placements, some of which follow the camera): a light that moves then needs no
+ * new intersector.
  */
-public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options) {
+public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options,
+                        List<PointLight> lights) {
 
     public RenderJob {
         if (intersector == null || camera == null || settings == null || options == null) {
             throw new IllegalArgumentException("intersector, camera, settings and options are required");
         }
+        lights = lights == null ? null : List.copyOf(lights);
+    }
+
+    /** A job lit by the scene's own lights (or, with none, by one light at the eye). */
+    public RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options) {
+        this(intersector, camera, settings, options, null);
     }
 
     /**
@@ -78,8 +92,11 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
 
     public SamplerKind sampler() { return SamplerKind.parse(settings.sampler()); }
 
-    public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options); }
+    public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options, lights); }
 
     /** Same intersector: only for options with the same {@link RenderOptions#tessellate()}. */
-    public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o); }
+    public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o, lights); }
+
+    /** The same job shaded with {@code l} instead of the scene's lights (null: the scene's own). */
+    public RenderJob withLights(List<PointLight> l) { return new RenderJob(intersector, camera, settings, options, l); }
 }

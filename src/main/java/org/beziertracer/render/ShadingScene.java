@@ -14,8 +14,9 @@ import org.beziertracer.model.Scene;
  * checkerSquares, r2, g2, b2}; {@code lights[6 * k + …] = x, y, z, r, g, b}. Primitive materials:
  * {@code patchMaterial[k]}, {@code planeMaterial[k]}, {@code sphereMaterial[k]}.
  *
- * <p>With no lights in the scene there is one white light at the camera's eye (the memoir's light
- * at the centre of projection), so it follows the camera as it orbits.
+ * <p>The job's own lights, when it has them, replace the scene's. With no lights in the scene there
+ * is one white light at the camera's eye (the memoir's light at the centre of projection), so it
+ * follows the camera as it orbits.
  */
 final class ShadingScene {
     static final int MAT_STRIDE = 14;
@@ -60,8 +61,8 @@ final class ShadingScene {
         }
         planeMaterial = scene.planes().stream().mapToInt(p -> p.material()).toArray();
         sphereMaterial = scene.spheres().stream().mapToInt(s -> s.material()).toArray();
-        List<PointLight> ls = scene.lights().isEmpty()
-                ? List.of(new PointLight(job.camera().eye())) : scene.lights();
+        List<PointLight> ls = job.lights() != null ? job.lights()
+                : scene.lights().isEmpty() ? List.of(new PointLight(job.camera().eye())) : scene.lights();
         lightCount = ls.size();
         lights = new double[6 * lightCount];
         for (int k = 0; k < lightCount; k++) {

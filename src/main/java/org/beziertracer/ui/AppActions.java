@@ -15,12 +15,16 @@ import javax.swing.AbstractAction;
 import javax.swing.Action;
 import javax.swing.KeyStroke;
 
+import java.nio.file.Path;
+
 import org.beziertracer.app.AppModel;
+import org.beziertracer.app.AppPreferences;
 import org.beziertracer.app.EditCommands;
 import org.beziertracer.app.EditHistory;
 import org.beziertracer.app.FileCommands;
 import org.beziertracer.app.Level;
 import org.beziertracer.app.ModelLoader;
+import org.beziertracer.app.SelectionCommands;
 import org.beziertracer.app.SettingsModel;
 import org.beziertracer.app.Toggle;
 
@@ -34,6 +38,7 @@ public final class AppActions {
 
     private static final int CTRL = InputEvent.CTRL_DOWN_MASK;
     private static final int SHIFT = InputEvent.SHIFT_DOWN_MASK;
+    private static final int ALT = InputEvent.ALT_DOWN_MASK;
 
     private final AppModel app;
     private final Map<String, Action> byId = new LinkedHashMap<>();
@@ -49,7 +54,9 @@ public final class AppActions {
                       Runnable quit) {
         this.app = app;
         addFileActions(app.files(), picture, quit);
+        addRecentActions();
         addEditActions(app.edits());
+        addSelectionActions(app.selections());
         addViewActions(app.settings());
         addRenderActions(app.settings());
         Action theme = add("dark", "Dark Theme", "Switch between the light and the dark theme", key(KeyEvent.VK_T, CTRL | SHIFT),
@@ -68,9 +75,54 @@ public final class AppActions {
         add("saveAs", "Save As…", "Save the edited surface to a new BPT or OBJ file", key(KeyEvent.VK_S, CTRL | SHIFT), f::saveAs);
         add("exportPng", "Export Picture (PNG)…", "Save the current picture as a PNG image", key(KeyEvent.VK_E, CTRL),
                 () -> f.export("Export picture", "png", () -> PngFiles.content(picture.get())));
+        add("exportImage", "Export Image…", "Ray trace the current view off screen at a size, samples per pixel and "
+                + "sampler of your choice and save it as a PNG image (progress and Cancel in the status bar)",
+                key(KeyEvent.VK_E, CTRL | ALT), () -> app.export().export(PngFiles::encoder));
         add("exportMesh", "Export Mesh (OBJ)…", "Tessellate the surface into triangles and save an OBJ mesh",
                 key(KeyEvent.VK_E, CTRL | SHIFT), f::exportMesh);
         add("quit", "Quit", "Close the app (asks about unsaved edits)", key(KeyEvent.VK_Q, CTRL), quit);
+    }
+
+    /** File → Open Recent: one action per place in the list, named after the file there ({@link #refresh}). */
+    private void addRecentActions() {
+        for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
+            int place = k;
+            add("recent" + k, " ", "Open this file again", key(KeyEvent.VK_1 + k, CTRL), () -> openRecent(place));
+        }
+    }
+
+    private void openRecent(int place) {
+        java.util.List<Path> recent = app.prefs().recentFiles();
+        if (place < recent.size()) {
+            app.files().openRecent(recent.get(place));
+        }
+    }
+
+    /** Files in File → Open Recent now. */
+    public int recentCount() { return app.prefs().recentFiles().size(); }
+
+    private void addSelectionActions(SelectionCommands c) {
+        add("selectAll", "Select All", "Select every control point (welded copies together)", key(KeyEvent.VK_A, CTRL),
+                c::selectAll);
+        add("clearSelection", "Clear Selection", "Select no control point (also a click on empty space)",
+                key(KeyEvent.VK_ESCAPE, 0), c::clear);
+        String tip = " in the plane of the screen, " + SelectionCommands.NUDGE_PIXELS + " pixel (with Shift: "
+                + SelectionCommands.NUDGE_PIXELS * SelectionCommands.NUDGE_SHIFT_FACTOR + ")";
+        add("nudgeLeft", "Nudge Left", "Move the selected points left" + tip, key(KeyEvent.VK_LEFT, 0), () -> c.nudge(-1, 0));
+        add("nudgeRight", "Nudge Right", "Move the selected points right" + tip, key(KeyEvent.VK_RIGHT, 0), () -> c.nudge(1, 0));
+        add("nudgeUp", "Nudge Up", "Move the selected points up" + tip, key(KeyEvent.VK_UP, 0), () -> c.nudge(0, -1));
+        add("nudgeDown", "Nudge Down", "Move the selected points down" + tip, key(KeyEvent.VK_DOWN, 0), () -> c.nudge(0, 1));
+        int f = SelectionCommands.NUDGE_SHIFT_FACTOR;
+        add("nudgeLeft10", "Nudge Left ×10", "Move the selected points left" + tip, key(KeyEvent.VK_LEFT, SHIFT),
+                () -> c.nudge(-f, 0));
+        add("nudgeRight10", "Nudge Right ×10", "Move the selected points right" + tip, key(KeyEvent.VK_RIGHT, SHIFT),
+                () -> c.nudge(f, 0));
+        add("nudgeUp10", "Nudge Up ×10", "Move the selected points up" + tip, key(KeyEvent.VK_UP, SHIFT), () -> c.nudge(0, -f));
+        add("nudgeDown10", "Nudge Down ×10", "Move the selected points down" + tip, key(KeyEvent.VK_DOWN, SHIFT),
+                () -> c.nudge(0, f));
+        toggle("smoothJoins", Toggle.SMOOTH_JOINS, "Keep Tangent Continuity", "When a border point or its inner "
+                + "neighbour moves, the neighbour across the border follows, so the surface stays smooth where it was",
+                key(KeyEvent.VK_G, CTRL));
     }
 
     private void addEditActions(EditCommands e) {
@@ -103,6 +155,8 @@ public final class AppActions {
                 () -> s.step(Level.PERSPECTIVE, -10));
         add("gridU", "More Points along u", "Grid of a new patch: one more control point along u (2..10, wraps)",
                 key(KeyEvent.VK_U, CTRL | SHIFT), () -> s.cycle(Level.GRID_U));
+        toggle("inspector", Toggle.INSPECTOR, "Inspector", "Show the panel with the selected points' patch, indices "
+                + "and coordinates (type a value and press Enter to move them)", key(KeyEvent.VK_I, CTRL));
         add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",
                 key(KeyEvent.VK_V, CTRL | SHIFT), () -> s.cycle(Level.GRID_V));
     }
@@ -128,7 +182,10 @@ public final class AppActions {
                 key(KeyEvent.VK_K, CTRL | SHIFT), () -> s.cycle(Level.TESSELLATION));
         add("method", "Next Intersection Method", "Cycle clipping → Newton → subdivision", key(KeyEvent.VK_M, CTRL),
                 s::cycleMethod);
-        add("light", "Next Light Position", "Cycle the light position", key(KeyEvent.VK_L, CTRL), s::cycleLight);
+        add("light", "Next Light Position", "Cycle the light position (above left of the eye, at the eye, fixed "
+                + "beside the model, the scene's own)", key(KeyEvent.VK_L, CTRL), s::cycleLight);
+        toggle("showLight", Toggle.SHOW_LIGHT, "Show Light", "Draw the light as a marker in the view; drag the marker "
+                + "to move the light", key(KeyEvent.VK_L, CTRL | SHIFT));
         add("spp", "Next Samples per Pixel", "Cycle the super-sampling rate (4, 9, 16)", key(KeyEvent.VK_P, CTRL | SHIFT),
                 () -> s.cycle(Level.SAMPLES_PER_PIXEL));
         add("moreInteractive", "More Passes per Frame", "Show the picture after more progressive passes",
@@ -190,5 +247,19 @@ public final class AppActions {
         get("redo").setEnabled(h.canRedo());
         get("undo").putValue(Action.NAME, h.canUndo() ? "Undo " + h.undoName() : "Undo");
         get("redo").putValue(Action.NAME, h.canRedo() ? "Redo " + h.redoName() : "Redo");
+        java.util.List<Path> recent = app.prefs().recentFiles();
+        for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
+            Action a = get("recent" + k);
+            a.setEnabled(k < recent.size());
+            a.putValue(Action.NAME, k < recent.size() ? (k + 1) + "  " + recent.get(k).getFileName() : " ");
+            String where = k < recent.size() ? recent.get(k).toString() : "";
+            a.putValue(Action.SHORT_DESCRIPTION, "Open " + where + " again (" + keyText((KeyStroke)
+                    a.getValue(Action.ACCELERATOR_KEY)) + ")");
+        }
+        boolean selected = !app.selection().isEmpty();
+        for (String id : new String[] {"clearSelection", "nudgeLeft", "nudgeRight", "nudgeUp", "nudgeDown",
+                "nudgeLeft10", "nudgeRight10", "nudgeUp10", "nudgeDown10"}) {
+            get(id).setEnabled(selected);
+        }
     }
 }

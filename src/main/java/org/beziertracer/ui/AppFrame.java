@@ -18,9 +18,9 @@ import org.beziertracer.app.AppModel;
 import org.beziertracer.app.UserDialogs;
 
 /**
- * The main window: render panel in the centre, toolbox on the left, menu bar and status bar.
- * Views and Swing adapters only; the app itself is the {@link AppModel}. Closing asks about unsaved
- * edits.
+ * The main window: render panel in the centre, toolbox on the left, inspector on the right, menu
+ * bar and status bar; model files can be dropped on it. Views and Swing adapters only; the app
+ * itself is the {@link AppModel}. Closing asks about unsaved edits.
  */
 public final class AppFrame extends JFrame {
 
@@ -30,6 +30,7 @@ public final class AppFrame extends JFrame {
     private final RenderPanel renderPanel;
     private final ToolboxPanel toolbox;
     private final StatusBar statusBar;
+    private final InspectorPanel inspector;
 
     /**
      * @param newApp makes the app with the dialogs this window shows
@@ -44,6 +45,7 @@ public final class AppFrame extends JFrame {
         actions = new AppActions(app, renderPanel::snapshot, this::toggleTheme, theme::isDark, this::close);
         toolbox = new ToolboxPanel(app, actions);
         statusBar = new StatusBar(app);
+        inspector = new InspectorPanel(app);
         setJMenuBar(new AppMenuBar(actions, this::about));
         JScrollPane side = new JScrollPane(toolbox, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED,
                 JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
@@ -52,6 +54,8 @@ public final class AppFrame extends JFrame {
         getContentPane().add(side, BorderLayout.WEST);
         getContentPane().add(renderPanel, BorderLayout.CENTER);
         getContentPane().add(statusBar, BorderLayout.SOUTH);
+        getContentPane().add(inspector, BorderLayout.EAST);
+        setTransferHandler(new FileDrop(app.files()));
         bindExtraKeys();
         app.addListener(() -> setTitle(app.document().title()));
         setTitle(app.document().title());
@@ -100,4 +104,6 @@ public final class AppFrame extends JFrame {
     public ToolboxPanel toolbox() { return toolbox; }
 
     public StatusBar statusBar() { return statusBar; }
+
+    InspectorPanel inspector() { return inspector; }
 }

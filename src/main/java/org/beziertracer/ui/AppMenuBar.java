@@ -6,26 +6,39 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 
+import org.beziertracer.app.AppPreferences;
 import org.beziertracer.app.ModelLoader;
 
-/** File, Edit, Models, View, Render and Help menus, built from {@link AppActions}. */
+/** File, Edit, Models, View, Surface, Render and Help menus, built from {@link AppActions}. */
 public final class AppMenuBar extends JMenuBar {
 
     private final AppActions a;
+    private final JMenu recent = new JMenu("Open Recent");
+    private final JMenuItem noRecent = new JMenuItem("(no recent files)");
 
     public AppMenuBar(AppActions actions, Runnable about) {
         this.a = actions;
-        JMenu file = menu("File", 'F', "open", "save", "saveAs", null, "exportPng", "exportMesh", null, "quit");
-        JMenu edit = menu("Edit", 'E', "undo", "redo");
+        JMenu file = menu("File", 'F', "open");
+        file.add(recentMenu());
+        for (String id : new String[] {"save", "saveAs", null, "exportPng", "exportImage", "exportMesh", null, "quit"}) {
+            addItem(file, id);
+        }
+        JMenu edit = menu("Edit", 'E', "undo", "redo", null, "selectAll", "clearSelection");
+        JMenu nudge = menu("Nudge Selection", 'N', "nudgeLeft", "nudgeRight", "nudgeUp", "nudgeDown", null, "nudgeLeft10",
+                "nudgeRight10", "nudgeUp10", "nudgeDown10");
+        nudge.setName("menu.nudge");
+        edit.add(nudge);
+        edit.addSeparator();
+        edit.add(item("smoothJoins"));
         JMenu models = new JMenu("Models");
         models.setMnemonic('M');
         for (String name : ModelLoader.BUILT_INS) {
             models.add(item("model:" + name));
         }
         JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", null, "finer", "coarser", null,
-                "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "dark");
+                "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "inspector", "dark");
         JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
-        JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", null,
+        JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,
                 "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
         help.setMnemonic('H');
@@ -41,13 +54,50 @@ public final class AppMenuBar extends JMenuBar {
         JMenu m = new JMenu(title);
         m.setMnemonic(mnemonic);
         for (String id : ids) {
-            if (id == null) {
-                m.addSeparator();
-            } else {
-                m.add(item(id));
-            }
+            addItem(m, id);
         }
         return m;
+    }
+
+    private void addItem(JMenu m, String id) {
+        if (id == null) {
+            m.addSeparator();
+        } else {
+            m.add(item(id));
+        }
+    }
+
+    /** File → Open Recent: the recent files, shown as they are when the menu opens. */
+    private JMenu recentMenu() {
+        recent.setName("menu.openRecent");
+        recent.setMnemonic('R');
+        noRecent.setEnabled(false);
+        recent.add(noRecent);
+        for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
+            recent.add(item("recent" + k));
+        }
+        recent.addMenuListener(new javax.swing.event.MenuListener() {
+            @Override
+            public void menuSelected(javax.swing.event.MenuEvent e) { syncRecent(); }
+
+            @Override
+            public void menuDeselected(javax.swing.event.MenuEvent e) {}
+
+            @Override
+            public void menuCanceled(javax.swing.event.MenuEvent e) {}
+        });
+        syncRecent();
+        return recent;
+    }
+
+    /** Shows one item per recent file. */
+    void syncRecent() {
+        a.refresh();
+        int n = a.recentCount();
+        noRecent.setVisible(n == 0);
+        for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
+            recent.getItem(k + 1).setVisible(k < n);
+        }
     }
 
     private JMenuItem item(String id) {

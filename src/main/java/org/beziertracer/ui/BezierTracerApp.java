@@ -17,12 +17,30 @@ public final class BezierTracerApp {
     private BezierTracerApp() {}
 
     public static void main(String[] args) {
-        launch();
+        launch(args.length > 0 ? args[0] : null);
     }
 
-    /** Opens the main window with the user's preferences; returns at once (the app lives on the event thread). */
-    public static void launch() {
-        start(AppPreferences.user());
+    /**
+     * Opens the main window with the user's preferences, then — when {@code model} is not null —
+     * the file or built-in model it names; returns at once (the app lives on the event thread).
+     */
+    public static void launch(String model) {
+        start(AppPreferences.user(), model);
+    }
+
+    /**
+     * Opens the main window, then the file or built-in {@code model} names (when not null), and
+     * completes with the window once shown.
+     *
+     * @param prefs where the theme and recent files are kept (tests pass a node of their own)
+     */
+    public static CompletableFuture<AppFrame> start(AppPreferences prefs, String model) {
+        return start(prefs).thenApply(frame -> {
+            if (model != null) {
+                SwingUtilities.invokeLater(() -> frame.app().files().openArgument(model));
+            }
+            return frame;
+        });
     }
 
     /**
@@ -38,7 +56,7 @@ public final class BezierTracerApp {
                 Theme theme = new Theme(prefs);
                 theme.install();
                 AppFrame frame = new AppFrame(dialogs -> new AppModel(new RayTraceEngine(), dialogs,
-                        AppThreads.start(SwingUtilities::invokeLater)), theme);
+                        AppThreads.start(SwingUtilities::invokeLater), prefs), theme);
                 UncaughtErrors.install(frame);
                 frame.setVisible(true);
                 shown.complete(frame);

@@ -11,6 +11,13 @@ import org.beziertracer.model.io.AtomicFiles;
 final class PngFiles {
     private PngFiles() {}
 
+    /** What writes {@code argb} ({@code width × height}, row after row) as PNG (Export Image). */
+    static AtomicFiles.BinaryContent encoder(int width, int height, int[] argb) {
+        BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        img.setRGB(0, 0, width, height, argb, 0, width);
+        return content(img);
+    }
+
     /** What writes {@code image} as PNG; the image must not change afterwards. */
     static AtomicFiles.BinaryContent content(BufferedImage image) {
         return out -> {

@@ -6,6 +6,8 @@ import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.event.KeyAdapter;
+import java.awt.event.KeyEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
@@ -13,18 +15,22 @@ import java.awt.geom.AffineTransform;
 import java.awt.image.BufferedImage;
 
 import javax.swing.JComponent;
+import javax.swing.SwingUtilities;
 
 import org.beziertracer.app.AppModel;
+import org.beziertracer.app.Axis;
+import org.beziertracer.app.Modifiers;
 import org.beziertracer.app.Picture;
 import org.beziertracer.app.PointerTool;
 import org.beziertracer.app.Toggle;
 
 /**
  * Shows the ray-traced picture at <b>device</b> resolution (2 under {@code GDK_SCALE=2}) with the
- * overlay on top, and forwards mouse events, converted to device pixels, to the app's
- * {@link PointerTool}; its size goes to the app's view when it changes. Painting reads the
- * picture's pixels and the overlay snapshot and nothing else; it never renders and never calls
- * into the app.
+ * overlay on top, and forwards mouse events, converted to device pixels and with the modifier keys
+ * held, to the app's {@link PointerTool}, and the X, Y and Z keys (held while dragging to move
+ * along that axis); its size goes to the app's view when it changes. Painting reads the picture's
+ * pixels and the overlay snapshot and nothing else; it never renders and never calls into the
+ * app.
  */
 public final class RenderPanel extends JComponent {
 
@@ -43,14 +49,20 @@ public final class RenderPanel extends JComponent {
             @Override
             public void mousePressed(MouseEvent e) {
                 requestFocusInWindow();
-                p.pressed(x(e), y(e));
+                if (SwingUtilities.isLeftMouseButton(e)) {
+                    p.pressed(x(e), y(e), new Modifiers(e.isShiftDown(), e.isControlDown(), e.isAltDown()));
+                }
             }
 
             @Override
             public void mouseDragged(MouseEvent e) { p.dragged(x(e), y(e)); }
 
             @Override
-            public void mouseReleased(MouseEvent e) { p.released(x(e), y(e)); }
+            public void mouseReleased(MouseEvent e) {
+                if (SwingUtilities.isLeftMouseButton(e)) {
+                    p.released(x(e), y(e));
+                }
+            }
 
             @Override
             public void mouseMoved(MouseEvent e) {
@@ -64,12 +76,31 @@ public final class RenderPanel extends JComponent {
         addMouseListener(mouse);
         addMouseMotionListener(mouse);
         addMouseWheelListener(mouse);
+        addKeyListener(new KeyAdapter() {
+            @Override
+            public void keyPressed(KeyEvent e) { axisKey(e, true); }
+
+            @Override
+            public void keyReleased(KeyEvent e) { axisKey(e, false); }
+        });
         addComponentListener(new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) { syncSize(); }
         });
         addPropertyChangeListener("graphicsConfiguration", e -> syncSize());
         app.view().setRepaint(this::repaint);
+    }
+
+    private void axisKey(KeyEvent e, boolean down) {
+        Axis a = switch (e.getKeyCode()) {
+            case KeyEvent.VK_X -> Axis.X;
+            case KeyEvent.VK_Y -> Axis.Y;
+            case KeyEvent.VK_Z -> Axis.Z;
+            default -> null;
+        };
+        if (a != null && (!down || e.getModifiersEx() == 0)) {
+            app.pointer().axis(a, down);
+        }
     }
 
     private double x(MouseEvent e) { return e.getX() * deviceScale(); }

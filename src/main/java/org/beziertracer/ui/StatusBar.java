@@ -33,6 +33,7 @@ public final class StatusBar extends JPanel {
     private final JLabel method = label("intersection method, or \"tessellated K\" when the surface is rendered as K×K triangles per patch");
     private final JLabel bvh = label("sub-patch BVH and its measured speed-up over whole patches");
     private final JLabel model = label("patches and control points of the model");
+    private final JLabel selection = label("selected control points (welded copies count once)");
     private final JLabel message = label("last action");
     private final JProgressBar progress = new JProgressBar();
     private final JButton cancel = new JButton("Cancel");
@@ -42,13 +43,13 @@ public final class StatusBar extends JPanel {
         this.app = app;
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, getForeground().darker()));
         progress.setName("status.progress");
-        progress.setToolTipText("opening a model; the current one stays until it is read");
+        progress.setToolTipText("opening a model (the current one stays until it is read) or exporting an image");
         cancel.setName("status.cancel");
-        cancel.setToolTipText("stop opening the model and keep the current one");
+        cancel.setToolTipText("stop: an open keeps the current model, an export writes no file");
         cancel.addActionListener(e -> cancelTask());
         add(progress);
         add(cancel);
-        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, message}) {
+        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, selection, message}) {
             add(l);
             if (l != message) {
                 add(new JSeparator(SwingConstants.VERTICAL));
@@ -60,6 +61,7 @@ public final class StatusBar extends JPanel {
         bvh.setName("status.bvh");
         method.setName("status.method");
         model.setName("status.model");
+        selection.setName("status.selection");
         message.setName("status.message");
         app.addListener(this::refresh);
         refresh();
@@ -95,15 +97,20 @@ public final class StatusBar extends JPanel {
         String speedUp = s != null && s.bvhSpeedUp() > 0 ? String.format(Locale.ROOT, " ×%.1f", s.bvhSpeedUp()) : "";
         bvh.setText(t.on(Toggle.BVH) ? "BVH on" + speedUp : "BVH off" + speedUp);
         model.setText(modelText(app.overlay().geometry(), t));
+        int handles = app.selection().handleCount();
+        selection.setText(handles == 0 ? "nothing selected" : handles == 1 ? "1 point selected" : handles + " points selected");
         message.setText(app.status().message());
         Task task = app.status().task();
         progress.setVisible(task != null);
-        // Animated only while shown: a hidden indeterminate bar still ticks its 15 ms timer,
-        // waking the event thread 66 times a second for nothing
-        progress.setIndeterminate(task != null);
         cancel.setVisible(task != null);
         progress.setString(task == null ? "" : task.label());
         progress.setStringPainted(task != null);
+        // Animated only while shown and without a fraction: a hidden indeterminate bar still ticks
+        // its 15 ms timer, waking the event thread 66 times a second for nothing
+        progress.setIndeterminate(task != null && task.progress() < 0);
+        if (task != null && task.progress() >= 0) {
+            progress.setValue((int) Math.round(100 * task.progress()));
+        }
     }
 
     private static String modelText(OverlayGeometry g, Settings t) {
@@ -124,6 +131,7 @@ public final class StatusBar extends JPanel {
             case "bvh" -> bvh.getText();
             case "method" -> method.getText();
             case "model" -> model.getText();
+            case "selection" -> selection.getText();
             default -> message.getText();
         };
     }

@@ -9,10 +9,13 @@ import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import org.beziertracer.app.ExportOptions;
 import org.beziertracer.app.ModelLoader;
 import org.beziertracer.app.UserDialogs;
 import org.beziertracer.model.io.FileFormat;
+import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.FileFormats;
+import org.beziertracer.render.SamplerKind;
 
 /** {@link UserDialogs} with {@link JFileChooser} and {@link JOptionPane}, remembering the last folder. */
 final class SwingDialogs implements UserDialogs {
@@ -87,5 +90,46 @@ final class SwingDialogs implements UserDialogs {
     @Override
     public void error(String title, String message) {
         JOptionPane.showMessageDialog(parent, message, title, JOptionPane.ERROR_MESSAGE);
+    }
+
+    @Override
+    public ExportOptions exportOptions(ExportOptions offer) {
+        javax.swing.JSpinner width = spinner("export.width", offer.width(), RenderSettings.MAX_SIZE, "Image width in pixels");
+        javax.swing.JSpinner height = spinner("export.height", offer.height(), RenderSettings.MAX_SIZE, "Image height in pixels");
+        javax.swing.JSpinner spp = spinner("export.spp", offer.spp(), RenderSettings.MAX_SPP,
+                "Samples per pixel: more smooths edges and costs time");
+        javax.swing.JComboBox<SamplerKind> sampler = new javax.swing.JComboBox<>(SamplerKind.values());
+        sampler.setName("export.sampler");
+        sampler.setSelectedItem(offer.sampler());
+        sampler.setRenderer(new LabelRenderer<>(SamplerKind.class, SamplerKind::label));
+        sampler.setToolTipText("Where the samples of a pixel go: regular grid, jittered grid, or adaptive (more "
+                + "samples only where neighbours differ)");
+        javax.swing.JPanel panel = new javax.swing.JPanel(new java.awt.GridLayout(0, 2, 6, 4));
+        for (Object[] row : new Object[][] {{"Width", width}, {"Height", height}, {"Samples per pixel", spp},
+                {"Sampler", sampler}}) {
+            javax.swing.JLabel l = new javax.swing.JLabel((String) row[0]);
+            l.setLabelFor((Component) row[1]);
+            panel.add(l);
+            panel.add((Component) row[1]);
+        }
+        if (JOptionPane.showConfirmDialog(parent, panel, "Export image", JOptionPane.OK_CANCEL_OPTION,
+                JOptionPane.PLAIN_MESSAGE) != JOptionPane.OK_OPTION) {
+            return null;
+        }
+        try {
+            return new ExportOptions((Integer) width.getValue(), (Integer) height.getValue(), (Integer) spp.getValue(),
+                    (SamplerKind) sampler.getSelectedItem());
+        } catch (IllegalArgumentException e) {
+            error("Cannot export", e.getMessage());
+            return null;
+        }
+    }
+
+    private static javax.swing.JSpinner spinner(String name, int value, int max, String tip) {
+        javax.swing.JSpinner s = new javax.swing.JSpinner(new javax.swing.SpinnerNumberModel(
+                Math.max(1, Math.min(max, value)), 1, max, 1));
+        s.setName(name);
+        s.setToolTipText(tip);
+        return s;
     }
 }

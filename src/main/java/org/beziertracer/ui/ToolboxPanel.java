@@ -74,6 +74,7 @@ public final class ToolboxPanel extends JPanel {
         JPanel surface = section("Surface");
         surface.add(button("resetPoints"));
         surface.add(button("randomize"));
+        surface.add(check("smoothJoins"));
         surface.add(row(new JLabel("New grid u × v"), gridU, gridV));
         gridU.addChangeListener(e -> onInt(v -> s.set(Level.GRID_U, v), (Integer) gridU.getValue()));
         gridV.addChangeListener(e -> onInt(v -> s.set(Level.GRID_V, v), (Integer) gridV.getValue()));
@@ -105,19 +106,13 @@ public final class ToolboxPanel extends JPanel {
         shading.add(check("shadows"));
         shading.add(check("reflections"));
         shading.add(labelled("Light", combo(light, "light", "Light position")));
+        shading.add(check("showLight"));
         light.addActionListener(e -> onInt(v -> s.set(LightPlacement.values()[v]), light.getSelectedIndex()));
         return shading;
     }
 
     private JPanel qualitySection(SettingsModel s) {
-        method.setRenderer(new javax.swing.DefaultListCellRenderer() {
-            @Override
-            public Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
-                                                          boolean selected, boolean focus) {
-                Object text = value instanceof Method m ? m.label() : value;
-                return super.getListCellRendererComponent(list, text, index, selected, focus);
-            }
-        });
+        method.setRenderer(new LabelRenderer<>(Method.class, Method::label));
         JPanel quality = section("Quality and speed");
         quality.add(check("superSampling"));
         quality.add(labelled("Samples per pixel", combo(spp, "spp", "Samples per pixel when super-sampling")));

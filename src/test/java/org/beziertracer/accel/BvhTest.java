@@ -1,5 +1,6 @@
 package org.beziertracer.accel;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
@@ -8,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import java.util.function.Supplier;
 
+import org.beziertracer.UserMessages;
 import org.beziertracer.math.Aabb;
 import org.junit.jupiter.api.Test;
 
@@ -142,6 +144,66 @@ class BvhTest {
             }
             checkQueries(old, new BoxScene(bounds, n), rnd, in + " old after refit");
         }
+    }
+
+    @Test
+    void aRefitOfSomePrimitivesEqualsAFullRefitAndAnswersLikeARebuild() {
+        Random rnd = new Random(19);
+        for (int n : new int[] {1, 50, 5000, 20_000}) {
+            for (BvhOptions opts : new BvhOptions[] {new BvhOptions(1, 16), new BvhOptions(4, 16, 1),
+                    new BvhOptions(8, 4)}) {
+                double[] bounds = BoxScene.randomBoxes(rnd, n);
+                Bvh old = Bvh.build(bounds, n, opts);
+                int first = rnd.nextInt(n), count = 1 + rnd.nextInt(Math.min(64, n - first));
+                double[] moved = bounds.clone();
+                for (int p = first; p < first + count; p++) {
+                    for (int a = 0; a < 3; a++) {
+                        double d = 6 * rnd.nextGaussian();
+                        moved[6 * p + a] += d;
+                        moved[6 * p + 3 + a] += d + rnd.nextDouble();
+                    }
+                }
+                String in = "n=" + n + " " + opts + " moved " + first + "+" + count;
+                double[] range = java.util.Arrays.copyOfRange(moved, 6 * first, 6 * (first + count));
+                Bvh part = old.refit(range, first, count), full = old.refit(moved);
+                if (opts.maxLeafSize() == 1 || (opts.mortonPrims() == 1 && !hasEqualCentres(bounds))) {
+                    // single-primitive leaves: exactly the full refit
+                    assertArrayEquals(full.nodeBoundsCopy(), part.nodeBoundsCopy(), in);
+                }
+                BinnedSahBuilderTest.checkContainment(part, moved, n, in);
+                checkQueries(part, new BoxScene(moved, n), rnd, in + " refit");
+                checkQueries(Bvh.build(moved, n, opts), new BoxScene(moved, n), rnd, in + " rebuild");
+            }
+        }
+    }
+
+    /** True when two boxes have the same centre (a Morton leaf may then hold both). */
+    static boolean hasEqualCentres(double[] b) {
+        java.util.Set<String> seen = new java.util.HashSet<>();
+        for (int p = 0; p < b.length / 6; p++) {
+            if (!seen.add((b[6 * p] + b[6 * p + 3]) + "," + (b[6 * p + 1] + b[6 * p + 4]) + "," + (b[6 * p + 2] + b[6 * p + 5]))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Test
+    void aRefitRangeOutsideThePrimitivesIsRefused() {
+        Bvh bvh = Bvh.build(BoxScene.randomBoxes(new Random(20), 10), 10);
+        double[] bounds = BoxScene.randomBoxes(new Random(21), 10);
+        UserMessages.of(IllegalArgumentException.class, () -> bvh.refit(bounds, 8, 3));
+        UserMessages.of(IllegalArgumentException.class, () -> bvh.refit(bounds, -1, 1));
+        UserMessages.of(IllegalArgumentException.class, () -> bvh.refit(new double[6], 2, 2));
+    }
+
+    @Test
+    void bytesCountTheNodesAndTheLeafOrder() {
+        int n = 1000;
+        Bvh bvh = Bvh.build(BoxScene.randomBoxes(new Random(22), n), n);
+        long expected = (16 + 4L * 6 * bvh.nodeCount()) + (16 + 4L * 2 * bvh.nodeCount()) + (16 + 4L * n);
+        assertEquals(expected, bvh.bytes(), 8 * 3);
+        assertTrue(bvh.bytes() <= Bvh.estimateBytes(n), "retained within the build estimate");
     }
 
     @Test

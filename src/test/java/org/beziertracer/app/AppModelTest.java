@@ -35,7 +35,7 @@ class AppModelTest {
     void setUp() {
         engine = new FakeEngine();
         dialogs = new FakeDialogs();
-        app = new AppModel(engine, dialogs, AppThreads.direct());
+        app = new AppModel(engine, dialogs, AppThreads.direct(), MemoryPreferences.fresh());
         app.view().resize(800, 600, 1);
     }
 
@@ -62,11 +62,19 @@ class AppModelTest {
     }
 
     @Test
-    void opensOnTheDefaultBicubicPatchLitFromTheEye() {
+    void opensOnTheDefaultBicubicPatchLitFromAboveLeftOfTheEye() {
         Scene s = app.document().scene();
         assertEquals(1, s.patchCount());
         assertEquals(3, s.patches().get(0).degreeU());
-        assertTrue(s.lights().isEmpty(), "no lights: the renderer puts one at the eye");
+        assertTrue(s.lights().isEmpty(), "the model has no lights of its own");
+        RenderRequest r = lastRequest();
+        assertEquals(1, r.lights().size(), "the app's default light");
+        org.beziertracer.math.Vec3 light = r.lights().get(0).position();
+        double[] at = new double[3];
+        assertTrue(app.view().projector().project(light.x(), light.y(), light.z(), at), "in front of the eye");
+        assertTrue(at[0] < 400 && at[1] < 300, "above and to the left of the picture's centre: " + at[0] + "," + at[1]);
+        assertTrue(light.sub(r.camera().eye()).length() > 0.2 * r.camera().target().sub(r.camera().eye()).length(),
+                "not at the eye");
         assertFalse(app.document().isDirty());
         assertEquals(1, engine.requests.size(), "the first layout starts a render");
         assertEquals(16, app.overlay().geometry().handleCount(), "every control point gets a handle");
@@ -84,7 +92,7 @@ class AppModelTest {
         assertEquals(start[0] + 30, now[0], 1e-6);
         assertEquals(start[1] - 40, now[1], 1e-6);
         assertTrue(app.document().isDirty());
-        assertEquals(Selection.EMPTY, app.selection(), "the selection ends with the drag");
+        assertEquals(Selection.of(new PointRef(0, 1, 1)), app.selection(), "the dragged point stays selected");
         app.edits().undo();
         assertSame(before, app.document().scene());
         assertArrayEquals(before.patches().get(0).copyNet(), app.document().scene().patches().get(0).copyNet());
@@ -97,7 +105,7 @@ class AppModelTest {
     void draggingASelectionMovesEveryPointByTheSameOffset() {
         Scene base = Models.teapot();
         Selection sel = Selection.of(new PointRef(0, 1, 1), new PointRef(3, 0, 2), new PointRef(3, 2, 2));
-        Scene moved = NetEdits.moveBy(base, sel, 0.5, -1, 2);
+        Scene moved = SelectionMove.apply(base, sel, new double[] {0.5, -1, 2}, Topology.NONE, false);
         for (PointRef r : sel.points()) {
             BezierPatch a = base.patches().get(r.patch()), b = moved.patches().get(r.patch());
             assertEquals(a.get(r.i(), r.j(), 0) + 0.5, b.get(r.i(), r.j(), 0), 1e-12);
@@ -266,8 +274,8 @@ class AppModelTest {
     @Test
     void anEditThatArrivesAfterTheModelChangedIsDropped() {
         java.util.List<Runnable> later = new java.util.ArrayList<>();
-        AppThreads queued = new AppThreads(Runnable::run, later::add, Runnable::run, Runnable::run);
-        AppModel m = new AppModel(new FakeEngine(), dialogs, queued);
+        AppThreads queued = new AppThreads(Runnable::run, later::add, Runnable::run, Runnable::run, Runnable::run);
+        AppModel m = new AppModel(new FakeEngine(), dialogs, queued, MemoryPreferences.fresh());
         m.view().resize(400, 300, 1);
         m.edits().randomize(99);
         m.files().openBuiltIn("teapot");

@@ -54,6 +54,9 @@ class AppSoakTest {
 
         @Override
         public void error(String title, String message) { errors.add(title + ": " + message); }
+
+        @Override
+        public ExportOptions exportOptions(ExportOptions offer) { return null; }
     }
 
     @Test
@@ -70,7 +73,7 @@ class AppSoakTest {
         RecordingDialogs dialogs = new RecordingDialogs();
         try (SoakChecks.Uncaught uncaught = SoakChecks.Uncaught.install()) {
             AppModel app = onUi.call(() -> {
-                AppModel a = new AppModel(new RayTraceEngine(), dialogs, AppThreads.start(uiThread));
+                AppModel a = new AppModel(new RayTraceEngine(), dialogs, AppThreads.start(uiThread), MemoryPreferences.fresh());
                 a.view().resize(WIDTH, HEIGHT, 1);
                 a.files().openBuiltIn(FIRST_MODEL);
                 return a;

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 class EditHistoryTest {
 
     private static Scene moved(Scene s, double z) {
-        return NetEdits.movePoint(s, new PointRef(0, 1, 2), 0.1, 0.2, z);
+        return s.withPatch(0, s.patches().get(0).withPoint(1, 2, 0.1, 0.2, z));
     }
 
     @Test

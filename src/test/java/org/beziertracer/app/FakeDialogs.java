@@ -13,6 +13,9 @@ final class FakeDialogs implements UserDialogs {
     Path save;
     Choice discard = Choice.CANCEL;
     int prompts;
+    /** The export options the dialog answers with (null: cancelled); the last offer is kept. */
+    ExportOptions export;
+    ExportOptions offered;
 
     @Override
     public Path chooseOpen() { return open; }
@@ -28,4 +31,10 @@ final class FakeDialogs implements UserDialogs {
 
     @Override
     public void error(String title, String message) { errors.add(UserMessages.check(message)); }
+
+    @Override
+    public ExportOptions exportOptions(ExportOptions offer) {
+        offered = offer;
+        return export;
+    }
 }

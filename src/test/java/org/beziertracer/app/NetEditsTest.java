@@ -43,11 +43,23 @@ class NetEditsTest {
     }
 
     @Test
-    void movePointChangesOnlyThatPoint() {
-        Scene s = NetEdits.movePoint(Models.patch(), new PointRef(0, 2, 1), 9, 8, 7);
-        BezierPatch p = s.patches().get(0);
-        assertEquals(9, p.get(2, 1, 0));
-        assertEquals(7, p.get(2, 1, 2));
-        assertEquals(Models.flatGrid(4, 4).get(1, 1, 0), p.get(1, 1, 0));
+    void randomizeMovesWeldedCopiesTogetherSoTheTeapotStaysClosed() {
+        Scene teapot = Models.teapot();
+        Scene bent = NetEdits.randomize(teapot, 7);
+        WeldIndex before = WeldIndex.build(teapot), after = WeldIndex.build(bent);
+        assertTrue(before.weldedPointCount() > 300, "the teapot shares most border points: " + before.weldedPointCount());
+        assertEquals(before.weldedPointCount(), after.weldedPointCount(), "every weld survives");
+        int moved = 0;
+        for (int p = 0; p < teapot.patchCount(); p++) {
+            double[] a = teapot.patches().get(p).copyNet(), b = bent.patches().get(p).copyNet();
+            for (int k = 0; k < a.length; k++) {
+                if (k % 3 != 2) {
+                    assertEquals(a[k], b[k], "only z moves");
+                } else if (a[k] != b[k]) {
+                    moved++;
+                }
+            }
+        }
+        assertTrue(moved > 400, "points moved: " + moved);
     }
 }

@@ -12,7 +12,7 @@ public final class OpenTooBigProbe {
 
     public static void main(String[] args) {
         FakeDialogs dialogs = new FakeDialogs();
-        AppModel app = new AppModel(new FakeEngine(), dialogs, AppThreads.direct());
+        AppModel app = new AppModel(new FakeEngine(), dialogs, AppThreads.direct(), MemoryPreferences.fresh());
         int before = app.document().scene().patchCount();
         app.files().open(Path.of(args[0]));
         boolean opened = !"patch".equals(app.document().name());

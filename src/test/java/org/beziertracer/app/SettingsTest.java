@@ -22,7 +22,8 @@ class SettingsTest {
         assertEquals(12, s.level(Level.WIREFRAME_SUBDIVISION));
         assertEquals(36, s.level(Level.PERSPECTIVE));
         assertEquals(Method.CLIPPING, s.method());
-        assertEquals(LightPlacement.SCENE, s.light());
+        assertEquals(LightPlacement.EYE_ABOVE_LEFT, s.light(), "not at the eye: a first look that reads");
+        assertEquals(LightPlacement.AT_EYE, LightPlacement.values()[s.light().ordinal() + 1], "at the eye is one preset away");
         assertEquals(ShadingMode.PHONG, s.shading());
         assertEquals(1, s.samplesPerPixel(), "no super-sampling");
     }
@@ -66,7 +67,11 @@ class SettingsTest {
         assertFalse(s.on(Toggle.REFLECTIONS));
         assertTrue(s.on(Toggle.SUPER_SAMPLING));
         assertEquals(9, s.level(Level.SAMPLES_PER_PIXEL), "6 samples snap to the offered 9");
-        assertEquals(LightPlacement.SCENE, s.light(), "a scene brings its own lights");
+        assertEquals(LightPlacement.BELOW, s.light(), "the file's settings leave the light alone");
+        assertEquals(LightPlacement.SCENE, RenderChoices.lightFor(s, true).light(), "a scene brings its own lights");
+        assertEquals(LightPlacement.BELOW, RenderChoices.lightFor(s, false).light(), "a model keeps the chosen light");
+        assertEquals(LightPlacement.EYE_ABOVE_LEFT, RenderChoices.lightFor(s.with(LightPlacement.SCENE), false).light(),
+                "and gets the default instead of the scene's lights it does not have");
     }
 
     @Test

@@ -66,19 +66,20 @@ public final class SoakChecks {
     }
 
     /** The final state as the UI thread sees it: what to render afresh, and the picture the app shows. */
-    public record Final(Scene scene, CameraSpec camera, Settings settings, int width, int height, int[] shown) {
+    public record Final(Scene scene, CameraSpec camera, Framing framing, Settings settings, int width, int height, int[] shown) {
 
         /** Read on the UI thread, once the app is idle. */
         public static Final of(AppModel app) {
             Picture p = app.view().picture();
-            return new Final(app.document().scene(), app.view().camera(), app.settings().current(), p.width(), p.height(),
+            return new Final(app.document().scene(), app.view().camera(), app.view().view().framing(), app.settings().current(),
+                    p.width(), p.height(),
                     p.pixels().clone());
         }
 
         /** The same request rendered from scratch: a new snapshot, a new session, the same render pipeline. */
         public int[] freshRender() {
-            RenderRequest r = RenderRequest.of(scene, camera, settings, new Picture(width, height, () -> {}));
-            SceneIntersector snapshot = SceneIntersector.build(r.light().apply(r.scene()), r.intersect());
+            RenderRequest r = RenderRequest.of(scene, camera, framing, settings, new Picture(width, height, () -> {}));
+            SceneIntersector snapshot = SceneIntersector.build(r.scene(), r.intersect());
             return Renderer.renderOnce(r.job(snapshot)).argb();
         }
 

@@ -8,6 +8,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.beziertracer.UserMessages;
+import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -28,6 +31,19 @@ class InfoCommandTest {
         assertTrue(r.out().contains("degrees: 3x3 (32)\n"), r.out());
         assertTrue(r.out().contains("x[-120,141] y[-80,80] z[0,120]"), r.out());
         assertEquals("", r.err());
+    }
+
+    @Test
+    void infoPrintsTheBytesTheAccelerationDataHolds() {
+        Run r = run("info", "teapot");
+        assertEquals(0, r.code(), r.err());
+        SceneIntersector si = SceneIntersector.build(Models.teapot(), IntersectOptions.defaults());
+        long leaves = si.leafBytes(), nodes = si.accelBytes();
+        assertTrue(leaves > 1566 * 48L && nodes >= 32L * si.nodeCount(), leaves + " / " + nodes);
+        String expected = String.format(java.util.Locale.ROOT, "acceleration data: %,d bytes (", leaves + nodes);
+        assertTrue(r.out().contains(expected), r.out());
+        assertTrue(r.out().contains(String.format(java.util.Locale.ROOT, "%,d a patch): sub-patches %,d, BVH %,d\n",
+                (leaves + nodes) / 32, leaves, nodes)), r.out());
     }
 
     @Test
@@ -66,6 +82,32 @@ class InfoCommandTest {
         Run r = run("info", "no-such-model.obj");
         assertEquals(1, r.code());
         assertEquals("beziertracer info: no-such-model.obj: no such file", UserMessages.checkOneLineOutput(r.err()));
+    }
+
+    @Test
+    void infoSpherePrintsTheRationalSurfaceAndItsPieces() {
+        Run r = run("info", "sphere");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("patches: 8\n"), r.out());
+        assertTrue(r.out().contains("rational patches: 8\n"), r.out());
+        assertTrue(r.out().contains("surfaces: 1\n"), r.out());
+        assertTrue(r.out().contains("  surface 1: rational bspline, degree 2x2, 9x5 control points, u[0,4] v[0,2],"
+                + " untrimmed -> 8 Bézier pieces (patches 1-8)\n"), r.out());
+    }
+
+    @Test
+    void infoTrimmedPlatePrintsItsTrimLoops() {
+        Run r = run("info", "trimmed-plate");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("trimmed patches: 1\n"), r.out());
+        assertTrue(r.out().contains("trimmed by 1 outer loop (8 curves) and 3 holes (1 curve, 1 curve, 1 curve)"),
+                r.out());
+    }
+
+    @Test
+    void plainPatchesHaveNoSurfaces() {
+        Run r = run("info", "teapot");
+        assertTrue(r.out().contains("rational patches: 0\ntrimmed patches: 0\nsurfaces: 0\n"), r.out());
     }
 
     @Test

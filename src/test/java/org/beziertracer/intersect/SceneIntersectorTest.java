@@ -7,6 +7,7 @@ import static org.beziertracer.Tolerances.SUBDIVISION_T;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -219,16 +220,77 @@ class SceneIntersectorTest {
         assertNotNull(edited.scene());
         assertEquals(moved, edited.scene().patches().get(3));
         assertEquals(scene.patches().get(3), si.scene().patches().get(3), "old snapshot unchanged");
+        sameAnswers(edited, rebuilt, rnd);
+    }
+
+    /** 1000 random rays meet {@code edited} and {@code rebuilt} alike; returns how many hit. */
+    private static int sameAnswers(SceneIntersector edited, SceneIntersector rebuilt, Random rnd) {
         TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
         Hit h1 = new Hit(), h2 = new Hit();
+        int hits = 0;
         for (int r = 0; r < 1000; r++) {
             double[] ray = randomRay(rnd);
             boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
             boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
             assertEquals(b, a, "ray " + r);
             if (a) {
+                hits++;
                 assertEquals(h2.t, h1.t, ROOT_T, "ray " + r);
+                assertEquals(h2.index, h1.index, "ray " + r);
             }
+        }
+        return hits;
+    }
+
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(ints = {0, 6})
+    void editingSeveralPatchesAtOnceGivesTheSameAnswersAsARebuild(int tessellate) {
+        Random rnd = new Random(23);
+        Scene scene = wildScene(rnd, 12, 4);
+        IntersectOptions io = IntersectOptions.defaults().withTessellate(tessellate);
+        SceneIntersector si = SceneIntersector.build(scene, io);
+        java.util.List<BezierPatch> patches = new java.util.ArrayList<>(scene.patches());
+        int[] changed = {2, 5, 9};
+        for (int k : changed) {
+            patches.set(k, patches.get(k).withPoint(0, 0, 3, -2, 5));
+        }
+        Scene after = scene.toBuilder().patches(patches).build();
+        SceneIntersector edited = si.withPatches(after, changed);
+        SceneIntersector rebuilt = SceneIntersector.build(after, io);
+        assertSame(after, edited.scene(), "the edited scene itself, not a copy");
+        assertEquals(rebuilt.primitiveCount(), edited.primitiveCount());
+        int hits = sameAnswers(edited, rebuilt, rnd);
+        assertTrue(hits > 100, "hits " + hits);
+    }
+
+    /** With one leaf a patch the leaf count cannot change: the edit refits the BVH (partial refit). */
+    @Test
+    void anEditThatKeepsTheLeafCountRefitsAndAnswersLikeARebuild() {
+        Random rnd = new Random(18);
+        Scene scene = wildScene(rnd, 40, 4);
+        IntersectOptions whole = IntersectOptions.defaults().withSplit(org.beziertracer.geometry.SplitOptions.wholePatches());
+        SceneIntersector si = SceneIntersector.build(scene, whole);
+        for (int edit = 0; edit < 5; edit++) {
+            int index = rnd.nextInt(scene.patchCount());
+            BezierPatch moved = si.scene().patches().get(index).withPoint(1, 1, 6 * rnd.nextGaussian(),
+                    6 * rnd.nextGaussian(), 6 * rnd.nextGaussian());
+            SceneIntersector edited = si.withPatch(index, moved);
+            assertEquals(si.subPatchCount(), edited.subPatchCount());
+            assertEquals(si.nodeCount(), edited.nodeCount(), "refitted, not rebuilt");
+            SceneIntersector rebuilt = SceneIntersector.build(edited.scene(), whole);
+            TraceContext c1 = edited.newContext(), c2 = rebuilt.newContext();
+            Hit h1 = new Hit(), h2 = new Hit();
+            for (int r = 0; r < 500; r++) {
+                double[] ray = randomRay(rnd);
+                boolean a = edited.closestHit(c1, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h1);
+                boolean b = rebuilt.closestHit(c2, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, Double.POSITIVE_INFINITY, h2);
+                assertEquals(b, a, "edit " + edit + " ray " + r);
+                if (a) {
+                    assertEquals(h2.t, h1.t, 0, "edit " + edit + " ray " + r);
+                    assertEquals(h2.index, h1.index, "edit " + edit + " ray " + r);
+                }
+            }
+            si = edited;
         }
     }
 

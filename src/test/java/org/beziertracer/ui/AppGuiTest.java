@@ -60,6 +60,9 @@ class AppGuiTest extends GuiSession {
         Scene before = GuiDriver.onEdt(() -> d.app.document().scene());
         Point a = d.screenOfPoint(0, 1, 2);
         Point b = new Point(a.x, a.y - 120);
+        d.clickAt(a); // selected before, so every picture below shows it selected (red) where it is
+        d.mouseAway();
+        d.settle();
         BufferedImage img0 = d.capturePanel();
         d.drag(a, b, 12);
         Point away = d.screenOf(5, 5);

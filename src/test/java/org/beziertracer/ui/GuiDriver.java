@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 
 import org.beziertracer.app.AppModel;
 import org.beziertracer.app.AppPreferences;
+import org.beziertracer.app.MemoryPreferences;
 import org.beziertracer.model.BezierPatch;
 
 /**
@@ -161,11 +162,18 @@ final class GuiDriver {
 
     /** Opens the menu called {@code title} in the menu bar and clicks its item {@code menu.<id>}, with the mouse. */
     void menu(String title, String id) {
+        menuPath(title, id.startsWith("menu.") ? id.substring("menu.".length()) : id);
+    }
+
+    /**
+     * Opens menu {@code title}, then each submenu {@code menu.<id>} of {@code path} in turn, and clicks
+     * the last item, with the mouse.
+     */
+    void menuPath(String title, String... path) {
         JMenu m = onEdt(() -> {
             for (int k = 0; k < frame.getJMenuBar().getMenuCount(); k++) {
-                JMenu c = frame.getJMenuBar().getMenu(k);
-                if (title.equals(c.getText())) {
-                    return c;
+                if (title.equals(frame.getJMenuBar().getMenu(k).getText())) {
+                    return frame.getJMenuBar().getMenu(k);
                 }
             }
             return null;
@@ -173,20 +181,34 @@ final class GuiDriver {
         if (m == null) {
             fail("no menu " + title);
         }
-        String name = id.startsWith("menu.") ? id : "menu." + id;
-        JMenuItem item = onEdt(() -> {
-            for (Component c : m.getMenuComponents()) {
-                if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
-                    return mi;
+        JMenu current = m;
+        for (int p = 0; p < path.length; p++) {
+            String name = "menu." + path[p];
+            JMenu in = current;
+            JMenuItem item = onEdt(() -> {
+                for (Component c : in.getMenuComponents()) {
+                    if (c instanceof JMenuItem mi && name.equals(mi.getName())) {
+                        return mi;
+                    }
                 }
+                return null;
+            });
+            if (item == null) {
+                fail("no item " + name + " in " + onEdt(in::getText));
             }
-            return null;
-        });
-        if (item == null) {
-            fail("no item " + name + " in menu " + title);
+            if (p == 0) {
+                clickUntil(m, title + " → " + name + " showing", item::isShowing);
+            } else {
+                waitFor(name + " showing", item::isShowing);
+            }
+            if (item instanceof JMenu sub) {
+                click(item);
+                waitFor(name + " open", sub::isPopupMenuVisible);
+                current = sub;
+            } else {
+                clickUntil(item, name + " chosen", () -> !item.isShowing());
+            }
         }
-        clickUntil(m, title + " → " + name + " showing", item::isShowing);
-        clickUntil(item, title + " → " + name + " chosen", () -> !item.isShowing());
     }
 
     /** The visible dialog that holds a {@code type} (a file chooser, an option pane), waiting up to 10 s. */
@@ -310,6 +332,58 @@ final class GuiDriver {
         }
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         robot.waitForIdle();
+    }
+
+    /** {@link #drag} with {@code keys} (e.g. {@code VK_SHIFT}) held down from before the press to after the release. */
+    void dragHolding(Point a, Point b, int steps, int... keys) {
+        for (int k : keys) {
+            robot.keyPress(k);
+        }
+        try {
+            drag(a, b, steps);
+        } finally {
+            for (int k = keys.length - 1; k >= 0; k--) {
+                robot.keyRelease(keys[k]);
+            }
+            robot.waitForIdle();
+        }
+    }
+
+    /** Clicks the left button at {@code p} (screen) with {@code keys} held. */
+    void clickAt(Point p, int... keys) {
+        robot.mouseMove(p.x, p.y);
+        robot.waitForIdle();
+        for (int k : keys) {
+            robot.keyPress(k);
+        }
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        for (int k = keys.length - 1; k >= 0; k--) {
+            robot.keyRelease(keys[k]);
+        }
+        robot.waitForIdle();
+    }
+
+    /** Clicks the text field, replaces its text by {@code text} with the keyboard and presses Enter. */
+    void typeInto(JTextField field, String text) {
+        click(field);
+        key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
+        type(text);
+        waitFor("the text typed into " + field.getName(), () -> text.equals(field.getText()));
+        key(KeyEvent.VK_ENTER);
+    }
+
+    /** Moves the mouse out of the way (to a corner of the picture), so no handle is hovered. */
+    void mouseAway() {
+        Point away = screenOf(3, 3);
+        robot.mouseMove(away.x, away.y);
+        robot.waitForIdle();
+    }
+
+    /** Gives the picture the keyboard focus (arrow keys, X/Y/Z, Escape go to it). */
+    void focusPicture() {
+        onEdt(() -> frame.renderPanel().requestFocusInWindow());
+        waitFor("the picture to have the focus", () -> frame.renderPanel().isFocusOwner());
     }
 
     void key(int code, int... modifiers) {
@@ -439,7 +513,24 @@ final class GuiDriver {
                 robot.delay(20);
             }
         }
-        fail("timed out waiting for " + what);
+        fail("timed out waiting for " + what + " after three clicks on " + comp.getClass().getSimpleName()
+                + "; windows: " + onEdt(GuiDriver::describeWindows) + "; screen: " + save(robot.createScreenCapture(
+                new Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize())), "click-dropped"));
+    }
+
+    /** The showing windows, their titles, modality, focus and bounds (for a failure message). */
+    static String describeWindows() {
+        StringBuilder sb = new StringBuilder();
+        for (Window w : Window.getWindows()) {
+            if (w.isShowing()) {
+                sb.append('[').append(w.getClass().getSimpleName());
+                if (w instanceof JDialog jd) {
+                    sb.append(" \"").append(jd.getTitle()).append("\" modal=").append(jd.isModal());
+                }
+                sb.append(" active=").append(w.isActive()).append(" at ").append(w.getBounds()).append("] ");
+            }
+        }
+        return sb.toString();
     }
 
     /** Closes the window without the unsaved-edits question. */

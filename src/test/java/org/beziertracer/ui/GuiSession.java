@@ -47,6 +47,18 @@ abstract class GuiSession {
         d.settle();
     }
 
+    /** The main window's title. */
+    static String title() {
+        return GuiDriver.onEdt(() -> d.frame.getTitle());
+    }
+
+    /** The picture once settled, with the mouse out of the way (no hovered handle). */
+    static java.awt.image.BufferedImage shot() {
+        d.mouseAway();
+        d.settle();
+        return d.capturePanel();
+    }
+
     /** A box in the middle of the default patch, relative to the panel (screen pixels). */
     static Rectangle centreBox() {
         double x = 0, y = 0;

@@ -43,10 +43,6 @@ class MenuGuiTest extends GuiSession {
     @TempDir
     Path dir;
 
-    private static String title() {
-        return GuiDriver.onEdt(() -> d.frame.getTitle());
-    }
-
     /** Clicks the button labelled {@code text} in {@code dialog} and waits for the dialog to close. */
     private static void press(JDialog dialog, String text) {
         AbstractButton b = GuiDriver.onEdt(() -> GuiDriver.button(dialog, text));

@@ -1,11 +1,17 @@
 package org.beziertracer.ui;
 
+import java.awt.Point;
 import java.awt.Rectangle;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
 import javax.imageio.ImageIO;
+import javax.swing.JDialog;
+import javax.swing.JSpinner;
+import javax.swing.SwingUtilities;
 
 import org.beziertracer.app.SettingsModel;
 import org.beziertracer.app.Toggle;
@@ -29,41 +35,122 @@ class UserGuideScreenshots {
         Files.createDirectories(dir);
         GuiDriver d = GuiDriver.launch();
         try {
-            SettingsModel t = d.app.settings();
             GuiDriver.onEdt(() -> d.frame.setSize(1100, 720));
-            // The default patch, bent, a control point under the cursor
-            GuiDriver.onEdt(() -> d.app.edits().randomize(7));
             d.settle();
-            java.awt.Point p = d.screenOfPoint(0, 2, 1);
-            d.robot.mouseMove(p.x, p.y);
-            shot(d, dir, "patch.png");
-            GuiDriver.onEdt(() -> t.set(Toggle.RAY_TRACE, false));
-            shot(d, dir, "wireframe.png");
-            GuiDriver.onEdt(() -> {
-                t.set(Toggle.RAY_TRACE, true);
-                t.set(Toggle.NORMALS, true);
-                t.set(Toggle.CONTROL_POLYGON, false);
-            });
-            shot(d, dir, "normals.png");
-            GuiDriver.onEdt(() -> {
-                d.app.document().history().markSaved();
-                d.app.files().openBuiltIn("teapot");
-            });
-            d.settle();
-            GuiDriver.onEdt(() -> {
-                t.set(Toggle.NORMALS, false);
-                t.set(Toggle.CONTROL_POINTS, false);
-                t.set(Toggle.CONTROL_POLYGON, false);
-                t.set(Toggle.SUPER_SAMPLING, true);
-            });
-            shot(d, dir, "teapot.png");
-            GuiDriver.onEdt(() -> d.app.files().openBuiltIn("teapot-room"));
-            d.settle();
-            GuiDriver.onEdt(() -> t.set(Toggle.SUPER_SAMPLING, true));
-            shot(d, dir, "teapot-room.png");
+            modelShots(d, dir);
+            editingShots(d, dir);
+            lightShot(d, dir);
+            exportDialogShot(d, dir);
         } finally {
             d.close();
         }
+    }
+
+    /** The default patch, the wireframe and normals views, the teapot and the teapot room. */
+    private static void modelShots(GuiDriver d, Path dir) throws Exception {
+        SettingsModel t = d.app.settings();
+        // The default patch, bent, a control point under the cursor
+        GuiDriver.onEdt(() -> d.app.edits().randomize(7));
+        d.settle();
+        Point p = d.screenOfPoint(0, 2, 1);
+        d.robot.mouseMove(p.x, p.y);
+        shot(d, dir, "patch.png");
+        GuiDriver.onEdt(() -> t.set(Toggle.RAY_TRACE, false));
+        shot(d, dir, "wireframe.png");
+        GuiDriver.onEdt(() -> {
+            t.set(Toggle.RAY_TRACE, true);
+            t.set(Toggle.NORMALS, true);
+            t.set(Toggle.CONTROL_POLYGON, false);
+        });
+        shot(d, dir, "normals.png");
+        open(d, "teapot");
+        GuiDriver.onEdt(() -> {
+            t.set(Toggle.NORMALS, false);
+            t.set(Toggle.CONTROL_POINTS, false);
+            t.set(Toggle.CONTROL_POLYGON, false);
+            t.set(Toggle.SUPER_SAMPLING, true);
+        });
+        shot(d, dir, "teapot.png");
+        open(d, "teapot-room");
+        GuiDriver.onEdt(() -> t.set(Toggle.SUPER_SAMPLING, true));
+        shot(d, dir, "teapot-room.png");
+        GuiDriver.onEdt(() -> t.replace(org.beziertracer.app.Settings.defaults()));
+    }
+
+    /** A rubber band being drawn on the patch; then a welded teapot point dragged with tangent continuity on. */
+    private static void editingShots(GuiDriver d, Path dir) throws Exception {
+        open(d, "patch");
+        GuiDriver.onEdt(() -> d.app.edits().randomize(11));
+        d.settle();
+        d.clickAt(d.screenOfPoint(0, 0, 3));
+        Point from = new Point(Integer.MAX_VALUE, Integer.MAX_VALUE), to = new Point(Integer.MIN_VALUE, Integer.MIN_VALUE);
+        for (int[] ij : new int[][] {{1, 1}, {2, 1}, {1, 2}, {2, 2}}) {
+            Point p = d.screenOfPoint(0, ij[0], ij[1]);
+            from = new Point(Math.min(from.x, p.x - 14), Math.min(from.y, p.y - 14));
+            to = new Point(Math.max(to.x, p.x + 14), Math.max(to.y, p.y + 14));
+        }
+        d.robot.mouseMove(from.x, from.y);
+        d.robot.keyPress(KeyEvent.VK_SHIFT);
+        d.robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        for (int k = 1; k <= 10; k++) {
+            d.robot.mouseMove(from.x + (to.x - from.x) * k / 10, from.y + (to.y - from.y) * k / 10);
+            d.robot.delay(10);
+        }
+        shot(d, dir, "rubber-band.png");
+        d.robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        d.robot.keyRelease(KeyEvent.VK_SHIFT);
+        d.settle();
+        open(d, "teapot");
+        GuiDriver.onEdt(() -> {
+            d.app.settings().set(Toggle.SMOOTH_JOINS, true);
+            d.app.view().zoom(-4);
+        });
+        d.settle();
+        int[] row = Borders.visibleRow(d, GuiDriver.onEdt(() -> d.app.document().scene()));
+        Point p = d.screenOfPoint(row[3], row[4], row[5]);
+        d.drag(p, new Point(p.x - 20, p.y + 70), 10);
+        d.mouseAway();
+        shot(d, dir, "teapot-edit.png");
+        GuiDriver.onEdt(() -> {
+            d.app.settings().set(Toggle.SMOOTH_JOINS, false);
+            d.app.selections().clear();
+        });
+    }
+
+    /** Show Light on the bent patch, the light dragged a little. */
+    private static void lightShot(GuiDriver d, Path dir) throws Exception {
+        open(d, "patch");
+        GuiDriver.onEdt(() -> {
+            d.app.edits().randomize(7);
+            d.app.settings().set(Toggle.SHOW_LIGHT, true);
+        });
+        d.settle();
+        var m = GuiDriver.onEdt(() -> d.app.overlay().snapshot().lights().get(0));
+        Point at = d.screenOf(m.x(), m.y());
+        d.drag(at, new Point(at.x + 40, at.y + 20), 8);
+        d.mouseAway();
+        shot(d, dir, "light.png");
+        GuiDriver.onEdt(() -> d.app.settings().set(Toggle.SHOW_LIGHT, false));
+    }
+
+    /** File → Export Image…'s dialog. */
+    private static void exportDialogShot(GuiDriver d, Path dir) throws Exception {
+        SwingUtilities.invokeLater(() -> d.frame.actions().get("exportImage").actionPerformed(null));
+        JDialog dialog = d.dialogWith(JSpinner.class);
+        d.robot.delay(300);
+        d.robot.waitForIdle();
+        Rectangle r = GuiDriver.onEdt(() -> dialog.getBounds());
+        ImageIO.write(d.robot.createScreenCapture(r), "png", dir.resolve("export-image.png").toFile());
+        d.key(KeyEvent.VK_ESCAPE);
+        d.waitFor("the dialog to close", () -> !dialog.isShowing());
+    }
+
+    private static void open(GuiDriver d, String builtIn) {
+        GuiDriver.onEdt(() -> {
+            d.app.document().history().markSaved();
+            d.app.files().openBuiltIn(builtIn);
+        });
+        d.settle();
     }
 
     private static void shot(GuiDriver d, Path dir, String name) throws Exception {

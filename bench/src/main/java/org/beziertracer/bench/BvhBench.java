@@ -50,7 +50,7 @@ public class BvhBench {
         split = new SplitOptions(true, flatness.equals("default") ? d.flatnessTolerance() : Double.parseDouble(flatness),
                 maxDepth.equals("default") ? d.maxDepth() : Integer.parseInt(maxDepth));
         table = SubPatchTable.build(scene.patches(), split);
-        bounds = table.bounds.clone();
+        bounds = table.bounds(0, table.count);
         options = BvhOptions.defaults();
         bvh = Bvh.build(bounds, table.count, options);
     }

@@ -11,7 +11,8 @@ import org.beziertracer.model.BezierPatch;
  * Writes the BPT format read by {@link BptReader}: the patch count on the first line, then per
  * patch a line {@code n m} and one line {@code x y z} per control point, u index fastest.
  *
- * <p>Numbers are written as the shortest text that parses back to the same {@code double}
+ * <p>Only polynomial, untrimmed patches fit the format (a patch's parameter range is not kept).
+ * Numbers are written as the shortest text that parses back to the same {@code double}
  * (whole numbers without {@code .0}), so reading the output gives back equal patches bit for bit.
  * Stateless and thread-safe.
  */
@@ -28,8 +29,20 @@ public final class BptWriter {
         return AtomicFiles.toText(out -> write(out, patches));
     }
 
-    /** Writes BPT text to {@code out} (not closed). */
+    /**
+     * Writes BPT text to {@code out} (not closed).
+     *
+     * @throws IllegalArgumentException before writing anything, when a patch is rational or
+     *                                  trimmed (BPT cannot hold weights or trim loops; OBJ can)
+     */
     public static void write(Writer out, List<BezierPatch> patches) throws IOException {
+        for (int k = 0; k < patches.size(); k++) {
+            BezierPatch p = patches.get(k);
+            if (p.isRational() || p.trim() != null) {
+                throw new IllegalArgumentException("a BPT file holds polynomial, untrimmed Bézier patches but patch "
+                        + (k + 1) + " is " + (p.isRational() ? "rational" : "trimmed") + "; save the model as .obj");
+            }
+        }
         out.write(Integer.toString(patches.size()));
         out.write('\n');
         StringBuilder line = new StringBuilder(64);

@@ -40,11 +40,17 @@ public final class BuiltIns {
     public static final List<BuiltIn> ALL = List.of(
             model("patch", "the default bicubic patch", Models::patch),
             resource("teapot", "the Utah teapot (32 bicubic patches)", "models/teapot.bpt"),
-            resource("teapot-room", "the teapot on a checkered floor, with a mirror and a glass sphere",
-                    "scenes/teapot-room.json"),
+            resource("teacup", "Newell's teacup (26 bicubic patches)", "models/teacup.bpt"),
+            resource("teaspoon", "Newell's teaspoon (16 bicubic patches)", "models/teaspoon.bpt"),
+            model("sphere", "the unit sphere, one rational biquadratic B-spline (8 rational pieces)", Models::sphere),
+            model("torus", "a torus, one rational biquadratic B-spline (16 rational pieces)", Models::torus),
+            model("trimmed-plate", "a curved plate trimmed by a rounded square, with three holes",
+                    Models::trimmedPlate),
             model("wavy6", "a wavy 6×6-point grid (degree 5)", () -> GeneratedModels.wavy(6)),
             model("wavy10", "a wavy 10×10-point grid (degree 9)", () -> GeneratedModels.wavy(10)),
-            model("curved", "a strongly curved bicubic arch", GeneratedModels::curved));
+            model("curved", "a strongly curved bicubic arch", GeneratedModels::curved),
+            resource("teapot-room", "the teapot on a checkered floor, with a mirror and a glass sphere",
+                    "scenes/teapot-room.json"));
 
     /** Names of every built-in, in order. */
     public static List<String> names() {

@@ -36,7 +36,36 @@ public final class MeshObjWriter {
      */
     public static void write(Writer out, double[] positions, double[] normals, double[] uvs, int[] triangles)
             throws IOException {
-        // Check the layout before writing anything
+        checkLayout(positions, normals, uvs, triangles);
+        int vertexCount = positions.length / 3;
+        StringBuilder sb = new StringBuilder(128);
+        out.write("# Bézier Tracer mesh: " + vertexCount + " vertices, " + triangles.length / 3 + " triangles\n");
+        for (int v = 0; v < vertexCount; v++) {
+            sb.setLength(0);
+            triple(sb.append("v "), positions, 3 * v);
+            out.write(sb.toString());
+        }
+        if (uvs != null) {
+            for (int v = 0; v < vertexCount; v++) {
+                sb.setLength(0);
+                sb.append("vt ").append(NumberText.format(uvs[2 * v])).append(' ')
+                        .append(NumberText.format(uvs[2 * v + 1])).append('\n');
+                out.write(sb.toString());
+            }
+        }
+        if (normals != null) {
+            for (int v = 0; v < vertexCount; v++) {
+                sb.setLength(0);
+                triple(sb.append("vn "), normals, 3 * v);
+                out.write(sb.toString());
+            }
+        }
+        writeFaces(out, sb, triangles, uvs != null, normals != null);
+        out.flush();
+    }
+
+    /** Checks the arrays' layout before anything is written. */
+    private static void checkLayout(double[] positions, double[] normals, double[] uvs, int[] triangles) {
         if (positions == null || positions.length % 3 != 0) {
             throw new IllegalArgumentException("positions must hold x,y,z per vertex, got "
                     + (positions == null ? "null" : positions.length + " doubles"));
@@ -60,49 +89,29 @@ public final class MeshObjWriter {
                         + ", outside 0.." + (vertexCount - 1));
             }
         }
+    }
 
-        // Vertices, texture coordinates, normals, faces
-        StringBuilder sb = new StringBuilder(128);
-        out.write("# Bézier Tracer mesh: " + vertexCount + " vertices, " + triangles.length / 3 + " triangles\n");
-        for (int v = 0; v < vertexCount; v++) {
-            sb.setLength(0);
-            triple(sb.append("v "), positions, 3 * v);
-            out.write(sb.toString());
-        }
-        if (uvs != null) {
-            for (int v = 0; v < vertexCount; v++) {
-                sb.setLength(0);
-                sb.append("vt ").append(NumberText.format(uvs[2 * v])).append(' ')
-                        .append(NumberText.format(uvs[2 * v + 1])).append('\n');
-                out.write(sb.toString());
-            }
-        }
-        if (normals != null) {
-            for (int v = 0; v < vertexCount; v++) {
-                sb.setLength(0);
-                triple(sb.append("vn "), normals, 3 * v);
-                out.write(sb.toString());
-            }
-        }
+    /** The faces, {@code f a/a/a b/b/b c/c/c} with the texture and normal indices that exist. */
+    private static void writeFaces(Writer out, StringBuilder sb, int[] triangles, boolean uvs, boolean normals)
+            throws IOException {
         for (int t = 0; t < triangles.length; t += 3) {
             sb.setLength(0);
             sb.append('f');
             for (int c = 0; c < 3; c++) {
                 int index = triangles[t + c] + 1;
                 sb.append(' ').append(index);
-                if (uvs != null || normals != null) {
+                if (uvs || normals) {
                     sb.append('/');
-                    if (uvs != null) {
+                    if (uvs) {
                         sb.append(index);
                     }
-                    if (normals != null) {
+                    if (normals) {
                         sb.append('/').append(index);
                     }
                 }
             }
             out.write(sb.append('\n').toString());
         }
-        out.flush();
     }
 
     private static void triple(StringBuilder sb, double[] a, int k) {

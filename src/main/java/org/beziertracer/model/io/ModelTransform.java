@@ -7,7 +7,8 @@ import org.beziertracer.model.BezierPatch;
  * first, then rotations about the x, y and z axes (degrees, right-handed), then translation.
  *
  * <p>Applied to the control points only: a Bézier patch is an affine combination of its control
- * points (the Bernstein weights sum to 1), so mapping the net maps the surface exactly. Quarter
+ * points (the Bernstein weights sum to 1; for a rational patch the coefficients
+ * {@code w B / Σ w B} do too), so mapping the net maps the surface exactly. Quarter
  * turns use exact sines and cosines (0, ±1), so rotating by 90° moves (1,0,0) exactly onto an axis.
  * Immutable.
  */
@@ -51,7 +52,7 @@ record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees
             }
             System.arraycopy(p, 0, net, k, 3);
         }
-        return new BezierPatch(patch.degreeU(), patch.degreeV(), net);
+        return patch.withNet(net); // weights and domain kept: a rational patch is affinely invariant too
     }
 
     /** Maps the point {@code p} (x, y, z) in place; null, or the step that overflowed (p is then partly mapped). */

@@ -15,6 +15,9 @@ import org.beziertracer.model.Scene;
  *   <li>{@link #teapot()} — the 32-patch Utah teapot as built into Sunflow (z-up, bounding box
  *       {@code x[-120,141] y[-80,80] z[0,120]}), the built-in {@code teapot} of {@link BuiltIns};
  *       see {@code shared/models/README.md} for its provenance.</li>
+ *   <li>{@link #sphere()}, {@link #torus()}, {@link #trimmedPlate()} — the rational B-spline and
+ *       trimmed built-ins ({@link BuiltInSurfaces}); the teacup and the teaspoon are resources of
+ *       {@link BuiltIns}.</li>
  * </ul>
  * The list of built-in names is {@link BuiltIns}; file formats are {@link FileFormats}.
  * Stateless and thread-safe.
@@ -59,6 +62,21 @@ public final class Models {
             throw new IllegalArgumentException("control points along " + direction + " must be 2.." + max
                     + ", got " + points);
         }
+    }
+
+    /** The built-in {@code sphere} ({@link BuiltInSurfaces}); a new scene each call. */
+    public static Scene sphere() {
+        return new Scene(BuiltInSurfaces.sphere());
+    }
+
+    /** The built-in {@code torus} ({@link BuiltInSurfaces}); a new scene each call. */
+    public static Scene torus() {
+        return new Scene(BuiltInSurfaces.torus());
+    }
+
+    /** The built-in {@code trimmed-plate} ({@link BuiltInSurfaces}); a new scene each call. */
+    public static Scene trimmedPlate() {
+        return new Scene(BuiltInSurfaces.trimmedPlate());
     }
 
     /** The Utah teapot (32 bicubic patches): the built-in {@code teapot}, read once. */

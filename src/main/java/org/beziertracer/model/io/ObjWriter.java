@@ -8,8 +8,8 @@ import java.util.List;
 import org.beziertracer.model.BezierPatch;
 
 /**
- * Writes patches as Wavefront OBJ free-form Bézier surfaces, the subset read by
- * {@link ObjReader}:
+ * Writes patches as Wavefront OBJ free-form surfaces, the form read by {@link ObjReader}. A plain
+ * patch is written as
  * <pre>
  * cstype bezier
  * v x y z                     # (n+1)(m+1) vertices per patch, u fastest
@@ -20,8 +20,11 @@ import org.beziertracer.model.BezierPatch;
  * parm v 0 1
  * end
  * </pre>
- * Each patch gets its own vertices (no sharing), written with the shortest round-trip number
- * text, so reading the file back gives equal patches bit for bit. Stateless and thread-safe.
+ * Rational patches get {@code cstype rat bezier} and {@code v x y z w}; patches with a domain
+ * their range and {@code trim}/{@code hole} loops; a free-form surface read from a file whose
+ * pieces are all still there is written back as it was read ({@link ObjSurfaceWriter}). Each
+ * patch gets its own vertices (no sharing), written with the shortest round-trip number text, so
+ * reading the file back gives equal patches bit for bit. Stateless and thread-safe.
  */
 public final class ObjWriter {
     private ObjWriter() {}
@@ -38,36 +41,6 @@ public final class ObjWriter {
 
     /** Writes OBJ text to {@code out} (not closed). */
     public static void write(Writer out, List<BezierPatch> patches) throws IOException {
-        StringBuilder sb = new StringBuilder(256);
-        sb.append("# Bézier Tracer: ").append(patches.size()).append(" Bézier patches\n");
-        sb.append("cstype bezier\n");
-        out.write(sb.toString());
-        int firstVertex = 1;
-        int patchNumber = 1;
-        for (BezierPatch patch : patches) {
-            sb.setLength(0);
-            int n = patch.degreeU(), m = patch.degreeV();
-            sb.append("# patch ").append(patchNumber++).append('\n');
-            double[] net = patch.copyNet();
-            for (int k = 0; k < net.length; k += 3) {
-                sb.append("v ").append(NumberText.format(net[k])).append(' ')
-                        .append(NumberText.format(net[k + 1])).append(' ')
-                        .append(NumberText.format(net[k + 2])).append('\n');
-            }
-            sb.append("deg ").append(n).append(' ').append(m).append('\n');
-            sb.append("surf 0 1 0 1");
-            for (int j = 0; j <= m; j++) {
-                if (j > 0) {
-                    sb.append(" \\\n    ");
-                }
-                for (int i = 0; i <= n; i++) {
-                    sb.append(' ').append(firstVertex + j * (n + 1) + i);
-                }
-            }
-            sb.append("\nparm u 0 1\nparm v 0 1\nend\n");
-            out.write(sb.toString());
-            firstVertex += patch.pointCount();
-        }
-        out.flush();
+        new ObjSurfaceWriter(out).write(patches);
     }
 }

@@ -123,7 +123,7 @@ final class SceneReader {
     }
 
     /** Runs a model-record constructor, re-throwing its validation error with the JSON path. */
-    private static <T> T build(JsonNode where, Supplier<T> constructor) {
+    static <T> T build(JsonNode where, Supplier<T> constructor) {
         try {
             return constructor.get();
         } catch (ModelFormatException e) {
@@ -203,7 +203,7 @@ final class SceneReader {
     private static List<BezierPatch> inlinePatches(JsonNode list) {
         List<BezierPatch> out = new ArrayList<>();
         for (JsonNode p : list.array()) {
-            p.object("degree", "points");
+            p.object("degree", "points", "weights", "domain", "trim");
             JsonNode degree = p.require("degree");
             List<JsonNode> nm = degree.array();
             if (nm.size() != 2) {
@@ -226,7 +226,7 @@ final class SceneReader {
             for (int k = 0; k < pts.size(); k++) {
                 System.arraycopy(pts.get(k).asNumbers(3), 0, net, 3 * k, 3);
             }
-            out.add(new BezierPatch(n, m, net));
+            out.add(SceneFreeForm.patch(p, n, m, net));
         }
         return out;
     }

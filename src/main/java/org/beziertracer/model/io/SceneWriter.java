@@ -22,7 +22,9 @@ import org.beziertracer.model.Sphere;
  * Writes a {@link SceneDocument} as a version-1 scene file that {@link SceneReader} reads back to
  * an equal document: every material is named {@code m0, m1, …} in scene order and referenced by
  * name, patches are written inline ({@code "patches"}, one model per run of patches sharing a
- * material), numbers use the shortest text that parses back to the same double
+ * material; a rational patch with its {@code "weights"}, a piece of a free-form surface with its
+ * {@code "domain"} and {@code "trim"}, {@link SceneFreeForm}),
+ * numbers use the shortest text that parses back to the same double
  * ({@link NumberText#format}). Arrays of numbers stay on one line. Stateless.
  */
 final class SceneWriter {
@@ -40,7 +42,20 @@ final class SceneWriter {
         }
         root.add("materials", materials);
 
-        // Patches: one inline model per run of equal material
+        addIfAny(root, "models", models(scene));
+        addIfAny(root, "planes", planes(scene));
+        addIfAny(root, "spheres", spheres(scene));
+        addIfAny(root, "lights", lights(scene));
+        scene.camera().ifPresent(c -> root.add("camera", camera(c)));
+        root.add("render", settings(doc.settings()));
+
+        StringBuilder out = new StringBuilder();
+        print(root, "", out);
+        return out.append('\n').toString();
+    }
+
+    /** The patches: one inline model per run of equal material. */
+    private static JsonArray models(Scene scene) {
         JsonArray models = new JsonArray();
         for (int start = 0; start < scene.patchCount(); ) {
             int material = scene.patchMaterial(start);
@@ -55,8 +70,10 @@ final class SceneWriter {
             models.add(model);
             start = end;
         }
-        addIfAny(root, "models", models);
+        return models;
+    }
 
+    private static JsonArray planes(Scene scene) {
         JsonArray planes = new JsonArray();
         for (Plane p : scene.planes()) {
             JsonObject o = new JsonObject();
@@ -66,8 +83,10 @@ final class SceneWriter {
             o.add("uvScale", number(p.uvScale()));
             planes.add(o);
         }
-        addIfAny(root, "planes", planes);
+        return planes;
+    }
 
+    private static JsonArray spheres(Scene scene) {
         JsonArray spheres = new JsonArray();
         for (Sphere s : scene.spheres()) {
             JsonObject o = new JsonObject();
@@ -76,8 +95,10 @@ final class SceneWriter {
             o.addProperty("material", "m" + s.material());
             spheres.add(o);
         }
-        addIfAny(root, "spheres", spheres);
+        return spheres;
+    }
 
+    private static JsonArray lights(Scene scene) {
         JsonArray lights = new JsonArray();
         for (PointLight l : scene.lights()) {
             JsonObject o = new JsonObject();
@@ -85,14 +106,7 @@ final class SceneWriter {
             o.add("color", numbers(l.r(), l.g(), l.b()));
             lights.add(o);
         }
-        addIfAny(root, "lights", lights);
-
-        scene.camera().ifPresent(c -> root.add("camera", camera(c)));
-        root.add("render", settings(doc.settings()));
-
-        StringBuilder out = new StringBuilder();
-        print(root, "", out);
-        return out.append('\n').toString();
+        return lights;
     }
 
     private static void addIfAny(JsonObject root, String key, JsonArray array) {
@@ -143,6 +157,7 @@ final class SceneWriter {
             }
         }
         o.add("points", points);
+        SceneFreeForm.write(o, p);
         return o;
     }
 
@@ -173,7 +188,7 @@ final class SceneWriter {
 
     private static JsonArray vec(Vec3 v) { return numbers(v.x(), v.y(), v.z()); }
 
-    private static JsonArray numbers(double... values) {
+    static JsonArray numbers(double... values) {
         JsonArray a = new JsonArray();
         for (double v : values) {
             a.add(number(v));
@@ -182,7 +197,7 @@ final class SceneWriter {
     }
 
     /** A number printed by {@link NumberText#format}: shortest round-trip text, whole numbers bare. */
-    private static JsonPrimitive number(double v) {
+    static JsonPrimitive number(double v) {
         return new JsonPrimitive(new JsonNode.NumberLiteral(NumberText.format(v)));
     }
 

@@ -10,6 +10,7 @@ import java.util.List;
 
 import org.beziertracer.UserMessages;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
 import org.junit.jupiter.api.Test;
 
 class ObjReaderTest {
@@ -148,15 +149,11 @@ class ObjReaderTest {
     @Test
     void unsupportedElementsGiveAnUnsupportedErrorWithTheLine() {
         String[][] cases = {
-                {"cstype rat bezier\n", "unsupported: cstype rat bezier"},
-                {"cstype bspline\n", "unsupported: cstype bspline"},
                 {"cstype bmatrix\n", "unsupported: cstype bmatrix"},
-                {"cstype cardinal\n", "unsupported: cstype cardinal"},
+                {"cstype rat cardinal\n", "unsupported: cstype rat cardinal"},
                 {"cstype taylor\n", "unsupported: cstype taylor"},
                 {"curv 0 1 1 2\n", "unsupported: curv"},
-                {"curv2 1 2\n", "unsupported: curv2"},
-                {"trim 0 1 1\n", "unsupported: trim"},
-                {"hole 0 1 1\n", "unsupported: hole"},
+                {"con 1 0 1 1 2 0 1 2\n", "unsupported: con"},
                 {"scrv 0 1 1\n", "unsupported: scrv"},
                 {"sp 1\n", "unsupported: sp"},
                 {"bmat u 1 0 0 1\n", "unsupported: bmat"},
@@ -167,18 +164,14 @@ class ObjReaderTest {
     }
 
     @Test
-    void aTrimInsideASurfBodyIsUnsupported() {
-        String text = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nparm u 0 1\ntrim 0 1 1\nend\n";
-        assertMessage(fails(text, "trim.obj"), "trim.obj:9: ", "unsupported: trim");
-    }
-
-    @Test
-    void aSurfaceRestrictedToPartOfItsParmRangeIsUnsupported() {
+    void aSurfaceRestrictedToPartOfItsParmRangeIsThatPartOfThePatch() {
         String text = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 0.5 0 1 1 2 3 4\nparm u 0 1\nparm v 0 1\nend\n";
-        assertMessage(fails(text, "part.obj"), "part.obj:7: ", "unsupported: surf range u[0,0.5]");
-        // without parm lines the domain is [0,1], so a narrower range is a restriction too
-        String noParm = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 1 0 0.25 1 2 3 4\nend\n";
-        assertMessage(fails(noParm, "part.obj"), "part.obj:7: ", "unsupported: surf range v[0,0.25]");
+        BezierPatch p = ObjReader.read(text, "part.obj").get(0);
+        assertEquals(new PatchDomain(0, 0.5, 0, 1, null), p.domain());
+        assertArrayEquals(new double[] {0, 0, 0, 0.5, 0, 0, 0, 1, 0, 0.5, 1, 0.5}, p.copyNet());
+        // beyond the parm range it is an error naming the surf line
+        String wide = VERTICES + "cstype bezier\ndeg 1 1\nsurf 0 1 0 1.25 1 2 3 4\nend\n";
+        assertMessage(fails(wide, "part.obj"), "part.obj:7: ", "surf range v[0,1.25] inside the parameter range [0,1]");
     }
 
     @Test
@@ -210,7 +203,7 @@ class ObjReaderTest {
         assertMessage(fails(VERTICES + "cstype bezier\ndeg 1\nsurf 0 1 0 1 1 2 3 4\nend\n", "d.obj"), "d.obj:7: ",
                 "expected deg n m (two degrees) before surf");
         assertMessage(fails(VERTICES + "deg 1 1\nsurf 0 1 0 1 1 2 3 4\nend\n", "d.obj"), "d.obj:6: ",
-                "expected cstype bezier before surf");
+                "expected cstype bezier or bspline before surf");
     }
 
     @Test

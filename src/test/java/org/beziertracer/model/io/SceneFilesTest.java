@@ -31,8 +31,9 @@ class SceneFilesTest {
     }
 
     @Test
-    void theBuiltInNamesArePatchTeapotAndTeapotRoom() {
-        assertEquals(List.of("patch", "teapot", "teapot-room", "wavy6", "wavy10", "curved"), BuiltIns.names());
+    void theBuiltInNamesAreTheModelsThenTheTeapotRoom() {
+        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "wavy6",
+                "wavy10", "curved", "teapot-room"), BuiltIns.names());
     }
 
     @Test

@@ -1,14 +1,14 @@
-package org.beziertracer.ui;
+package org.beziertracer.app;
 
 import java.util.HashMap;
 import java.util.Map;
 import java.util.prefs.AbstractPreferences;
 
 /**
- * Preferences held in memory only: GUI tests give the app a fresh root of these, so no test reads
- * or writes the user's own preferences and no test sees another's.
+ * Preferences held in memory only: tests give the app a fresh root of these, so no test reads or
+ * writes the user's own preferences and no test sees another's.
  */
-final class MemoryPreferences extends AbstractPreferences {
+public final class MemoryPreferences extends AbstractPreferences {
 
     private final Map<String, String> values = new HashMap<>();
     private final Map<String, MemoryPreferences> children = new HashMap<>();
@@ -17,8 +17,13 @@ final class MemoryPreferences extends AbstractPreferences {
         super(parent, name);
     }
 
+    /** The app's preferences in a new, empty in-memory root. */
+    public static AppPreferences fresh() {
+        return new AppPreferences(root().node(AppPreferences.NODE));
+    }
+
     /** A new, empty root. */
-    static MemoryPreferences root() {
+    public static MemoryPreferences root() {
         return new MemoryPreferences(null, "");
     }
 
