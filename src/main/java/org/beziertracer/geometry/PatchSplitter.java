@@ -143,15 +143,20 @@ public final class PatchSplitter {
 
         /**
          * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
-         * trim curve crosses is split on to the depth cap, so that most hits fall in pieces wholly
-         * inside (no trim test) and the pieces that need the test are small.
+         * trim curve crosses is split on to the (base) depth cap, so that most hits fall in pieces
+         * wholly inside (no trim test) and the pieces that need the test are small. Above bicubic
+         * the tolerance and the cap are the degree-aware ones ({@link SplitOptions#flatnessFor},
+         * {@link SplitOptions#maxDepthFor}); past the base cap {@link SplitOptions#maxDepth} only a
+         * piece already flat by the base tolerance is refined on, so a net far from flat (a random
+         * one) stays near the base cap's piece count instead of growing to {@code 2^maxDepthFor}.
          */
         private boolean done(double[] xyz, int depth, int trimState) {
             if (!options.enabled() || depth >= maxDepth) {
                 return true;
             }
+            boolean pastBaseCap = depth >= options.maxDepth();
             if (trimState == TrimCurves.MIXED) {
-                return false;
+                return pastBaseCap;
             }
             Bounds.ofPoints(xyz, 0, points, box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
@@ -159,8 +164,11 @@ public final class PatchSplitter {
             if (size < minSize) {
                 return true;
             }
-            double tolerance = flatness;
-            if (NetMeasures.flatness(xyz, 0, n, m) > tolerance * size) {
+            double f = NetMeasures.flatness(xyz, 0, n, m);
+            if (pastBaseCap) {
+                return f <= flatness * size || f > options.flatnessTolerance() * size;
+            }
+            if (f > flatness * size) {
                 return false;
             }
             if (dim == 4) {

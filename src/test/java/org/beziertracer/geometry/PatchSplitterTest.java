@@ -89,7 +89,10 @@ class PatchSplitterTest {
                 double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
                 boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
                 String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
-                assertTrue(flat || depth == options.maxDepthFor(n, m), "a piece neither flat nor at the cap: " + where);
+                // past the base cap, only pieces flat by the base tolerance are split on
+                boolean baseLeaf = depth >= options.maxDepth() && !flatByBase(pieces, p, n, m, options);
+                assertTrue(flat || baseLeaf || depth == options.maxDepthFor(n, m),
+                        "a piece neither flat nor at the cap: " + where);
                 assertTrue(depth <= options.maxDepthFor(n, m), where);
             }
             // The parent of each piece (its box doubled in the direction it was last halved) was not
@@ -106,6 +109,28 @@ class PatchSplitterTest {
     }
 
     private static double sq(double x) { return x * x; }
+
+    /** True when piece {@code p} is flat by the base tolerance {@link SplitOptions#flatnessTolerance}. */
+    private static boolean flatByBase(PatchPieces pieces, int p, int n, int m, SplitOptions options) {
+        double[] box = new double[6];
+        int off = p * pieces.netLength();
+        NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
+        double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+        return NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessTolerance() * diagonal;
+    }
+
+    @Test
+    void aNetFarFromFlatGetsNoMorePiecesAtHighDegreeThanTheBaseCapAllows() {
+        Random rnd = new Random(2017);
+        for (int trial = 0; trial < 20; trial++) {
+            int n = 9 + rnd.nextInt(7), m = 9 + rnd.nextInt(7);
+            BezierPatch patch = new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 10));
+            PatchPieces pieces = PatchSplitter.split(patch, SplitOptions.defaults());
+            // 2^maxDepthFor = 1,024..4,096 pieces if every piece were split on to the degree's cap
+            assertTrue(pieces.count() <= 2 << SplitOptions.defaults().maxDepth(),
+                    pieces.count() + " pieces, trial " + trial + " degree " + n + "x" + m);
+        }
+    }
 
     @Test
     void theLongerControlPolygonIsHalvedFirst() {

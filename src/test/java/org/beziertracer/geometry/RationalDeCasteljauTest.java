@@ -70,7 +70,7 @@ class RationalDeCasteljauTest {
             double[] poly = new double[9], rat = new double[9];
             DeCasteljau.evaluateWithDerivatives(xyz, 0, n, m, u, v, poly, scratch);
             RationalDeCasteljau.evaluateWithDerivatives(h, 0, n, m, u, v, rat, 0, scratch, 0);
-            assertArrayEquals(poly, rat, "trial " + trial);
+            assertArrayEquals(poly, rat, "trial " + trial + " degree " + n + "x" + m);
             double[] p3 = new double[3], r3 = new double[3];
             DeCasteljau.evaluate(xyz, 0, n, m, 3, u, v, p3, 0, scratch);
             RationalDeCasteljau.evaluate(h, 0, n, m, u, v, r3, 0, scratch);
@@ -111,7 +111,7 @@ class RationalDeCasteljauTest {
             double[] poly = new double[9], rat = new double[9];
             DeCasteljau.evaluateWithDerivatives(xyz, 0, 3, 3, u, v, poly, scratch);
             RationalDeCasteljau.evaluateWithDerivatives(h, 0, 3, 3, u, v, rat, 0, scratch, 0);
-            assertArrayEquals(poly, rat, "trial " + trial);
+            assertArrayEquals(poly, rat, "trial " + trial + " degree " + n + "x" + m);
         }
     }
 
