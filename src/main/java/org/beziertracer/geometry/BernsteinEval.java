@@ -84,44 +84,6 @@ public final class BernsteinEval {
     }
 
     /**
-     * As {@link #evaluateWithDerivatives(double[], int, int, int, double, double, double[], int,
-     * double[], int)} for a net of {@code dim} doubles per point (a homogeneous rational net has
-     * 4): {@code S}, {@code ∂S/∂u}, {@code ∂S/∂v} into {@code out[outOff ..)}, {@code dim} doubles
-     * each. Each component is summed in exactly the order of the 3-D method, so the first three
-     * components of a net with all weights 1 equal the polynomial results bit for bit.
-     */
-    public static void evaluateWithDerivatives(double[] net, int off, int n, int m, int dim, double u, double v,
-                                               double[] out, int outOff, double[] scratch, int scratchOff) {
-        int bu = scratchOff, lu = bu + ORDER, bv = lu + ORDER, lv = bv + ORDER;
-        basis(n, u, scratch, bu, lu);
-        basis(m, v, scratch, bv, lv);
-        int rowStride = dim * (n + 1);
-        for (int c = 0; c < dim; c++) {
-            double s = 0, su = 0, sv = 0, q = 0;
-            for (int j = 0, row = off + c; j <= m; j++, row += rowStride) {
-                double p = net[row];
-                double r = scratch[bu] * p, d = 0;
-                for (int i = 1, k = row + dim; i <= n; i++, k += dim) {
-                    double x = net[k];
-                    r += scratch[bu + i] * x;
-                    d += scratch[lu + i - 1] * (x - p);
-                    p = x;
-                }
-                double wj = scratch[bv + j];
-                s += wj * r;
-                su += wj * d;
-                if (j > 0) {
-                    sv += scratch[lv + j - 1] * (r - q);
-                }
-                q = r;
-            }
-            out[outOff + c] = s;
-            out[outOff + dim + c] = n * su;
-            out[outOff + 2 * dim + c] = m * sv;
-        }
-    }
-
-    /**
      * The degree-{@code deg} Bernstein basis at {@code t} into {@code b[bo .. bo+deg]} and the
      * degree-{@code (deg−1)} basis into {@code b[lo .. lo+deg−1]}; {@code deg ≥ 1}.
      */

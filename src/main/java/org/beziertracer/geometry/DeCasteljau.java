@@ -77,20 +77,14 @@ public final class DeCasteljau {
      * leaving four points {@code b00, b10, b01, b11}; then {@code S} is their bilinear
      * interpolant at {@code (u,v)}, {@code ∂S/∂u = n·lerp_v(b10-b00, b11-b01)} and
      * {@code ∂S/∂v = m·lerp_u(b01-b00, b11-b10)} (Farin, tensor-product patches). Degrees must be ≥ 1.
-     * For {@code dim = 3} and {@code dim = 4} (homogeneous rational nets), nets of degree
-     * {@code n + m > 4} other than bicubics are evaluated by the equivalent {@code O(n·m)}
-     * Bernstein sums instead ({@link BernsteinEval}).
+     * For {@code dim = 3}, nets of degree {@code n + m > 4} other than bicubics are evaluated
+     * by the equivalent {@code O(n·m)} Bernstein sums instead ({@link BernsteinEval}).
      * Uses {@code scratchOff + 3*MAX_ORDER*dim} doubles of {@code scratch}.
      */
     public static void evaluateWithDerivatives(double[] net, int off, int n, int m, int dim, double u, double v,
                                                double[] out, int outOff, double[] scratch, int scratchOff) {
         if (dim == 3) {
             DeCasteljau3.evaluateWithDerivatives(net, off, n, m, u, v, out, outOff, scratch, scratchOff);
-            return;
-        }
-        if (dim == 4 && n + m > DeCasteljau3.BERNSTEIN_FROM && !(n == 3 && m == 3)) {
-            // homogeneous nets take the same route as 3-D ones, so weights 1 give the same bits
-            BernsteinEval.evaluateWithDerivatives(net, off, n, m, dim, u, v, out, outOff, scratch, scratchOff);
             return;
         }
         int rowStride = (n + 1) * dim;
