@@ -67,6 +67,14 @@ public final class PatchSplitter {
     }
 
     /**
+     * Past the base depth cap a piece is split on only while its flatness is within this many times
+     * the base tolerance. On the 10×10-point wavy grid 1 makes 292 leaves and keeps about half of
+     * the frame-time gain, 2 makes 550 and 4 (or no limit) 580 with all of it; a random degree-11
+     * net makes 64 pieces at the base cap, 159 with 2, 660 with 4 (degree 9..15: at most 512 with 2).
+     */
+    static final double PAST_CAP_FLATNESS = 2;
+
+    /**
      * The depth-first halving with all working memory allocated once per patch: level
      * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
      * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
@@ -147,8 +155,9 @@ public final class PatchSplitter {
          * wholly inside (no trim test) and the pieces that need the test are small. Above bicubic
          * the tolerance and the cap are the degree-aware ones ({@link SplitOptions#flatnessFor},
          * {@link SplitOptions#maxDepthFor}); past the base cap {@link SplitOptions#maxDepth} only a
-         * piece already flat by the base tolerance is refined on, so a net far from flat (a random
-         * one) stays near the base cap's piece count instead of growing to {@code 2^maxDepthFor}.
+         * piece within {@value #PAST_CAP_FLATNESS} times the base tolerance of flat is refined on,
+         * so a net far from flat (a random one) stays near the base cap's piece count instead of
+         * growing to {@code 2^maxDepthFor}.
          */
         private boolean done(double[] xyz, int depth, int trimState) {
             if (!options.enabled() || depth >= maxDepth) {
@@ -166,7 +175,7 @@ public final class PatchSplitter {
             }
             double f = NetMeasures.flatness(xyz, 0, n, m);
             if (pastBaseCap) {
-                return f <= flatness * size || f > options.flatnessTolerance() * size;
+                return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
             }
             if (f > flatness * size) {
                 return false;

@@ -49,7 +49,7 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
      * The depth cap for a degree {@code n}×{@code m} net: {@link #maxDepth} up to bicubic (and when
      * it is 0, no split), plus two halvings (one per direction) for each doubling of
      * {@code max(n, m)} beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15 +6.
-     * Past {@link #maxDepth} the splitter refines only pieces already flat by
+     * Past {@link #maxDepth} the splitter refines only pieces near flat by
      * {@link #flatnessTolerance} (see {@link PatchSplitter}), so a net far from flat stays near
      * {@code 2^maxDepth} pieces.
      */
