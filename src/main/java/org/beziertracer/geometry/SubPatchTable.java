@@ -158,6 +158,12 @@ public final class SubPatchTable {
         IntStream range = IntStream.range(0, pieces.length);
         (parallel ? range.parallel() : range).forEach(k -> pieces[k] = kept(
                 PatchSplitter.split(patches.get(k), options, trims[k], minSize)));
+        return assemble(patches, options, minSize, trims, pieces, parallel);
+    }
+
+    /** The table of {@code patches} split into {@code pieces} (null: a whole leaf sharing the patch's net). */
+    private static SubPatchTable assemble(List<BezierPatch> patches, SplitOptions options, double minSize,
+                                          TrimCurves[] trims, PatchPieces[] pieces, boolean parallel) {
         int leaves = 0;
         long doubles = 0;
         boolean rational = false;
@@ -352,27 +358,10 @@ public final class SubPatchTable {
     /** A table built afresh from {@code list} with this table's stop (an edit that made the first rational or trimmed patch). */
     private SubPatchTable rebuilt(List<BezierPatch> list, TrimCurves[] trims) {
         PatchPieces[] pieces = new PatchPieces[list.size()];
-        long leaves = 0, doubles = 0;
-        boolean rational = false;
         for (int k = 0; k < pieces.length; k++) {
             pieces[k] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize));
-            leaves += leafCount(pieces[k]);
-            doubles += regionLength(list.get(k), pieces[k]);
-            rational |= list.get(k).isRational();
         }
-        SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims);
-        int s = 0, off = 0;
-        for (int k = 0; k < pieces.length; k++) {
-            t.firstOf[k] = s;
-            t.patchNetOffset[k] = off;
-            s += leafCount(pieces[k]);
-            off += (int) regionLength(list.get(k), pieces[k]);
-        }
-        t.firstOf[pieces.length] = s;
-        for (int k = 0; k < pieces.length; k++) {
-            t.fill(k, pieces[k]);
-        }
-        return t;
+        return assemble(list, options, minSize, trims, pieces, false);
     }
 
     /** End of patch {@code k}'s region in {@link #nets}. */

@@ -94,4 +94,28 @@ class InspectorTest {
         BezierPatch p = app.document().scene().patches().get(0);
         assertEquals(p.get(0, 0, 0), Double.parseDouble(Inspector.format(p.get(0, 0, 0))), 1e-9);
     }
+
+    @Test
+    void aRationalPatchShowsItsWeightAndTakesATypedOneOnEveryCopy() {
+        app.files().openBuiltIn("sphere");
+        Scene sphere = app.document().scene();
+        assertTrue(sphere.patches().get(0).isRational(), "the built-in sphere is rational");
+        // A point on a border between patches: its copies are re-weighted together
+        PointRef r = new PointRef(0, 0, 1);
+        List<PointRef> copies = Topology.of(sphere, false).handle(r, sphere);
+        app.select(Selection.ofHandles(List.of(copies)));
+        Inspector.State st = app.inspector().state();
+        assertTrue(st.hasWeight(), "a rational patch has a weight row");
+        assertEquals(Inspector.format(sphere.patches().get(0).weight(0, 1)), st.text(Inspector.Field.WEIGHT));
+        assertNull(app.inspector().set(Inspector.Field.WEIGHT, "2.5"));
+        for (PointRef c : copies) {
+            assertEquals(2.5, app.document().scene().patches().get(c.patch()).weight(c.i(), c.j()), 0, "copy " + c);
+        }
+        assertEquals(sphere.patches().get(0).get(0, 1, 0), coord(r, 0), "the point itself stays");
+        assertEquals("2.5", app.inspector().state().text(Inspector.Field.WEIGHT));
+        assertEquals("Set weight", app.document().history().undoName());
+        assertTrue(UserMessages.check(app.inspector().set(Inspector.Field.WEIGHT, "0")).startsWith("weight must be a positive number"));
+        app.edits().undo();
+        assertSame(sphere, app.document().scene(), "one undoable edit");
+    }
 }

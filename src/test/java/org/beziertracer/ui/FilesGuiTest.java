@@ -186,9 +186,10 @@ class FilesGuiTest extends GuiSession {
     private static void typeSpinner(JDialog dialog, String name, String value) {
         JSpinner s = (JSpinner) GuiDriver.find(dialog, name);
         javax.swing.JTextField field = ((JSpinner.DefaultEditor) s.getEditor()).getTextField();
-        d.click(field);
+        d.focus(field);
         d.key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
         d.type(value);
+        d.waitFor(name + " typed", () -> value.equals(field.getText()));
         d.key(KeyEvent.VK_TAB);
         d.waitFor(name + " = " + value, () -> String.valueOf(s.getValue()).equals(value));
     }

@@ -155,6 +155,11 @@ final class GuiDriver {
         robot.waitForIdle();
     }
 
+    /** Clicks {@code field} (again, if a click is dropped) until it has the keyboard focus. */
+    void focus(Component field) {
+        clickUntil(field, "the keyboard focus in " + field.getName(), field::isFocusOwner);
+    }
+
     /** Clicks the tool {@code tool.<id>} in the toolbox. */
     void tool(String id) {
         click(find("tool." + id));
@@ -254,7 +259,7 @@ final class GuiDriver {
     void chooseFile(Path file) {
         JDialog dialog = dialogWith(JFileChooser.class);
         JTextField name = onEdt(() -> descendant(dialog, JTextField.class));
-        click(name);
+        focus(name);
         key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
         key(KeyEvent.VK_DELETE);
         type(file.toString());
@@ -366,7 +371,7 @@ final class GuiDriver {
 
     /** Clicks the text field, replaces its text by {@code text} with the keyboard and presses Enter. */
     void typeInto(JTextField field, String text) {
-        click(field);
+        focus(field);
         key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
         type(text);
         waitFor("the text typed into " + field.getName(), () -> text.equals(field.getText()));

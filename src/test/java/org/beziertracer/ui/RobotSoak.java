@@ -139,6 +139,9 @@ final class RobotSoak {
     /** A menu item with the mouse; a model switch first marks the document saved (no unsaved-edits question). */
     private void menu(String[] item) {
         if (item[0].equals("Models")) {
+            // the input sent so far (a drag is not waited for) lands first: it cannot make an edit
+            // after the mark and so ask the unsaved-edits question
+            d.robot.waitForIdle();
             GuiDriver.onEdt(() -> d.app.document().history().markSaved());
         }
         d.menu(item[0], item[1]);
