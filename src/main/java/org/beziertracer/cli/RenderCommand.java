@@ -24,6 +24,7 @@ import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
 import org.beziertracer.render.Film;
 import org.beziertracer.render.FrameSink;
+import org.beziertracer.render.ImageDifference;
 import org.beziertracer.render.PixelFilter;
 import org.beziertracer.render.PixelProbe;
 import org.beziertracer.render.RenderJob;
@@ -51,6 +52,8 @@ import picocli.CommandLine.Spec;
 final class RenderCommand implements Callable<Integer> {
 
     static final int MAX_REPEAT = 1000;
+    /** A pixel differs from the other method's when a channel differs by more than this share of the range (issue #10). */
+    static final double DIFFERENCE_PERCENT = 10;
 
     @Spec
     CommandSpec spec;
@@ -123,6 +126,11 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
     String pixel;
 
+    @Option(names = "--difference-to", paramLabel = "clipping|newton|subdivision",
+            description = "also render with this method; write the pixels that differ by more than 10 %% in red "
+                    + "over a dimmed image and print their count")
+    String differenceTo;
+
     @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
     boolean quiet;
 
@@ -131,22 +139,7 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        if (output == null && pixel == null) {
-            throw new IllegalArgumentException("missing -o OUT.png");
-        }
-        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
-            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
-        }
-        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new IllegalArgumentException(output + ": the output must be a .png file");
-        }
-        if (repeat < 1 || repeat > MAX_REPEAT) {
-            throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
-        }
-        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
-            throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
-                    + ", got " + tessellate);
-        }
+        checkArguments();
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
@@ -164,6 +157,7 @@ final class RenderCommand implements Callable<Integer> {
         HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
         RenderJob job = RenderJob.prepare(scene, settings, options);
         job = job.withCamera(camera(job.camera()));
+        RenderJob otherJob = differenceTo == null ? null : other(scene, settings, options, job);
         PrintWriter out = spec.commandLine().getOut();
         if (pixel != null) {
             int[] xy = ints("--pixel", pixel, 2, ",");
@@ -182,13 +176,55 @@ final class RenderCommand implements Callable<Integer> {
                 result = session.render(job);
                 frameMillis[k] = result.stats().millis();
             }
+            if (differenceTo != null) {
+                int[] argb = difference(session.render(otherJob).argb(), result.argb(), out);
+                PngWriter.write(output, settings.width(), settings.height(), argb);
+            }
         }
-        PngWriter.write(output, settings.width(), settings.height(), result.argb());
+        if (differenceTo == null) {
+            PngWriter.write(output, settings.width(), settings.height(), result.argb());
+        }
         if (stats) {
             out.println(statsJson(job, settings, threadCount, result, frameMillis));
             out.flush();
         }
         return 0;
+    }
+
+    /** The options' own checks, before anything is read: one line each. */
+    private void checkArguments() {
+        if (output == null && pixel == null) {
+            throw new IllegalArgumentException("missing -o OUT.png");
+        }
+        if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
+            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
+        }
+        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+            throw new IllegalArgumentException(output + ": the output must be a .png file");
+        }
+        if (repeat < 1 || repeat > MAX_REPEAT) {
+            throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
+        }
+        if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
+            throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
+                    + ", got " + tessellate);
+        }
+    }
+
+    /** The same view rendered with the method of {@code --difference-to}. */
+    private RenderJob other(Scene scene, RenderSettings s, RenderOptions options, RenderJob job) {
+        RenderSettings o = new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
+                differenceTo.trim().toLowerCase(Locale.ROOT), s.bvh(), s.shading(), s.checker(), s.shadows(), s.maxDepth());
+        return RenderJob.prepare(scene, o, options).withCamera(job.camera());
+    }
+
+    /** Prints how many pixels of {@code mine} differ from {@code theirs}; the overlay image. */
+    private int[] difference(int[] theirs, int[] mine, PrintWriter out) {
+        int n = ImageDifference.count(mine, theirs, DIFFERENCE_PERCENT);
+        out.printf(Locale.ROOT, "%d of %d pixels differ from %s by more than %.0f %%%n", n, mine.length,
+                differenceTo.trim().toLowerCase(Locale.ROOT), DIFFERENCE_PERCENT);
+        out.flush();
+        return ImageDifference.overlay(mine, theirs, DIFFERENCE_PERCENT);
     }
 
     /** The progress bar on standard error, or null with --quiet or when standard error is not a terminal. */

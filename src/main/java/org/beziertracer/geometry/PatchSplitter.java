@@ -186,9 +186,9 @@ public final class PatchSplitter {
                     wMin = Math.min(wMin, weights[k]);
                     wMax = Math.max(wMax, weights[k]);
                 }
-                return wMax <= WEIGHT_SPREAD * wMin;
+                return wMax <= WEIGHT_SPREAD * wMin; // a solver's criterion reads polynomial nets only
             }
-            return true;
+            return options.criterion().accepts(xyz, n, m, size, depth);
         }
 
         /** The piece's class against the trim loops, on its box in surface parameters (grown by the margin). */

@@ -8,8 +8,10 @@ package org.beziertracer.geometry;
  *                           most this fraction of its control-box diagonal
  * @param maxDepth           cap on the number of successive halvings (so at most
  *                           {@code 2^maxDepth} sub-patches per patch)
+ * @param criterion          a further test a flat enough sub-patch must pass to be a leaf (a
+ *                           solver's own refinement; {@link LeafCriterion#NONE}: none)
  */
-public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDepth) {
+public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDepth, LeafCriterion criterion) {
 
     public SplitOptions {
         if (!(flatnessTolerance > 0) || !Double.isFinite(flatnessTolerance)) {
@@ -18,6 +20,14 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
         if (maxDepth < 0 || maxDepth > 16) {
             throw new IllegalArgumentException("split depth must be 0..16, got " + maxDepth);
         }
+        if (criterion == null) {
+            throw new IllegalArgumentException("a leaf criterion is required (LeafCriterion.NONE for none)");
+        }
+    }
+
+    /** Splitting by flatness alone. */
+    public SplitOptions(boolean enabled, double flatnessTolerance, int maxDepth) {
+        this(enabled, flatnessTolerance, maxDepth, LeafCriterion.NONE);
     }
 
     /**

@@ -11,7 +11,9 @@ import org.beziertracer.geometry.Tessellator;
  * @param bvh        true: sub-patch BVH (pre-split patches, binned-SAH BVH); false: one box per
  *                   whole patch, tested in a flat list, the solver starting on the whole patch
  *                   (in tessellated mode: the triangles tested in a flat list)
- * @param split      pre-split options used when {@code bvh} is on (exact mode only)
+ * @param split      pre-split options used when {@code bvh} is on (exact mode only); each method
+ *                   has its own default ({@link Method#defaultSplit()}: Newton refines further),
+ *                   which {@link #withMethod} follows unless other options were set
  * @param bvhOptions leaf size and bin count of the BVH
  * @param tessellate 0: exact intersection of the Bézier patches; {@code K ≥ 1}: every patch is
  *                   replaced by a uniform {@code K×K} grid of cells, two triangles each
@@ -37,7 +39,11 @@ public record IntersectOptions(Method method, boolean bvh, SplitOptions split, B
         return new IntersectOptions(Method.CLIPPING, true, SplitOptions.defaults());
     }
 
-    public IntersectOptions withMethod(Method m) { return new IntersectOptions(m, bvh, split, bvhOptions, tessellate); }
+    /** Another method; split options that were this method's default become the new method's. */
+    public IntersectOptions withMethod(Method m) {
+        SplitOptions s = split.equals(method.defaultSplit()) ? m.defaultSplit() : split;
+        return new IntersectOptions(m, bvh, s, bvhOptions, tessellate);
+    }
 
     public IntersectOptions withBvh(boolean on) { return new IntersectOptions(method, on, split, bvhOptions, tessellate); }
 

@@ -2,16 +2,23 @@ package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.SubPatchTable;
 
-/** Sub-patch leaves solved by Newton iteration alone ({@link NewtonSolver}): fast, may miss roots. */
+/**
+ * Sub-patch leaves solved by Newton iteration alone ({@link NewtonSolver}), over the Newton
+ * method's own leaves ({@link NewtonRefinement}), with the per-leaf records the solver reads
+ * ({@link NewtonLeafRecords}: {@value NewtonLeafRecords#STRIDE} floats a leaf).
+ */
 final class NewtonLeaves extends PatchLeaves {
+
+    private final float[] records;
 
     NewtonLeaves(SubPatchTable table, double tolerance) {
         super(table, tolerance);
+        this.records = NewtonLeafRecords.build(table);
     }
 
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        return NewtonSolver.intersect(ctx, table, s, tMin, tMax, tolerance);
+        return NewtonSolver.intersect(ctx, table, records, s, tMin, tMax, tolerance);
     }
 
     @Override

@@ -35,17 +35,9 @@ final class RayPatchNewton {
         int dim = table.patchDim[k];
         double[] e = ctx.eval;
         ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
-        int result = DIVERGED;
         for (int step = 0; step <= maxSteps; step++) {
-            RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
-            double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
-            double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
-            double f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
-            ctx.rootU = u;
-            ctx.rootV = v;
-            ctx.evalU = u;
-            ctx.evalV = v;
-            ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+            evaluate(ctx, net, off, n, m, dim, u, v);
+            double f1 = ctx.residual1, f2 = ctx.residual2;
             if (Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance && step > 0) {
                 return CONVERGED;
             }
@@ -77,21 +69,30 @@ final class RayPatchNewton {
                 return DIVERGED;
             }
             if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15) {
-                result = CONVERGED;
                 // one more evaluation at the final iterate for t
-                RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
-                qx = e[0] - ctx.ox; qy = e[1] - ctx.oy; qz = e[2] - ctx.oz;
-                f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
-                f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
-                ctx.rootU = u;
-                ctx.rootV = v;
-                ctx.evalU = u;
-                ctx.evalV = v;
-                ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
-                return Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance ? result : DIVERGED;
+                evaluate(ctx, net, off, n, m, dim, u, v);
+                return Math.abs(ctx.residual1) <= tolerance && Math.abs(ctx.residual2) <= tolerance
+                        ? CONVERGED : DIVERGED;
             }
         }
-        return result;
+        return DIVERGED;
+    }
+
+    /**
+     * S, Su, Sv of the patch at {@code (u, v)} into {@code ctx.eval}; the iterate as the root so
+     * far (u, v and its t along the ray) and its residuals to the ray's two planes.
+     */
+    private static void evaluate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v) {
+        double[] e = ctx.eval;
+        RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
+        double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
+        ctx.residual1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+        ctx.residual2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        ctx.rootU = u;
+        ctx.rootV = v;
+        ctx.evalU = u;
+        ctx.evalV = v;
+        ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
     }
 
     /**

@@ -69,6 +69,8 @@ public final class TraceContext {
     final double[] rayBounds = new double[6];
     /** First two ray-space coordinates of a net's corners (u,v) = (0,0), (1,0), (0,1), (1,1). */
     final double[] corners = new double[8];
+    /** {@link NewtonSolver}'s attempt limits: the leaf's overlapped domain, the t range, a root to avoid. */
+    final double[] newton = new double[NewtonSolver.SCRATCH];
 
     // The query in flight (set by SceneIntersector)
     double tMin;
@@ -91,6 +93,8 @@ public final class TraceContext {
     boolean leafRational;
     /** The iterate with which the last diverged Newton solve left its box. */
     double escapeU, escapeV;
+    /** Newton: the residuals (distances to the ray's two planes) at the last evaluated iterate. */
+    double residual1, residual2;
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;

@@ -105,6 +105,24 @@ class RenderCommandTest {
     }
 
     @Test
+    void differenceToAnotherMethodPrintsTheCountAndWritesTheMarkedImage() throws IOException {
+        Path newton = dir.resolve("newton.png");
+        Run n = run("render", "teapot", "-o", newton.toString(), "--size", "80x60", "--method", "newton",
+                "--difference-to", "clipping");
+        assertEquals(0, n.code(), n.err());
+        assertEquals("0 of 4800 pixels differ from clipping by more than 10 %", n.out().strip());
+        BufferedImage img = ImageIO.read(newton.toFile());
+        int grey = 0;
+        for (int y = 0; y < 60; y++) {
+            for (int x = 0; x < 80; x++) {
+                int c = img.getRGB(x, y);
+                grey += (c & 0xff) == ((c >> 8) & 0xff) && (c & 0xff) == ((c >> 16) & 0xff) ? 1 : 0;
+            }
+        }
+        assertEquals(4800, grey, "nothing differs: the whole overlay is the dimmed grey picture (marks: ImageDifferenceTest)");
+    }
+
+    @Test
     void absurdOrBadInputIsOneErrorLineAndExitCodeOne() {
         String out = dir.resolve("x.png").toString();
         String[][] cases = {
@@ -122,6 +140,7 @@ class RenderCommandTest {
                 {"render", "teapot", "-o", out, "--tessellate", "-1"},
                 {"render", "teapot", "-o", out, "--tessellate", "1025"},
                 {"render", "teapot", "-o", out, "--tessellate", "1000"},
+                {"render", "teapot", "-o", out, "--difference-to", "marching"},
         };
         for (String[] args : cases) {
             Run r = run(args);

@@ -28,34 +28,54 @@ final class ReferenceIntersector {
                 if (!rayMeetsBox(cell, ox, oy, oz, dx, dy, dz, tMin, tMax)) {
                     continue;
                 }
-                double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1), t = 0;
-                boolean ok = false;
-                for (int it = 0; it < 40; it++) {
-                    DeCasteljau.evaluateWithDerivatives(net, 0, n, m, u, v, e, scratch);
-                    double fx = e[0] - ox - t * dx, fy = e[1] - oy - t * dy, fz = e[2] - oz - t * dz;
-                    // J = [Su Sv -d]
-                    double[][] j = {{e[3], e[6], -dx}, {e[4], e[7], -dy}, {e[5], e[8], -dz}};
-                    double[] step = solve3(j, new double[] {-fx, -fy, -fz});
-                    if (step == null) {
-                        break;
-                    }
-                    u += step[0];
-                    v += step[1];
-                    t += step[2];
-                    if (Math.abs(step[0]) < 1e-15 && Math.abs(step[1]) < 1e-15) {
-                        ok = true;
-                        break;
-                    }
-                }
-                double mu = 0.01 * (u1 - u0);
-                if (ok && u >= Math.max(0, u0 - mu) - 1e-12 && u <= Math.min(1, u1 + mu) + 1e-12
-                        && v >= Math.max(0, v0 - mu) - 1e-12 && v <= Math.min(1, v1 + mu) + 1e-12
-                        && t > tMin && t < tMax && (best == null || t < best[0])) {
-                    best = new double[] {t, u, v};
+                double[] root = cellRoot(net, n, m, u0, u1, v0, v1, ox, oy, oz, dx, dy, dz, tMin, tMax, e, scratch);
+                if (root != null && (best == null || root[0] < best[0])) {
+                    best = root;
                 }
             }
         }
         return best;
+    }
+
+    /**
+     * The 3×3 world-space Newton iteration from the centre of cell {@code [u0,u1]×[v0,v1]} of
+     * the degree {@code n}×{@code m} net: the converged root {t, u, v} when it lies in the cell
+     * grown by 1 % (clamped to the patch) and in (tMin, tMax), else null.
+     */
+    static double[] cellRoot(double[] net, int n, int m, double u0, double u1, double v0, double v1,
+                             double ox, double oy, double oz, double dx, double dy, double dz,
+                             double tMin, double tMax, double[] e, double[] scratch) {
+        double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1), t = 0;
+        boolean ok = false;
+        for (int it = 0; it < 40; it++) {
+            DeCasteljau.evaluateWithDerivatives(net, 0, n, m, u, v, e, scratch);
+            double fx = e[0] - ox - t * dx, fy = e[1] - oy - t * dy, fz = e[2] - oz - t * dz;
+            // J = [Su Sv -d]
+            double[][] j = {{e[3], e[6], -dx}, {e[4], e[7], -dy}, {e[5], e[8], -dz}};
+            double[] step = solve3(j, new double[] {-fx, -fy, -fz});
+            if (step == null) {
+                break;
+            }
+            u += step[0];
+            v += step[1];
+            t += step[2];
+            if (Math.abs(step[0]) < 1e-15 && Math.abs(step[1]) < 1e-15) {
+                ok = true;
+                break;
+            }
+            if (Math.abs(step[0]) < 1e-12 && Math.abs(step[1]) < 1e-12) {
+                // Converged to rounding (Newton squares the error, so the next step is noise):
+                // the remaining steps polish; near a root at u ~ 0.5 they may dither just above 1e-15
+                ok = true;
+            }
+        }
+        double mu = 0.01 * (u1 - u0);
+        if (ok && u >= Math.max(0, u0 - mu) - 1e-12 && u <= Math.min(1, u1 + mu) + 1e-12
+                && v >= Math.max(0, v0 - mu) - 1e-12 && v <= Math.min(1, v1 + mu) + 1e-12
+                && t > tMin && t < tMax) {
+            return new double[] {t, u, v};
+        }
+        return null;
     }
 
     static boolean rayMeetsBox(double[] net, double ox, double oy, double oz, double dx, double dy, double dz,

@@ -31,9 +31,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  *
  * <p>The reference images are rendered with Bézier clipping, the exact method. Newton and
  * subdivision render the same scenes and are compared with the same references, so a golden
- * image also checks that a method finds the surface the exact method finds. The exception, with
- * its reason in {@link #cases()}: Newton is not compared on the scenes of {@link #NEWTON_CRACKS},
- * where it misses more pixels at patch and leaf borders than the budget allows (issue #10).
+ * image also checks that a method finds the surface the exact method finds, on every scene.
  *
  * <p>To regenerate after an intended change, run
  * {@code mvn -B -q test -Dtest=GoldenImageTest -Dgolden.update=true}. That run compares first,
@@ -91,19 +89,12 @@ class GoldenImageTest {
             // Subdivision's hits are approximate (the control mesh of pieces 1e-3 of a leaf), but
             // at 128×96 they move no pixel of any scene: the clipping references hold
             all.add(c.with(Method.SUBDIVISION, c.golden()));
-            // Newton misses a few rays at the borders between leaves (1 or 2 pixels of the bump's
-            // primary rays, within the budget). Not compared where those cracks exceed it, until
-            // issue #10: the teapot (8 pixels at its patch borders), and reflection and refraction
-            // (7 and 8 pixels: secondary rays meet the bump's leaf borders at grazing angles)
-            if (!NEWTON_CRACKS.contains(c.name())) {
-                all.add(c.with(Method.NEWTON, c.golden()));
-            }
+            // Newton's roots are exact like clipping's (no cracks at leaf or patch borders since
+            // issue #10): the clipping references hold
+            all.add(c.with(Method.NEWTON, c.golden()));
         }
         return all;
     }
-
-    /** Scenes where Newton's cracks exceed the outlier budget today (issue #10). */
-    static final List<String> NEWTON_CRACKS = List.of("teapot", "reflection", "refraction");
 
     static Stream<Case> goldenCases() { return cases().stream(); }
 

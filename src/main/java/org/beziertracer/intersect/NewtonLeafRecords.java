@@ -1,0 +1,144 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.geometry.SubPatchTable;
+
+/**
+ * What {@link NewtonSolver} needs of each leaf, in one flat record of {@link #STRIDE} floats (64
+ * bytes) so that a leaf test reads one or two cache lines (the leaf's control net is not touched;
+ * Newton evaluates the parent patch):
+ * <pre>
+ *   U0, DU, V0, DV   the leaf's parameter box in its patch: [U0, U0+DU] × [V0, V0+DV]
+ *   C  (3)           centre of the leaf's four corner points
+ *   A, B (3 each)    centres of the smallest boxes around the scaled hodograph control points
+ *                    n·(P[i+1][j] − P[i][j]) and m·(P[i][j+1] − P[i][j])
+ *   RA, RB           radii of the balls around A and B that hold those points, hence hold the
+ *                    derivatives Su and Sv of the leaf (in its own parameters) everywhere on it
+ *                    (convex-hull property of the hodographs; Farin, Curves and Surfaces for
+ *                    CAGD, 5th ed., §16.6)
+ *   R                the leaf lies within R of its parallelogram P(s,t) = C + (s−½)A + (t−½)B
+ * </pre>
+ * The bound R: along any path from the corner {@code (0,0)}, {@code S(s,t) − P00 − sA − tB} is
+ * the integral of {@code Su − A} and {@code Sv − B}, so {@code |S − (P00 + sA + tB)| ≤ s·RA + t·RB},
+ * and {@code P00 + sA + tB} is {@code P(s,t)} shifted by {@code P00 − C + (A+B)/2}; R adds the two.
+ * The parallelogram is the leaf's enclosure (a thin parallelepiped, as in K. Qin, M. Gong, G. Tong,
+ * "Fast ray tracing NURBS surfaces", J. Comput. Sci. Technol. 11(1), 1996, whose ray–enclosure
+ * intersection also gives the start) and its axes the single-root test's balls
+ * ({@link RootUniqueness}).
+ *
+ * <p>Immutable after {@link #build}; shared by render threads.
+ */
+final class NewtonLeafRecords {
+    private NewtonLeafRecords() {}
+
+    /** Doubles per leaf. */
+    static final int STRIDE = 16;
+    static final int U0 = 0, DU = 1, V0 = 2, DV = 3, C = 4, A = 7, B = 10, RA = 13, RB = 14, R = 15;
+
+    /**
+     * The records of every sub-patch of {@code table}, as floats (one 64-byte record a leaf): the
+     * box entries are exact (dyadic fractions), and the rounding of C, A and B is added to R, RA
+     * and RB (rounded up), so every bound still holds.
+     */
+    static float[] build(SubPatchTable table) {
+        float[] rec = new float[STRIDE * table.count];
+        double[] frame = new double[STRIDE];
+        for (int s = 0; s < table.count; s++) {
+            frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s], frame, 0);
+            float[] box = table.boxes;
+            store(frame, box[4 * s], box[4 * s + 1] - box[4 * s], box[4 * s + 2], box[4 * s + 3] - box[4 * s + 2],
+                    rec, STRIDE * s);
+        }
+        return rec;
+    }
+
+    /** The record of a whole net, in its own parameters (box {@code [0,1]²}), from its {@link #frame}. */
+    static float[] leaf(double[] frame) {
+        float[] rec = new float[STRIDE];
+        store(frame, 0, 1, 0, 1, rec, 0);
+        return rec;
+    }
+
+    private static void store(double[] frame, double u0, double du, double v0, double dv, float[] rec, int o) {
+        rec[o + U0] = (float) u0;
+        rec[o + DU] = (float) du;
+        rec[o + V0] = (float) v0;
+        rec[o + DV] = (float) dv;
+        double dc = round(frame, rec, o, C), da = round(frame, rec, o, A), db = round(frame, rec, o, B);
+        rec[o + RA] = up(frame[RA] + da);
+        rec[o + RB] = up(frame[RB] + db);
+        rec[o + R] = up(frame[R] + dc + 0.5 * (da + db));
+    }
+
+    /** Rounds the vector at {@code frame[at..at+3)} to floats into {@code rec[o+at..]}; returns the rounding's length. */
+    private static double round(double[] frame, float[] rec, int o, int at) {
+        double sq = 0;
+        for (int c = 0; c < 3; c++) {
+            rec[o + at + c] = (float) frame[at + c];
+            double d = rec[o + at + c] - frame[at + c];
+            sq += d * d;
+        }
+        return Math.sqrt(sq);
+    }
+
+    /** The smallest float at least {@code x}, a little more for the rounding of the sum that made it. */
+    private static float up(double x) {
+        return Math.nextUp((float) (x * (1 + 1e-12)));
+    }
+
+    /**
+     * Writes C, A, B, RA, RB and R of the degree {@code n}×{@code m} net at {@code net[off..]} to
+     * {@code rec[o + C .. o + R]} (the box entries are left alone).
+     */
+    static void frame(double[] net, int off, int n, int m, double[] rec, int o) {
+        int row = 3 * (n + 1);
+        int p00 = off, pn0 = off + 3 * n, p0m = off + row * m, pnm = p0m + 3 * n;
+        for (int c = 0; c < 3; c++) {
+            rec[o + A + c] = midRange(net, off + c, n, m, 3, n);
+            rec[o + B + c] = midRange(net, off + c, n, m, row, m);
+            rec[o + C + c] = 0.25 * (net[p00 + c] + net[pn0 + c] + net[p0m + c] + net[pnm + c]);
+        }
+        double ra = 0, rb = 0;
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
+                if (i < n) {
+                    ra = Math.max(ra, distance(net, p, p + 3, n, rec, o + A));
+                }
+                if (j < m) {
+                    rb = Math.max(rb, distance(net, p, p + row, m, rec, o + B));
+                }
+            }
+        }
+        double ex = rec[o + C] - 0.5 * (rec[o + A] + rec[o + B]) - net[p00];
+        double ey = rec[o + C + 1] - 0.5 * (rec[o + A + 1] + rec[o + B + 1]) - net[p00 + 1];
+        double ez = rec[o + C + 2] - 0.5 * (rec[o + A + 2] + rec[o + B + 2]) - net[p00 + 2];
+        rec[o + RA] = ra;
+        rec[o + RB] = rb;
+        rec[o + R] = Math.sqrt(ex * ex + ey * ey + ez * ez) + ra + rb;
+    }
+
+    /**
+     * Middle of the range of {@code deg·(net[p + step] − net[p])} over the net's points that have a
+     * neighbour {@code step} doubles on ({@code step = 3}: along u; one row: along v), coordinate
+     * at {@code first}.
+     */
+    private static double midRange(double[] net, int first, int n, int m, int step, int deg) {
+        int row = 3 * (n + 1);
+        int columns = step == 3 ? n : n + 1, rows = step == 3 ? m + 1 : m;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (int j = 0; j < rows; j++) {
+            for (int i = 0, p = first + j * row; i < columns; i++, p += 3) {
+                double d = deg * (net[p + step] - net[p]);
+                lo = Math.min(lo, d);
+                hi = Math.max(hi, d);
+            }
+        }
+        return 0.5 * (lo + hi);
+    }
+
+    /** {@code |deg·(net[q] − net[p]) − rec[axis..axis+3)|}. */
+    private static double distance(double[] net, int p, int q, int deg, double[] rec, int axis) {
+        double x = deg * (net[q] - net[p]) - rec[axis], y = deg * (net[q + 1] - net[p + 1]) - rec[axis + 1];
+        double z = deg * (net[q + 2] - net[p + 2]) - rec[axis + 2];
+        return Math.sqrt(x * x + y * y + z * z);
+    }
+}
