@@ -36,6 +36,10 @@ class SplitOptionsTest {
         }
         assertEquals(16, new SplitOptions(true, 0.05, 14).maxDepthFor(15, 15), "capped at 16");
         assertEquals(0, new SplitOptions(true, 0.05, 0).maxDepthFor(9, 9), "no split stays no split");
+        // a solver's own leaf criterion (Newton's refinement) keeps the tolerance and cap it was given
+        SplitOptions own = new SplitOptions(true, 1, 10, (net, n, m, size, depth) -> true);
+        assertEquals(1, own.flatnessFor(9, 9));
+        assertEquals(10, own.maxDepthFor(15, 15));
     }
 
     @Test
