@@ -83,7 +83,7 @@ public final class PatchSplitter {
     private static final class Recursion {
         final int n, m, dim, points;
         final SplitOptions options;
-        /** The degree-aware depth cap and flatness tolerance ({@link SplitOptions#maxDepthFor}, {@link SplitOptions#flatnessFor}). */
+        /** The degree-aware depth cap and tolerance ({@link SplitOptions#maxDepthFor}, {@link SplitOptions#flatnessFor}). */
         final int maxDepth;
         final double flatness;
         final double minSize;

@@ -72,7 +72,8 @@ class ScenesEverywhereTest {
     void everyCommandsHelpListsTheRegisteredFormatsAndBuiltIns() {
         for (String command : new String[] {"info", "trace", "render"}) {
             String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
-            assertTrue(help.contains("a .bpt, .obj or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere, torus, trimmed-plate,"
+            assertTrue(help.contains("a .bpt, .obj or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
+                    + " torus, trimmed-plate,"
                     + " wavy6, wavy10, curved, teapot-room"), help);
         }
     }

@@ -36,7 +36,8 @@ class PatchSplitterTest {
             String where = "trial " + trial + " " + TestNets.degrees(n, m, 3) + " " + options;
             assertEquals(n, pieces.degreeU(), where);
             assertEquals(m, pieces.degreeV(), where);
-            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepthFor(n, m), pieces.count() + " pieces: " + where);
+            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepthFor(n, m),
+                    pieces.count() + " pieces: " + where);
             double area = 0;
             double[] parentNet = patch.copyNet();
             double tol = ROUNDING * TestNets.size(parentNet, 0, parentNet.length);
