@@ -39,6 +39,7 @@ public final class AppModel {
     private final StatusModel status;
     private final OverlayModel overlay;
     private final TopologyModel topology;
+    private final DifferenceModel difference;
     private final SceneEditor editor;
     private final BackgroundTasks viewTasks;
     private final BackgroundTasks io;
@@ -70,6 +71,10 @@ public final class AppModel {
         overlay.onBuilt(this::selectionBuilt);
         topology = new TopologyModel(threads.topology(), threads.ui(), e -> threads.ui().execute(() ->
                 status.message("welded points not found: " + Failures.describe(e))));
+        difference = new DifferenceModel(threads.difference(), threads.ui(), () -> {
+            view.repaint();
+            notifyListeners();
+        }, e -> failed("Difference to clipping failed", e));
         editor = new SceneEditor(threads.edits(), threads.ui(), new EditorTarget());
         viewTasks = new BackgroundTasks(threads.edits(), threads.ui());
         edits = new EditCommands(this, editor);
@@ -96,6 +101,9 @@ public final class AppModel {
     public OverlayModel overlay() { return overlay; }
 
     public StatusModel status() { return status; }
+
+    /** View → Difference to clipping: the mask for the current picture, kept up to date off the UI thread. */
+    public DifferenceModel difference() { return difference; }
 
     public FileCommands files() { return files; }
 
@@ -133,7 +141,8 @@ public final class AppModel {
     /** True while anything is pending: an edit, a load or save, an overlay, welds, a render (tests wait on this). */
     public boolean busy() {
         return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
-                || topology.busy();
+                || topology.busy()
+                || difference.busy();
     }
 
     /** Stops rendering and the workers. */
@@ -170,7 +179,19 @@ public final class AppModel {
         if (p != null && settings.current().on(Toggle.RAY_TRACE)) {
             engine.submit(RenderRequest.of(document.scene(), view.camera(), view.view().framing(), settings.current(), p));
         }
+        compareToClipping(p);
         view.repaint();
+    }
+
+    /** View → Difference to clipping on: compare the picture's primary rays (off the UI thread); off: drop the mask. */
+    private void compareToClipping(Picture p) {
+        Settings s = settings.current();
+        if (p != null && s.on(Toggle.DIFFERENCE_TO_CLIPPING)) {
+            difference.request(document.scene(), view.camera(), p.width(), p.height(), RenderChoices.intersectOptions(s),
+                    s.intersectionLabel());
+        } else {
+            difference.clear();
+        }
     }
 
     private void requestOverlay(boolean fresh) {
@@ -321,6 +342,9 @@ public final class AppModel {
 
         @Override
         public StatusModel status() { return status; }
+
+    /** View → Difference to clipping: the mask for the current picture, kept up to date off the UI thread. */
+    public DifferenceModel difference() { return difference; }
 
         @Override
         public UserDialogs dialogs() { return dialogs; }

@@ -31,6 +31,11 @@ public enum Toggle {
     SMOOTH_JOINS(false),
     /** The light drawn as a marker in the view, where it can be dragged ({@link LightRig}). */
     SHOW_LIGHT(false),
+    /**
+     * View → Difference to clipping: the pixels where the selected method's primary-ray hit differs
+     * from Bézier clipping's marked over the picture, their count in the status bar ({@link DifferenceModel}).
+     */
+    DIFFERENCE_TO_CLIPPING(false),
     /** The inspector panel: the selected points' patch, indices and coordinates, editable. */
     INSPECTOR(true);
 

@@ -155,6 +155,9 @@ public final class AppActions {
                 () -> s.step(Level.PERSPECTIVE, -10));
         add("gridU", "More Points along u", "Grid of a new patch: one more control point along u (2..10, wraps)",
                 key(KeyEvent.VK_U, CTRL | SHIFT), () -> s.cycle(Level.GRID_U));
+        toggle("differenceToClipping", Toggle.DIFFERENCE_TO_CLIPPING, "Difference to Clipping", "Mark in red the "
+                + "pixels where the selected method's hit differs from Bézier clipping's (another patch, a miss, or "
+                + "a distance more than 1e-6 of the scene size away); the status bar counts them", key(KeyEvent.VK_D, CTRL));
         toggle("inspector", Toggle.INSPECTOR, "Inspector", "Show the panel with the selected points' patch, indices "
                 + "and coordinates (type a value and press Enter to move them)", key(KeyEvent.VK_I, CTRL));
         add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",

@@ -35,7 +35,7 @@ public final class AppMenuBar extends JMenuBar {
         for (String name : ModelLoader.BUILT_INS) {
             models.add(item("model:" + name));
         }
-        JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", null, "finer", "coarser", null,
+        JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", "differenceToClipping", null, "finer", "coarser", null,
                 "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "inspector", "dark");
         JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,

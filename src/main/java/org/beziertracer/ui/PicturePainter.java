@@ -20,24 +20,30 @@ final class PicturePainter {
     /**
      * Paints into {@code g}, whose user space is device pixels.
      *
-     * @param image the ray-traced picture, or null to show the background only (wireframe view)
+     * @param image      the ray-traced picture, or null to show the background only (wireframe view)
+     * @param difference View → Difference to clipping's marks over the picture, or null
      */
-    static void paint(Graphics2D g, BufferedImage image, OverlaySnapshot overlay, int w, int h, double unit) {
+    static void paint(Graphics2D g, BufferedImage image, BufferedImage difference, OverlaySnapshot overlay, int w, int h,
+                      double unit) {
         if (image != null) {
             g.drawImage(image, 0, 0, null);
         } else {
             g.setColor(BACKGROUND);
             g.fillRect(0, 0, w, h);
         }
+        if (difference != null) {
+            g.drawImage(difference, 0, 0, null);
+        }
         OverlayPainter.paint(g, overlay, unit);
     }
 
     /** A copy of what the panel shows, {@code w × h} device pixels (Export Picture, tests). */
-    static BufferedImage snapshot(BufferedImage image, OverlaySnapshot overlay, int w, int h, double unit) {
+    static BufferedImage snapshot(BufferedImage image, BufferedImage difference, OverlaySnapshot overlay, int w, int h,
+                                  double unit) {
         BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = out.createGraphics();
         try {
-            paint(g, image, overlay, w, h, unit);
+            paint(g, image, difference, overlay, w, h, unit);
         } finally {
             g.dispose();
         }

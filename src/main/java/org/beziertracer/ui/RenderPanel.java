@@ -36,6 +36,7 @@ public final class RenderPanel extends JComponent {
 
     private final AppModel app;
     private final PictureImage images = new PictureImage();
+    private final DifferenceImage differences = new DifferenceImage();
     private long paintCount;
 
     public RenderPanel(AppModel app) {
@@ -138,7 +139,8 @@ public final class RenderPanel extends JComponent {
                 picture.painted();
                 image = app.settings().current().on(Toggle.RAY_TRACE) ? images.of(picture) : null;
             }
-            PicturePainter.paint(g2, image, app.overlay().snapshot(), w, h, t.getScaleX());
+            PicturePainter.paint(g2, image, differences.of(app, picture), app.overlay().snapshot(), w, h,
+                    t.getScaleX());
             paintCount++;
         } finally {
             g2.dispose();
@@ -149,7 +151,8 @@ public final class RenderPanel extends JComponent {
     public BufferedImage snapshot() {
         Picture picture = app.view().picture();
         boolean traced = picture != null && app.settings().current().on(Toggle.RAY_TRACE);
-        return PicturePainter.snapshot(traced ? images.of(picture) : null, app.overlay().snapshot(),
+        return PicturePainter.snapshot(traced ? images.of(picture) : null, differences.of(app, picture),
+                app.overlay().snapshot(),
                 app.view().width(), app.view().height(), app.view().scale());
     }
 }

@@ -12,6 +12,7 @@ import javax.swing.JSeparator;
 import javax.swing.SwingConstants;
 
 import org.beziertracer.app.AppModel;
+import org.beziertracer.app.DifferenceMask;
 import org.beziertracer.app.OverlayGeometry;
 import org.beziertracer.app.RenderStatus;
 import org.beziertracer.app.Settings;
@@ -34,7 +35,10 @@ public final class StatusBar extends JPanel {
     private final JLabel bvh = label("sub-patch BVH and its measured speed-up over whole patches");
     private final JLabel model = label("patches and control points of the model");
     private final JLabel selection = label("selected control points (welded copies count once)");
+    private final JLabel difference = label("View → Difference to clipping: pixels whose hit differs from Bézier "
+            + "clipping's (another patch, a miss, or farther than 1e-6 of the scene size), marked red in the picture");
     private final JLabel message = label("last action");
+    private JSeparator differenceBar;
     private final JProgressBar progress = new JProgressBar();
     private final JButton cancel = new JButton("Cancel");
 
@@ -49,10 +53,14 @@ public final class StatusBar extends JPanel {
         cancel.addActionListener(e -> cancelTask());
         add(progress);
         add(cancel);
-        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, selection, message}) {
+        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, selection, difference, message}) {
             add(l);
             if (l != message) {
-                add(new JSeparator(SwingConstants.VERTICAL));
+                JSeparator bar = new JSeparator(SwingConstants.VERTICAL);
+                add(bar);
+                if (l == difference) {
+                    differenceBar = bar;
+                }
             }
         }
         frame.setName("status.frame");
@@ -62,6 +70,7 @@ public final class StatusBar extends JPanel {
         method.setName("status.method");
         model.setName("status.model");
         selection.setName("status.selection");
+        difference.setName("status.difference");
         message.setName("status.message");
         app.addListener(this::refresh);
         refresh();
@@ -99,6 +108,7 @@ public final class StatusBar extends JPanel {
         model.setText(modelText(app.overlay().geometry(), t));
         int handles = app.selection().handleCount();
         selection.setText(handles == 0 ? "nothing selected" : handles == 1 ? "1 point selected" : handles + " points selected");
+        differenceText(t);
         message.setText(app.status().message());
         Task task = app.status().task();
         progress.setVisible(task != null);
@@ -111,6 +121,15 @@ public final class StatusBar extends JPanel {
         if (task != null && task.progress() >= 0) {
             progress.setValue((int) Math.round(100 * task.progress()));
         }
+    }
+
+    /** Shown only while View → Difference to clipping is on. */
+    private void differenceText(Settings t) {
+        boolean on = t.on(Toggle.DIFFERENCE_TO_CLIPPING);
+        DifferenceMask mask = app.difference().current();
+        difference.setVisible(on);
+        differenceBar.setVisible(on);
+        difference.setText(!on ? "" : mask != null ? mask.describe() : "comparing with clipping…");
     }
 
     private static String modelText(OverlayGeometry g, Settings t) {
@@ -132,6 +151,7 @@ public final class StatusBar extends JPanel {
             case "method" -> method.getText();
             case "model" -> model.getText();
             case "selection" -> selection.getText();
+            case "difference" -> difference.getText();
             default -> message.getText();
         };
     }

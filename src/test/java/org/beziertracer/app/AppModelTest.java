@@ -274,7 +274,7 @@ class AppModelTest {
     @Test
     void anEditThatArrivesAfterTheModelChangedIsDropped() {
         java.util.List<Runnable> later = new java.util.ArrayList<>();
-        AppThreads queued = new AppThreads(Runnable::run, later::add, Runnable::run, Runnable::run, Runnable::run);
+        AppThreads queued = new AppThreads(Runnable::run, later::add, Runnable::run, Runnable::run, Runnable::run, Runnable::run);
         AppModel m = new AppModel(new FakeEngine(), dialogs, queued, MemoryPreferences.fresh());
         m.view().resize(400, 300, 1);
         m.edits().randomize(99);

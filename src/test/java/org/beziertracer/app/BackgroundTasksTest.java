@@ -73,7 +73,7 @@ class BackgroundTasksTest {
     void aCancelledOpenKeepsTheCurrentModelAndClearsTheProgress() throws Exception {
         ExecutorService io = Executors.newSingleThreadExecutor();
         try {
-            AppThreads threads = new AppThreads(uiQueue::add, Runnable::run, io, Runnable::run, Runnable::run);
+            AppThreads threads = new AppThreads(uiQueue::add, Runnable::run, io, Runnable::run, Runnable::run, Runnable::run);
             AppModel app = new AppModel(new FakeEngine(), new FakeDialogs(), threads, MemoryPreferences.fresh());
             Scene before = app.document().scene();
             CountDownLatch started = new CountDownLatch(1);

@@ -59,7 +59,7 @@ class ImageExportTest {
         LinkedBlockingQueue<Runnable> ui = new LinkedBlockingQueue<>();
         ExecutorService io = Executors.newSingleThreadExecutor();
         try {
-            AppThreads threads = new AppThreads(ui::add, Runnable::run, io, Runnable::run, Runnable::run);
+            AppThreads threads = new AppThreads(ui::add, Runnable::run, io, Runnable::run, Runnable::run, Runnable::run);
             FakeDialogs dialogs = new FakeDialogs();
             AppModel app = new AppModel(new FakeEngine(), dialogs, threads, MemoryPreferences.fresh());
             drain(ui);
