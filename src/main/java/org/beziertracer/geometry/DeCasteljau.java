@@ -77,6 +77,8 @@ public final class DeCasteljau {
      * leaving four points {@code b00, b10, b01, b11}; then {@code S} is their bilinear
      * interpolant at {@code (u,v)}, {@code ∂S/∂u = n·lerp_v(b10-b00, b11-b01)} and
      * {@code ∂S/∂v = m·lerp_u(b01-b00, b11-b10)} (Farin, tensor-product patches). Degrees must be ≥ 1.
+     * For {@code dim = 3}, nets of degree {@code n + m > 4} other than bicubics are evaluated
+     * by the equivalent {@code O(n·m)} Bernstein sums instead ({@link BernsteinEval}).
      * Uses {@code scratchOff + 3*MAX_ORDER*dim} doubles of {@code scratch}.
      */
     public static void evaluateWithDerivatives(double[] net, int off, int n, int m, int dim, double u, double v,

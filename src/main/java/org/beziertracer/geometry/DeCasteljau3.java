@@ -4,9 +4,10 @@ package org.beziertracer.geometry;
  * Three-coordinate ({@code dim = 3}) specialisations of the {@link DeCasteljau} kernels for the
  * ray tracer's hot path: restriction of a curve to {@code [a,b]} (both ends in one call, the
  * cubic case in straight-line code on locals) and evaluation with first derivatives without
- * per-row copies. Every result is bit-identical to the generic kernel: the same convex
- * combinations {@code (1-t)·P + t·Q} are evaluated in the same order, only the loads, stores,
- * copies and loop overhead are gone.
+ * per-row copies. The restriction and the de Casteljau evaluation are bit-identical to the
+ * generic kernel: the same convex combinations {@code (1-t)·P + t·Q} are evaluated in the same
+ * order, only the loads, stores, copies and loop overhead are gone; evaluation of higher
+ * degrees goes to {@link BernsteinEval}.
  *
  * <p>Source: the de Casteljau algorithm, subdivision and derivatives from the intermediate
  * points, G. Farin, <i>Curves and Surfaces for CAGD</i>, 5th ed., 2002 (as for
@@ -81,11 +82,17 @@ final class DeCasteljau3 {
         p[i3] = p3;
     }
 
+    /** Nets with {@code n + m} above this are evaluated by {@link BernsteinEval} (bicubics excepted). */
+    static final int BERNSTEIN_FROM = 4;
+
     /**
      * {@link DeCasteljau#evaluateWithDerivatives(double[], int, int, int, int, double, double,
-     * double[], int, double[], int)} for {@code dim = 3}: the first u level of every row is read
-     * straight from the net (no row copy), the two level-{@code (n-1)} points go to two columns
-     * in {@code scratch}, which are then reduced in v. Degrees must be ≥ 1.
+     * double[], int, double[], int)} for {@code dim = 3}: bicubics in straight-line code; nets with
+     * {@code n + m > }{@value #BERNSTEIN_FROM} by the {@code O(n·m)} Bernstein sums of
+     * {@link BernsteinEval} (equal to de Casteljau within a few ulps of the net size per degree,
+     * not bit for bit); the rest by de Casteljau, the first u level of every row read straight
+     * from the net (no row copy), the two level-{@code (n-1)} points in two columns of
+     * {@code scratch}, which are then reduced in v. Degrees must be ≥ 1.
      */
     static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v,
                                         double[] out, int outOff, double[] scratch, int scratchOff) {
@@ -93,6 +100,11 @@ final class DeCasteljau3 {
             for (int c = 0; c < 3; c++) {
                 bicubicWithDerivatives(net, off + c, 3, u, v, out, outOff + c, 3);
             }
+            return;
+        }
+        if (n + m > BERNSTEIN_FROM) {
+            // O(n·m) instead of O(n²·m): faster from biquadratic-and-a-bit up (KernelBench)
+            BernsteinEval.evaluateWithDerivatives(net, off, n, m, u, v, out, outOff, scratch, scratchOff);
             return;
         }
         final int dim = 3, rowStride = (n + 1) * dim;

@@ -67,6 +67,14 @@ public final class PatchSplitter {
     }
 
     /**
+     * Past the base depth cap a piece is split on only while its flatness is within this many times
+     * the base tolerance. On the 10×10-point wavy grid 1 makes 292 leaves and keeps about half of
+     * the frame-time gain, 2 makes 550 and 4 (or no limit) 580 with all of it; a random degree-11
+     * net makes 64 pieces at the base cap, 159 with 2, 660 with 4 (degree 9..15: at most 512 with 2).
+     */
+    static final double PAST_CAP_FLATNESS = 2;
+
+    /**
      * The depth-first halving with all working memory allocated once per patch: level
      * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
      * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
@@ -75,6 +83,9 @@ public final class PatchSplitter {
     private static final class Recursion {
         final int n, m, dim, points;
         final SplitOptions options;
+        /** The degree-aware depth cap and tolerance ({@link SplitOptions#maxDepthFor}, {@link SplitOptions#flatnessFor}). */
+        final int maxDepth;
+        final double flatness;
         final double minSize;
         final Builder out;
         final TrimCurves trim;
@@ -90,11 +101,13 @@ public final class PatchSplitter {
             this.dim = dim;
             this.points = (n + 1) * (m + 1);
             this.options = options;
+            this.maxDepth = options.maxDepthFor(n, m);
+            this.flatness = options.flatnessFor(n, m);
             this.minSize = minSize;
             this.out = out;
             this.trim = trim;
             this.domain = domain;
-            int levels = options.enabled() ? options.maxDepth() + 1 : 1;
+            int levels = options.enabled() ? maxDepth + 1 : 1;
             lo = new double[levels][];
             hi = new double[levels][];
             euclid = new double[3 * points];
@@ -138,15 +151,21 @@ public final class PatchSplitter {
 
         /**
          * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
-         * trim curve crosses is split on to the depth cap, so that most hits fall in pieces wholly
-         * inside (no trim test) and the pieces that need the test are small.
+         * trim curve crosses is split on to the (base) depth cap, so that most hits fall in pieces
+         * wholly inside (no trim test) and the pieces that need the test are small. Above bicubic
+         * the tolerance and the cap are the degree-aware ones ({@link SplitOptions#flatnessFor},
+         * {@link SplitOptions#maxDepthFor}); past the base cap {@link SplitOptions#maxDepth} only a
+         * piece within {@value #PAST_CAP_FLATNESS} times the base tolerance of flat is refined on,
+         * so a net far from flat (a random one) stays near the base cap's piece count instead of
+         * growing to {@code 2^maxDepthFor}.
          */
         private boolean done(double[] xyz, int depth, int trimState) {
-            if (!options.enabled() || depth >= options.maxDepth()) {
+            if (!options.enabled() || depth >= maxDepth) {
                 return true;
             }
+            boolean pastBaseCap = depth >= options.maxDepth();
             if (trimState == TrimCurves.MIXED) {
-                return false;
+                return pastBaseCap;
             }
             Bounds.ofPoints(xyz, 0, points, box);
             double dx = box[3] - box[0], dy = box[4] - box[1], dz = box[5] - box[2];
@@ -154,8 +173,11 @@ public final class PatchSplitter {
             if (size < minSize) {
                 return true;
             }
-            double tolerance = options.flatnessTolerance();
-            if (NetMeasures.flatness(xyz, 0, n, m) > tolerance * size) {
+            double f = NetMeasures.flatness(xyz, 0, n, m);
+            if (pastBaseCap) {
+                return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
+            }
+            if (f > flatness * size) {
                 return false;
             }
             if (dim == 4) {

@@ -41,6 +41,43 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
      */
     public static SplitOptions defaults() { return new SplitOptions(true, 0.05, 6); }
 
+    /**
+     * The flatness tolerance for a degree {@code n}×{@code m} net: {@link #flatnessTolerance} up to
+     * bicubic, scaled by {@code 3 / max(n, m)} above, so higher-degree leaves end closer to their
+     * corners' bilinear patch. The work on a leaf grows with its degree (a clip iteration projects
+     * and restricts {@code (n+1)(m+1)} points, a Newton step evaluates them), while a flatter leaf
+     * is more often proved single-root and solved by Newton from its corners without clipping: on
+     * the 10×10-point wavy grid (degree 9) this cut the exact frame by about a third (see
+     * docs/performance.md, "Issue 9"). A split with a solver's own {@link #criterion} (Newton's
+     * refinement, which halves the waves of a high-degree patch itself) keeps its tolerance.
+     */
+    public double flatnessFor(int n, int m) {
+        int d = Math.max(n, m);
+        return d <= 3 || !degreeAware() ? flatnessTolerance : flatnessTolerance * 3 / d;
+    }
+
+    /** True when {@link #flatnessFor} and {@link #maxDepthFor} adapt to the degree: flatness-only splits. */
+    public boolean degreeAware() {
+        return criterion == LeafCriterion.NONE;
+    }
+
+    /**
+     * The depth cap for a degree {@code n}×{@code m} net: {@link #maxDepth} up to bicubic (and when
+     * it is 0, no split), plus two halvings (one per direction) for each doubling of
+     * {@code max(n, m)} beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15 +6.
+     * Past {@link #maxDepth} the splitter refines only pieces near flat by
+     * {@link #flatnessTolerance} (see {@link PatchSplitter}), so a net far from flat stays near
+     * {@code 2^maxDepth} pieces. A split with a solver's own {@link #criterion} keeps its cap.
+     */
+    public int maxDepthFor(int n, int m) {
+        int d = Math.max(n, m);
+        if (maxDepth == 0 || d <= 3 || !degreeAware()) {
+            return maxDepth;
+        }
+        int doublings = 32 - Integer.numberOfLeadingZeros((d - 1) / 3); // ceil(log2(d / 3))
+        return Math.min(16, maxDepth + 2 * doublings);
+    }
+
     /** One sub-patch per patch. */
     public static SplitOptions wholePatches() { return new SplitOptions(false, 1, 0); }
 }

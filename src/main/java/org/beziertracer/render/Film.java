@@ -2,12 +2,13 @@ package org.beziertracer.render;
 
 /**
  * The image being rendered, in linear RGB floats: per pixel the sum of its samples and their
- * count, plus the first sample alone (which the adaptive sampler compares with the neighbours').
+ * count, plus — only for a render that samples adaptively — the first sample alone (which the
+ * adaptive sampler compares with the neighbours').
  * The displayed value of a pixel is {@code sum / count}; a pixel with no sample yet shows the
  * value of the anchor of its block in the current progressive pass.
  *
  * <p>Layout: {@code sum[3 * (y * width + x) + c]}, {@code count[y * width + x]},
- * {@code first[3 * (y * width + x) + c]}.
+ * {@code first[3 * (y * width + x) + c]} ({@code null} when not kept).
  *
  * <p>Threads: workers write disjoint tiles; passes are separated by the engine's pass barrier
  * (which also publishes the writes). Read the film from other threads only after the render ended.
@@ -16,9 +17,20 @@ public final class Film {
     private final int width, height;
     final float[] sum;
     final int[] count;
+    /** First sample of every pixel; null unless the film was made to keep it. */
     final float[] first;
 
+    /** A film that keeps the first samples (as an adaptive render needs). */
     public Film(int width, int height) {
+        this(width, height, true);
+    }
+
+    /**
+     * A film; {@code keepFirst} keeps each pixel's first sample apart (needed only by the
+     * adaptive sampler's extra pass, which compares them), else those 12 bytes per pixel are
+     * neither allocated nor written.
+     */
+    Film(int width, int height, boolean keepFirst) {
         if (width < 1 || height < 1 || (long) width * height > (1L << 26)) {
             throw new IllegalArgumentException("film of " + width + "x" + height + " pixels is not allowed");
         }
@@ -26,7 +38,7 @@ public final class Film {
         this.height = height;
         sum = new float[3 * width * height];
         count = new int[width * height];
-        first = new float[3 * width * height];
+        first = keepFirst ? new float[3 * width * height] : null;
     }
 
     /** Bytes a film of this size holds (sums, first samples, counts). */
@@ -41,7 +53,7 @@ public final class Film {
     /** Adds a sample to pixel {@code (x, y)}. */
     void addSample(int x, int y, double r, double g, double b) {
         int p = y * width + x, o = 3 * p;
-        if (count[p] == 0) {
+        if (first != null && count[p] == 0) {
             first[o] = (float) r; first[o + 1] = (float) g; first[o + 2] = (float) b;
         }
         sum[o] += (float) r; sum[o + 1] += (float) g; sum[o + 2] += (float) b;

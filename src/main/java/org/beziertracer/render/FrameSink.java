@@ -24,6 +24,13 @@ public interface FrameSink {
      */
     void passDone(int generation, int pass, int passCount, FrameStats stats);
 
+    /**
+     * False when the sink ignores {@link #tileDone}: the workers then skip encoding the finished
+     * tiles (sRGB and the copy), which only a sink that shows or stores them needs. The final
+     * image is in the render's film either way.
+     */
+    default boolean wantsTiles() { return true; }
+
     /** A sink that ignores everything (for benchmarks and {@link Renderer#renderOnce}). */
     FrameSink NONE = new FrameSink() {
         @Override
@@ -31,5 +38,8 @@ public interface FrameSink {
 
         @Override
         public void passDone(int generation, int pass, int passCount, FrameStats stats) {}
+
+        @Override
+        public boolean wantsTiles() { return false; }
     };
 }

@@ -13,6 +13,12 @@ public final class PixelSampler {
     private final PixelFilter filter;
     private final int spp, kx, ky;
     private final long seed;
+    /**
+     * Offsets (already warped) of the samples whose position does not depend on the pixel:
+     * every sample of the regular sampler, the centre sample 0 of the adaptive one;
+     * {@code fixed[2s], fixed[2s+1]}, NaN where the position is random.
+     */
+    private final double[] fixed;
 
     public PixelSampler(SamplerKind kind, PixelFilter filter, int spp, long seed) {
         if (spp < 1) {
@@ -25,6 +31,16 @@ public final class PixelSampler {
         int extra = kind == SamplerKind.ADAPTIVE ? Math.max(spp - 1, 1) : spp;
         this.kx = (int) Math.ceil(Math.sqrt(extra));
         this.ky = (extra + kx - 1) / kx;
+        this.fixed = new double[2 * spp];
+        double[] o = new double[2];
+        for (int k = 0; k < spp; k++) {
+            boolean isFixed = kind == SamplerKind.REGULAR || kind == SamplerKind.ADAPTIVE && k == 0;
+            if (isFixed) {
+                position(0, 0, k, o);
+            }
+            fixed[2 * k] = isFixed ? o[0] : Double.NaN;
+            fixed[2 * k + 1] = isFixed ? o[1] : Double.NaN;
+        }
     }
 
     public int spp() { return spp; }
@@ -36,6 +52,16 @@ public final class PixelSampler {
      * into {@code out[0], out[1]} (in [0,1) for the box filter, [-0.5,1.5) for the tent).
      */
     public void offset(int x, int y, int s, double[] out) {
+        double fx = fixed[2 * s];
+        if (fx == fx) { // not NaN: the same for every pixel, computed once
+            out[0] = fx;
+            out[1] = fixed[2 * s + 1];
+            return;
+        }
+        position(x, y, s, out);
+    }
+
+    private void position(int x, int y, int s, double[] out) {
         double ox, oy;
         if (kind == SamplerKind.ADAPTIVE && s == 0) {
             ox = 0.5;

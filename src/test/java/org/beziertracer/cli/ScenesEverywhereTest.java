@@ -63,7 +63,8 @@ class ScenesEverywhereTest {
     void anUnknownNameListsEveryBuiltInAndEveryExtension() {
         Run r = Run.of("info", "kettle");
         assertEquals(1, r.code());
-        assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus, trimmed-plate, teapot-room) and not a"
+        assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus,"
+                + " trimmed-plate, wavy6, wavy10, curved, teapot-room) and not a"
                 + " .bpt, .obj or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
 
@@ -71,7 +72,9 @@ class ScenesEverywhereTest {
     void everyCommandsHelpListsTheRegisteredFormatsAndBuiltIns() {
         for (String command : new String[] {"info", "trace", "render"}) {
             String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
-            assertTrue(help.contains("a .bpt, .obj or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere, torus, trimmed-plate, teapot-room"), help);
+            assertTrue(help.contains("a .bpt, .obj or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
+                    + " torus, trimmed-plate,"
+                    + " wavy6, wavy10, curved, teapot-room"), help);
         }
     }
 }

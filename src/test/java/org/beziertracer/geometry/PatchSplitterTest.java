@@ -36,7 +36,8 @@ class PatchSplitterTest {
             String where = "trial " + trial + " " + TestNets.degrees(n, m, 3) + " " + options;
             assertEquals(n, pieces.degreeU(), where);
             assertEquals(m, pieces.degreeV(), where);
-            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepth(), pieces.count() + " pieces: " + where);
+            assertTrue(pieces.count() >= 1 && pieces.count() <= 1 << options.maxDepthFor(n, m),
+                    pieces.count() + " pieces: " + where);
             double area = 0;
             double[] parentNet = patch.copyNet();
             double tol = ROUNDING * TestNets.size(parentNet, 0, parentNet.length);
@@ -87,10 +88,13 @@ class PatchSplitterTest {
                 int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
                 NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
                 double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessTolerance() * diagonal;
+                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
                 String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
-                assertTrue(flat || depth == options.maxDepth(), "a piece neither flat nor at the cap: " + where);
-                assertTrue(depth <= options.maxDepth(), where);
+                // past the base cap, only pieces near flat by the base tolerance are split on
+                boolean baseLeaf = depth >= options.maxDepth() && !flatByBase(pieces, p, n, m, options);
+                assertTrue(flat || baseLeaf || depth == options.maxDepthFor(n, m),
+                        "a piece neither flat nor at the cap: " + where);
+                assertTrue(depth <= options.maxDepthFor(n, m), where);
             }
             // The parent of each piece (its box doubled in the direction it was last halved) was not
             // flat: a flat patch is never split
@@ -100,12 +104,38 @@ class PatchSplitterTest {
             double[] net = patch.copyNet();
             NetMeasures.controlBounds(net, 0, n, m, box);
             double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessTolerance() * diagonal,
+            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessFor(n, m) * diagonal,
                     "a flat patch was split: trial " + trial);
         }
     }
 
     private static double sq(double x) { return x * x; }
+
+    /**
+     * True when piece {@code p} is within {@link PatchSplitter#PAST_CAP_FLATNESS} times the base
+     * tolerance {@link SplitOptions#flatnessTolerance} of flat.
+     */
+    private static boolean flatByBase(PatchPieces pieces, int p, int n, int m, SplitOptions options) {
+        double[] box = new double[6];
+        int off = p * pieces.netLength();
+        NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
+        double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+        return NetMeasures.flatness(pieces.nets(), off, n, m)
+                <= PatchSplitter.PAST_CAP_FLATNESS * options.flatnessTolerance() * diagonal;
+    }
+
+    @Test
+    void aNetFarFromFlatStaysNearTheBaseCapsPieceCountAtHighDegree() {
+        Random rnd = new Random(2017);
+        for (int trial = 0; trial < 20; trial++) {
+            int n = 9 + rnd.nextInt(7), m = 9 + rnd.nextInt(7);
+            BezierPatch patch = new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 10));
+            PatchPieces pieces = PatchSplitter.split(patch, SplitOptions.defaults());
+            // at most 8 times the base cap's 64, not 2^maxDepthFor = 1,024..4,096 (every piece split on)
+            assertTrue(pieces.count() <= 8 << SplitOptions.defaults().maxDepth(),
+                    pieces.count() + " pieces, trial " + trial + " degree " + n + "x" + m);
+        }
+    }
 
     @Test
     void theLongerControlPolygonIsHalvedFirst() {

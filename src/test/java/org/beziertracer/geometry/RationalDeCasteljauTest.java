@@ -57,7 +57,7 @@ class RationalDeCasteljauTest {
     }
 
     @Test
-    void withAllWeightsOneEveryResultIsBitIdenticalToThePolynomialKernel() {
+    void withAllWeightsOneEveryResultIsThePolynomialKernels() {
         Random rnd = new Random(22);
         double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
         for (int trial = 0; trial < TRIALS; trial++) {
@@ -70,7 +70,13 @@ class RationalDeCasteljauTest {
             double[] poly = new double[9], rat = new double[9];
             DeCasteljau.evaluateWithDerivatives(xyz, 0, n, m, u, v, poly, scratch);
             RationalDeCasteljau.evaluateWithDerivatives(h, 0, n, m, u, v, rat, 0, scratch, 0);
-            assertArrayEquals(poly, rat, "trial " + trial);
+            // The polynomial kernel takes O(n·m) Bernstein sums above n + m = 4 (bicubics excepted),
+            // whose bases sum to 1 only to rounding: there the rational result (divided by that
+            // weight) agrees to a few ulps of the net size per degree instead of bit for bit
+            boolean bernstein = n + m > 4 && !(n == 3 && m == 3);
+            String where = "trial " + trial + " degree " + n + "x" + m;
+            double ulps = 4 * (n + m) * Math.ulp(10.0);
+            assertClose(poly, rat, bernstein ? ulps : 0, where);
             double[] p3 = new double[3], r3 = new double[3];
             DeCasteljau.evaluate(xyz, 0, n, m, 3, u, v, p3, 0, scratch);
             RationalDeCasteljau.evaluate(h, 0, n, m, u, v, r3, 0, scratch);
@@ -78,7 +84,7 @@ class RationalDeCasteljauTest {
             double[] pn = new double[3], rn = new double[3];
             PatchNormals.unitNormal(xyz, 0, n, m, u, v, pn, 0, scratch);
             PatchNormals.unitNormal(h, 0, n, m, 4, u, v, rn, 0, scratch);
-            assertArrayEquals(pn, rn);
+            assertClose(pn, rn, bernstein ? ulps : 0, where);
             // a sub-patch, back in Euclidean form
             double a = 0.5 * u, b = 0.5 + 0.5 * v;
             DeCasteljau.subPatch(xyz, 0, n, m, 3, a, b, a, b, xyz, 0);
@@ -87,6 +93,15 @@ class RationalDeCasteljauTest {
             RationalDeCasteljau.toEuclidean(h, 0, ones.length, back, 0, w, 0);
             assertArrayEquals(xyz, back);
             assertArrayEquals(ones, w);
+        }
+    }
+
+    /** Equal bit for bit when {@code tol} is 0, else within {@code tol}. */
+    private static void assertClose(double[] expected, double[] actual, double tol, String where) {
+        if (tol == 0) {
+            assertArrayEquals(expected, actual, where);
+        } else {
+            assertArrayEquals(expected, actual, tol, where);
         }
     }
 

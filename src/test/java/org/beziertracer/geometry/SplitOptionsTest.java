@@ -21,6 +21,28 @@ class SplitOptionsTest {
     }
 
     @Test
+    void higherDegreesGetAFinerToleranceAndADeeperCapBicubicsDoNot() {
+        SplitOptions d = SplitOptions.defaults();
+        for (int n = 1; n <= 3; n++) {
+            assertEquals(0.05, d.flatnessFor(n, 3 - n + 1));
+            assertEquals(6, d.maxDepthFor(n, 3));
+        }
+        assertEquals(0.05 * 3 / 9, d.flatnessFor(9, 9), 1e-15);
+        assertEquals(0.05 * 3 / 5, d.flatnessFor(2, 5), 1e-15);
+        int[] extra = {0, 0, 0, 0, 2, 2, 2, 4, 4, 4, 4, 4, 4, 6, 6, 6}; // by max(n, m) = 0..15
+        for (int deg = 1; deg <= 15; deg++) {
+            assertEquals(6 + extra[deg], d.maxDepthFor(deg, 1), "degree " + deg);
+            assertEquals(6 + extra[deg], d.maxDepthFor(1, deg), "degree " + deg);
+        }
+        assertEquals(16, new SplitOptions(true, 0.05, 14).maxDepthFor(15, 15), "capped at 16");
+        assertEquals(0, new SplitOptions(true, 0.05, 0).maxDepthFor(9, 9), "no split stays no split");
+        // a solver's own leaf criterion (Newton's refinement) keeps the tolerance and cap it was given
+        SplitOptions own = new SplitOptions(true, 1, 10, (net, n, m, size, depth) -> true);
+        assertEquals(1, own.flatnessFor(9, 9));
+        assertEquals(10, own.maxDepthFor(15, 15));
+    }
+
+    @Test
     void depthLimitsAreInclusive() {
         assertEquals(0, new SplitOptions(true, 0.1, 0).maxDepth());
         assertEquals(16, new SplitOptions(true, 0.1, 16).maxDepth());

@@ -3,6 +3,7 @@ package org.beziertracer.render;
 import static org.beziertracer.Tolerances.FLOAT;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -83,6 +84,52 @@ class RenderSessionTest {
                 assertEquals(first[0][(y - y % 8) * 64 + x - x % 8], first[0][y * 64 + x], "pixel " + x + "," + y);
             }
         }
+    }
+
+    @Test
+    void aSinkThatWantsNoTilesGetsNoneAndTheSameImage() {
+        AtomicInteger tiles = new AtomicInteger();
+        FrameSink quiet = new FrameSink() {
+            @Override
+            public void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {
+                tiles.incrementAndGet();
+            }
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {}
+
+            @Override
+            public boolean wantsTiles() { return false; }
+        };
+        RenderResult skipped = Renderer.renderOnce(mirrorJob(48, 32, 2, "regular", true), quiet);
+        assertEquals(0, tiles.get(), "no tile is encoded for a sink that wants none");
+        assertFalse(FrameSink.NONE.wantsTiles(), "the benchmark and command-line sink wants no tiles");
+        RenderResult shown = Renderer.renderOnce(mirrorJob(48, 32, 2, "regular", true), new FrameSink() {
+            @Override
+            public void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {}
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {}
+        });
+        assertArrayEquals(shown.argb(), skipped.argb());
+    }
+
+    @Test
+    void onlyAnAdaptiveRenderKeepsTheFirstSamplesApart() {
+        for (String sampler : new String[] {"regular", "jittered", "adaptive"}) {
+            for (int spp : new int[] {1, 4}) {
+                RenderResult r = Renderer.renderOnce(mirrorJob(24, 16, spp, sampler, false));
+                boolean kept = r.film().first != null;
+                assertEquals(sampler.equals("adaptive") && spp > 1, kept, sampler + " spp " + spp);
+            }
+        }
+        Film film = new Film(2, 1, false);
+        film.addSample(0, 0, 0.25, 0.5, 0.75);
+        film.addSample(0, 0, 0.75, 0.5, 0.25);
+        float[] px = new float[3];
+        film.pixel(0, 0, px);
+        assertArrayEquals(new float[] {0.5f, 0.5f, 0.5f}, px, "averages without the first-sample copy");
+        assertEquals(2, film.sampleCount(0, 0));
     }
 
     @Test

@@ -16,36 +16,37 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.infra.Blackhole;
 
 /**
- * One full 800×600 frame (1 spp, Phong + shadow rays) of the two reference views
- * ({@link FrameScenes}) through {@link Renderer#renderOnce}, on 1 and 2 worker threads, exact
- * ({@code tessellate} 0) or as a K×K triangle mesh per patch through the same BVH and shading.
- * The job (intersector, BVH, camera) is built once per trial; each operation renders a frame on a
- * fresh {@code RenderSession} (thread start-up included, as the CLI does). Sample time in ms; the
- * median is the number to quote.
+ * One full 800×600 frame (1 spp, Phong + shadow rays) of a reference view ({@link FrameScenes})
+ * through {@link Renderer#renderOnce}, exact ({@code tessellate} 0) or as a K×K triangle mesh per
+ * patch through the same BVH and shading ({@code K}: the case's equal-accuracy K,
+ * {@link FrameScenes#equalK}; or a number). The job (intersector, BVH, camera) is built once per
+ * trial; each operation renders a frame on a fresh {@code RenderSession} (thread start-up
+ * included, as the CLI does). Sample time in ms; the median is the number to quote, and exact
+ * against tessellated is compared as a ratio within one run.
+ *
+ * <p>{@code DegreeSweep} runs the same frame over the wavy grids of degree 1..15.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.SampleTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 public class FrameBench {
 
-    @Param({"teapot", "patch"})
+    /** The cases: the 10×10 and 6×6 wavy grids, the curved bicubic, the default patch, the teapot. */
+    @Param({"wavy10", "wavy6", "curved", "patch", "teapot"})
     public String scene;
 
-    @Param({"1", "2"})
+    @Param({"2"})
     public int threads;
 
-    /**
-     * 0 = exact; 15 = the smallest K whose teapot silhouette is within 0.5 px of the exact one
-     * (docs/performance.md, report.SilhouetteAccuracy); 16 = the app's default K, the nearest offered choice.
-     */
-    @Param({"0", "15", "16"})
-    public int tessellate;
+    /** 0 = exact; {@code K} = the case's equal-accuracy K ({@link FrameScenes#equalK}); or a number. */
+    @Param({"0", "K"})
+    public String tessellate;
 
     RenderJob job;
 
     @Setup
     public void setup() {
-        job = FrameScenes.job(scene, threads, tessellate);
+        job = FrameScenes.job(scene, threads, FrameScenes.tessellate(scene, tessellate));
     }
 
     @Benchmark

@@ -3,6 +3,7 @@ package org.beziertracer.bench;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
+import org.beziertracer.geometry.BernsteinEval;
 import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.NetMeasures;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -17,7 +18,7 @@ import org.openjdk.jmh.infra.Blackhole;
 
 /**
  * The de Casteljau kernel on one random {@code degree×degree} 3-D net: evaluation, evaluation with
- * first derivatives, a split in u, sub-patch extraction and control-point bounds. Each call uses a
+ * first derivatives (de Casteljau and the Bernstein-sum form), a split in u, sub-patch extraction and control-point bounds. Each call uses a
  * (u,v) from a small table so that the JIT cannot fold the parameters.
  */
 @State(Scope.Thread)
@@ -25,7 +26,7 @@ import org.openjdk.jmh.infra.Blackhole;
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
 public class KernelBench {
 
-    @Param({"3", "6", "9"})
+    @Param({"2", "3", "4", "6", "9", "15"})
     public int degree;
 
     double[] net;
@@ -72,6 +73,13 @@ public class KernelBench {
     @Benchmark
     public void evaluateWithDerivatives(Blackhole bh) {
         DeCasteljau.evaluateWithDerivatives(net, 0, degree, degree, nextParam(), nextParam(), out, scratch);
+        bh.consume(out[0] + out[4] + out[8]);
+    }
+
+    /** The O(n·m) Bernstein-sum form of {@link #evaluateWithDerivatives}. */
+    @Benchmark
+    public void evaluateWithDerivativesBernstein(Blackhole bh) {
+        BernsteinEval.evaluateWithDerivatives(net, 0, degree, degree, nextParam(), nextParam(), out, 0, scratch, 0);
         bh.consume(out[0] + out[4] + out[8]);
     }
 

@@ -46,6 +46,9 @@ public final class BuiltIns {
             model("torus", "a torus, one rational biquadratic B-spline (16 rational pieces)", Models::torus),
             model("trimmed-plate", "a curved plate trimmed by a rounded square, with three holes",
                     Models::trimmedPlate),
+            model("wavy6", "a wavy 6×6-point grid (degree 5)", () -> GeneratedModels.wavy(6)),
+            model("wavy10", "a wavy 10×10-point grid (degree 9)", () -> GeneratedModels.wavy(10)),
+            model("curved", "a strongly curved bicubic arch", GeneratedModels::curved),
             resource("teapot-room", "the teapot on a checkered floor, with a mirror and a glass sphere",
                     "scenes/teapot-room.json"));
 

@@ -67,8 +67,12 @@ class FileFormatsTest {
 
     @Test
     void builtInNamesAreDeclaredOnceAndLoadInAnyCase() {
-        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "teapot-room"), BuiltIns.names());
-        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate"), BuiltIns.names(Holds.MODEL));
+        List<String> models = List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate",
+                "wavy6", "wavy10", "curved");
+        assertEquals(models, BuiltIns.names(Holds.MODEL));
+        List<String> all = new java.util.ArrayList<>(models);
+        all.add("teapot-room");
+        assertEquals(all, BuiltIns.names());
         assertEquals(List.of("teapot-room"), BuiltIns.names(Holds.SCENE));
         for (BuiltIns.BuiltIn b : BuiltIns.ALL) {
             SceneDocument doc = b.load();
@@ -85,6 +89,7 @@ class FileFormatsTest {
         String message = UserMessages.of(ModelFormatException.class, () -> SceneFiles.parse(
                 "{\"version\": 1, \"models\": [{\"builtin\": \"teapot-room\"}]}", "s.json", null));
         assertEquals("s.json: models[0].builtin: unknown built-in model \"teapot-room\" (expected one of: patch,"
-                + " teapot, teacup, teaspoon, sphere, torus, trimmed-plate)", message);
+                + " teapot, teacup, teaspoon, sphere, torus, trimmed-plate, wavy6, wavy10,"
+                + " curved)", message);
     }
 }

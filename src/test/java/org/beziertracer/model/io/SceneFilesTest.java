@@ -32,7 +32,8 @@ class SceneFilesTest {
 
     @Test
     void theBuiltInNamesAreTheModelsThenTheTeapotRoom() {
-        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "teapot-room"), BuiltIns.names());
+        assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "wavy6",
+                "wavy10", "curved", "teapot-room"), BuiltIns.names());
     }
 
     @Test

@@ -12,8 +12,8 @@ import org.beziertracer.model.Scene;
 import org.beziertracer.render.Camera;
 
 /**
- * Screen-space silhouette error of the tessellated teapot against the exact one, through the
- * renderer's own camera (the teapot view of {@link FrameScenes}, 800×600).
+ * Screen-space silhouette error of a tessellated {@link FrameScenes} case (default the teapot)
+ * against the exact one, through the renderer's own camera (the case's view, 800×600).
  *
  * <p><b>Method.</b> A coverage mask (primary ray hits the model or not) is sampled on an
  * {@code S×S} sub-pixel grid (sample spacing {@code 1/S} px, rays from
@@ -31,7 +31,9 @@ import org.beziertracer.render.Camera;
  * </ol>
  * Only the outline against the background is measured (hit/miss); inner silhouettes (spout and
  * handle over the body) move by the same per-triangle chord error. Run:
- * {@code java -cp bench/target/benchmarks.jar org.beziertracer.bench.report.SilhouetteAccuracy [-s S] 8 16 24 32}
+ * {@code java -cp bench/target/benchmarks.jar org.beziertracer.bench.report.SilhouetteAccuracy [-s S]
+ * [--scene NAME] [--first] 8 16 24 32}; {@code --first} stops at the first K within 0.5 px
+ * (list the Ks in increasing order).
  */
 public final class SilhouetteAccuracy {
     private SilhouetteAccuracy() {}
@@ -87,19 +89,22 @@ public final class SilhouetteAccuracy {
 
     public static void main(String[] args) {
         int s = 8;
+        String name = "teapot";
+        boolean first = false;
         java.util.List<Integer> ks = new java.util.ArrayList<>();
         for (int a = 0; a < args.length; a++) {
-            if (args[a].equals("-s")) {
-                s = Integer.parseInt(args[++a]);
-            } else {
-                ks.add(Integer.parseInt(args[a]));
+            switch (args[a]) {
+                case "-s" -> s = Integer.parseInt(args[++a]);
+                case "--scene" -> name = args[++a];
+                case "--first" -> first = true;
+                default -> ks.add(Integer.parseInt(args[a]));
             }
         }
         if (ks.isEmpty()) {
             ks = java.util.List.of(8, 12, 16, 24, 32, 48, 64);
         }
-        Scene scene = FrameScenes.scene("teapot");
-        Camera camera = FrameScenes.teapotCamera();
+        Scene scene = FrameScenes.scene(name);
+        Camera camera = FrameScenes.job(name, 1, 0).camera();
         long t0 = System.nanoTime();
         Coverage exact = new Coverage(scene, camera, 0);
         boolean[] centres = exact.centres();
@@ -107,13 +112,17 @@ public final class SilhouetteAccuracy {
         boolean[][] exactSamples = new boolean[W * H][];
         final int ss = s;
         IntStream.of(band).parallel().forEach(p -> exactSamples[p] = exact.samples(p, ss));
-        System.out.printf(Locale.ROOT, "teapot view %dx%d, %dx%d samples per band pixel, band R=%d px: %d pixels (%.1f s)%n",
-                W, H, s, s, R, band.length, (System.nanoTime() - t0) / 1e9);
+        System.out.printf(Locale.ROOT, "%s view %dx%d, %dx%d samples per band pixel, band R=%d px: %d pixels (%.1f s)%n",
+                name, W, H, s, s, R, band.length, (System.nanoTime() - t0) / 1e9);
         System.out.println("K  triangles  max px  p99 px  mismatch px^2  outside band");
         for (int k : ks) {
             Result r = measure(scene, camera, k, s, centres, band, exactSamples);
             System.out.printf(Locale.ROOT, "%-3d %9d  %6.3f  %6.3f  %13.2f  %d%n", r.k(), r.triangles(), r.maxPx(),
                     r.p99Px(), r.areaPx2(), r.outsideBand());
+            if (first && r.maxPx() <= 0.5 && r.outsideBand() == 0) {
+                System.out.printf(Locale.ROOT, "smallest K within 0.5 px: %s %d%n", name, k);
+                break;
+            }
         }
     }
 
