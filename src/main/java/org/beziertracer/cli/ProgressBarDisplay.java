@@ -20,6 +20,7 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
     static final int REFRESH_MILLIS = 200;
 
     private final ProgressBar bar;
+    private final LineConsumer line;
     private final int frameCount;
     private int frame = -1;
     private int generation;
@@ -30,7 +31,7 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
         this.bar = new ProgressBarBuilder().setTaskName("render").setInitialMax(0)
                 .setStyle(ProgressBarStyle.ASCII).setUpdateIntervalMillis(REFRESH_MILLIS)
                 .setUnit(" k samples", 1000)
-                .setConsumer(new LineConsumer(err, columns)).build();
+                .setConsumer(line = new LineConsumer(err, columns)).build();
     }
 
     @Override
@@ -43,15 +44,23 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
         bar.stepTo(frame * total + done);
     }
 
+    /**
+     * Ends the bar with its last state and a newline before returning. The library ends it on its
+     * own timer thread and waits for that, but swallows a failure or an interrupt of the wait (a CI
+     * run once saw the line end without its newline), so the newline is made sure of here: what the
+     * command prints next starts on a fresh line.
+     */
     @Override
     public void close() {
         bar.close();
+        line.close();
     }
 
     /** Draws each line over the last one with a carriage return; a newline at the end. */
     private static final class LineConsumer implements ProgressBarConsumer {
         private final PrintWriter err;
         private final int columns;
+        private final java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
 
         LineConsumer(PrintWriter err, int columns) {
             this.err = err;
@@ -62,15 +71,20 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
         public int getMaxRenderedLength() { return columns - 1; }
 
         @Override
-        public void accept(String line) {
+        public synchronized void accept(String line) {
+            if (closed.get()) {
+                return; // a periodic redraw that lost the race with the final one
+            }
             err.print('\r' + line);
             err.flush();
         }
 
         @Override
-        public void close() {
-            err.println();
-            err.flush();
+        public synchronized void close() {
+            if (closed.compareAndSet(false, true)) {
+                err.println();
+                err.flush();
+            }
         }
     }
 }
