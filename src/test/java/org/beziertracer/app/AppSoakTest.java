@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.Callable;
@@ -35,30 +32,6 @@ class AppSoakTest {
     /** Picture size in device pixels. */
     static final int WIDTH = 160, HEIGHT = 120;
 
-    /** Dialogs that record errors and answer "discard" to the unsaved-edits question. */
-    static final class RecordingDialogs implements UserDialogs {
-        final List<String> errors = Collections.synchronizedList(new ArrayList<>());
-        int discards;
-
-        @Override
-        public Path chooseOpen() { return null; }
-
-        @Override
-        public Path chooseSave(String title, String... extensions) { return null; }
-
-        @Override
-        public Choice confirmDiscard(String documentName) {
-            discards++;
-            return Choice.DISCARD;
-        }
-
-        @Override
-        public void error(String title, String message) { errors.add(title + ": " + message); }
-
-        @Override
-        public ExportOptions exportOptions(ExportOptions offer) { return null; }
-    }
-
     @Test
     void thousandsOfRandomCommandsEndOnFreshRendersWithNoErrorAndABoundedHeap() throws Exception {
         long seed = SoakChecks.seed("AppSoakTest");
@@ -70,7 +43,9 @@ class AppSoakTest {
                 return uiThread.submit(task).get(60, TimeUnit.SECONDS);
             }
         };
-        RecordingDialogs dialogs = new RecordingDialogs();
+        // Dialogs that record errors and answer "discard" to the unsaved-edits question
+        FakeDialogs dialogs = new FakeDialogs();
+        dialogs.discard = UserDialogs.Choice.DISCARD;
         try (SoakChecks.Uncaught uncaught = SoakChecks.Uncaught.install()) {
             AppModel app = onUi.call(() -> {
                 AppModel a = new AppModel(new RayTraceEngine(), dialogs, AppThreads.start(uiThread), MemoryPreferences.fresh());
@@ -89,7 +64,7 @@ class AppSoakTest {
                     last = SoakChecks.idleState(onUi, app, actions, 40_000);
                     String where = " (round " + round + " of " + ROUNDS + ", seed " + seed + ")";
                     assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread" + where);
-                    assertEquals(List.of(), dialogs.errors, "no error reached the dialogs (render, prep, edit, load)" + where);
+                    assertEquals(List.of(), dialogs.errors(), "no error reached the dialogs (render, prep, edit, load)" + where);
                     assertNull(last.mismatch(last.freshRender()), "the picture is a fresh render of the state" + where);
                 }
                 long checked = System.nanoTime();
@@ -102,7 +77,7 @@ class AppSoakTest {
                 long heapAfterRun = SoakChecks.settledHeap();
                 System.out.printf("AppSoakTest: %d commands (%s) and %d checkpoints in %.1f s; %d discards; heap %.1f MB "
                                 + "after the first load, %.1f MB after the run; total %.1f s; last state %s%n",
-                        actions.total(), onUi.call(actions::summary), ROUNDS, (checked - t0) / 1e9, dialogs.discards,
+                        actions.total(), onUi.call(actions::summary), ROUNDS, (checked - t0) / 1e9, dialogs.prompts,
                         heapAfterLoad / 1e6, heapAfterRun / 1e6, (System.nanoTime() - t0) / 1e9, last.describe());
                 assertTrue(heapAfterRun <= 2 * heapAfterLoad, "heap " + heapAfterRun + " after the run, "
                         + heapAfterLoad + " after the first load (seed " + seed + ")");

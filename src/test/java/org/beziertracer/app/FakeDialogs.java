@@ -8,7 +8,8 @@ import org.beziertracer.UserMessages;
 
 /** Scripted {@link UserDialogs} for controller tests: records errors, answers prompts as told. */
 final class FakeDialogs implements UserDialogs {
-    final List<String> errors = new ArrayList<>();
+    /** The errors shown (the app may show one from any of its threads' callbacks). */
+    final List<String> errors = java.util.Collections.synchronizedList(new ArrayList<>());
     Path open;
     Path save;
     Choice discard = Choice.CANCEL;
@@ -16,6 +17,13 @@ final class FakeDialogs implements UserDialogs {
     /** The export options the dialog answers with (null: cancelled); the last offer is kept. */
     ExportOptions export;
     ExportOptions offered;
+
+    /** A copy of {@link #errors}. */
+    List<String> errors() {
+        synchronized (errors) {
+            return List.copyOf(errors);
+        }
+    }
 
     @Override
     public Path chooseOpen() { return open; }
