@@ -142,6 +142,7 @@ final class GuiDriver {
 
     /** Clicks the centre of a component (scrolling it into view first). */
     void click(Component comp) {
+        alignDialog(comp);
         Point p = onEdt(() -> {
             if (comp instanceof JComponent jc) {
                 jc.scrollRectToVisible(new Rectangle(0, 0, jc.getWidth(), jc.getHeight()));
@@ -153,6 +154,29 @@ final class GuiDriver {
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         robot.waitForIdle();
+    }
+
+    /**
+     * Moves the dialog that holds {@code comp} (if any) to where Java believes it is. Without a
+     * window manager, a loaded X server sometimes leaves a freshly shown dialog somewhere else
+     * than the bounds Java reports (a CI run saw Java say (0, 0) for a dialog drawn centred), so a
+     * click computed from Java's coordinates lands beside it; moving it by a pixel and back makes
+     * the X window follow Java's bounds. Plumbing: the app's own placement is not under test.
+     */
+    private void alignDialog(Component comp) {
+        boolean moved = onEdt(() -> {
+            Window w = SwingUtilities.getWindowAncestor(comp);
+            if (!(w instanceof JDialog) || !w.isShowing()) {
+                return false;
+            }
+            Point p = w.getLocation();
+            w.setLocation(p.x + 1, p.y);
+            w.setLocation(p);
+            return true;
+        });
+        if (moved) {
+            robot.waitForIdle();
+        }
     }
 
     /** Clicks {@code field} (again, if a click is dropped) until it has the keyboard focus. */
