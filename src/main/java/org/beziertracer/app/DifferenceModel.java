@@ -39,6 +39,8 @@ public final class DifferenceModel {
     // UI thread only
     private Request wanted;
     private DifferenceMask current;
+    /** A comparison was asked for since the worker last let its snapshots go. */
+    private boolean holding;
 
     /**
      * @param onChange runs on the UI thread when a mask arrives or goes
@@ -72,6 +74,7 @@ public final class DifferenceModel {
             return;
         }
         wanted = r;
+        holding = true;
         boolean had = current != null;
         current = null;
         work.submit(new Numbered(newest.incrementAndGet(), r));
@@ -80,9 +83,17 @@ public final class DifferenceModel {
         }
     }
 
-    /** No comparison wanted: the one in progress stops, the mask goes. */
+    /**
+     * No comparison wanted: the one in progress stops, the mask goes, and the worker lets go of
+     * its two snapshots (a model and method switched away from must not stay in memory while the
+     * view is off).
+     */
     void clear() {
-        newest.incrementAndGet();
+        long number = newest.incrementAndGet();
+        if (holding) {
+            holding = false;
+            work.submit(new Numbered(number, null));
+        }
         boolean had = wanted != null;
         wanted = null;
         current = null;
@@ -93,10 +104,16 @@ public final class DifferenceModel {
 
     /** Worker thread. */
     private void compute(Numbered n) {
+        Request r = n.request();
+        if (r == null) {
+            // a release is never stale: later clears do not submit another
+            methodSnapshots.release();
+            clippingSnapshots.release();
+            return;
+        }
         if (n.number() != newest.get()) {
             return;
         }
-        Request r = n.request();
         SceneIntersector a = methodSnapshots.prepare(r.scene(), r.method());
         SceneIntersector b = clippingSnapshots.prepare(r.scene(), clippingFor(r.method()));
         DifferenceMask mask = DifferenceMask.compare(a, b, r.camera(), r.width(), r.height(), r.label(),

@@ -25,6 +25,11 @@ final class SnapshotCache {
         return snapshot;
     }
 
+    /** Lets the snapshot go (its model may be big and no longer shown). */
+    void release() {
+        snapshot = null;
+    }
+
     /** The snapshot for {@code scene}: reused, patched (a few patches changed) or rebuilt. */
     static SceneIntersector update(SceneIntersector old, Scene scene, IntersectOptions io) {
         if (old == null || !old.options().equals(io)) {
