@@ -131,7 +131,7 @@ abstract class PatchLeaves implements Leaves {
         for (int index : indices) {
             replacements.add(edited.patches().get(index));
         }
-        return with(table.withPatches(indices, replacements), RELATIVE_TOLERANCE * sceneSize);
+        return TrimmedLeaves.ifTrimmed(with(table.withPatches(indices, replacements), RELATIVE_TOLERANCE * sceneSize));
     }
 
     @Override

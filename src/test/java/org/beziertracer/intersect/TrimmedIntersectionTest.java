@@ -93,6 +93,27 @@ class TrimmedIntersectionTest {
 
     @ParameterizedTest
     @EnumSource(Method.class)
+    void aSnapshotEditedIntoATrimmedPatchTestsItsTrimsLikeAFreshOne(Method method) {
+        // The app keeps its snapshot when only patches change: opening the trimmed plate after the
+        // default patch (one patch each) went through withPatches, which once kept untrimmed leaves
+        // (holes showed as the dropped sub-patches' squares)
+        BezierPatch plain = new BezierPatch(1, 1, new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0.01});
+        IntersectOptions options = IntersectOptions.defaults().withMethod(method);
+        SceneIntersector plainSnapshot = SceneIntersector.build(new Scene(List.of(plain)), options);
+        for (SceneIntersector si : List.of(plainSnapshot.withPatches(new Scene(List.of(plate(true))), new int[] {0}),
+                plainSnapshot.withPatch(0, plate(true)))) {
+            TraceContext ctx = si.newContext();
+            Hit hit = new Hit();
+            Random rnd = new Random(84);
+            for (int r = 0; r < 2000; r++) {
+                double x = rnd.nextDouble(), y = rnd.nextDouble();
+                assertEquals(material(x, y), down(si, ctx, hit, x, y), method + " at (" + x + ", " + y + ")");
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Method.class)
     void raysWithin1e9OfATrimCurveDecideAsTheExactCurve(Method method) {
         SceneIntersector si = SceneIntersector.build(new Scene(List.of(plate(true))),
                 IntersectOptions.defaults().withMethod(method));
