@@ -67,7 +67,17 @@ public final class AppFrame extends JFrame {
             }
         });
         pack();
+        fitScreen();
         setLocationByPlatform(true);
+    }
+
+    /** Shrinks the packed window to the screen's usable area (a 1280×800 screen cut off the inspector). */
+    private void fitScreen() {
+        java.awt.Rectangle usable = getGraphicsConfiguration() == null ? null
+                : java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        if (usable != null && (getWidth() > usable.width || getHeight() > usable.height)) {
+            setSize(Math.min(getWidth(), usable.width), Math.min(getHeight(), usable.height));
+        }
     }
 
     /** Ctrl+Y as a second redo key (the menu shows Ctrl+Shift+Z). */

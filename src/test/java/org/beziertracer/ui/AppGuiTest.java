@@ -41,6 +41,9 @@ class AppGuiTest extends GuiSession {
             }
         }
         assertNotNull(main, "main window found among Frame.getFrames()");
+        java.awt.Rectangle usable = java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        assertTrue(GuiDriver.openedSize.width <= usable.width && GuiDriver.openedSize.height <= usable.height,
+                "the window opens within the screen: " + GuiDriver.openedSize + " in " + usable);
         BufferedImage img = d.capturePanel();
         double[] surface = GuiDriver.mean(img, centreBox());
         double[] corner = GuiDriver.mean(img, new Rectangle(2, 2, 10, 10));

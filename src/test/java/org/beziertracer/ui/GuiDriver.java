@@ -47,6 +47,8 @@ final class GuiDriver {
     final AppModel app;
     final AppPreferences prefs;
     final Robot robot;
+    /** The window's size as the app opened it, before the tests set their own. */
+    static Dimension openedSize;
 
     private GuiDriver(AppFrame frame, AppPreferences prefs) throws AWTException {
         this.frame = frame;
@@ -61,6 +63,7 @@ final class GuiDriver {
         GuiTests.requireDisplay();
         AppPreferences prefs = new AppPreferences(MemoryPreferences.root().node(AppPreferences.NODE));
         AppFrame f = BezierTracerApp.start(prefs).get(30, TimeUnit.SECONDS);
+        openedSize = onEdt(() -> f.getSize());
         onEdt(() -> {
             f.setSize(new Dimension(960, 600));
             f.setLocation(0, 0);
