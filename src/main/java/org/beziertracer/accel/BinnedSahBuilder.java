@@ -53,14 +53,6 @@ final class BinnedSahBuilder extends BvhBuild {
         }
     }
 
-    private static int[] identity(int n) {
-        int[] order = new int[n];
-        for (int p = 0; p < n; p++) {
-            order[p] = p;
-        }
-        return order;
-    }
-
     static Bvh build(double[] primBounds, int primCount, BvhOptions opts) {
         return build(primBounds, primCount, opts, true);
     }

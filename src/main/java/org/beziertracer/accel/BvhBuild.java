@@ -54,6 +54,15 @@ abstract class BvhBuild {
         Arrays.fill(nodes, -1);
     }
 
+    /** The primitives in their own order, {@code 0 .. n-1}: the leaf order before a build sorts it. */
+    static int[] identity(int n) {
+        int[] order = new int[n];
+        for (int p = 0; p < n; p++) {
+            order[p] = p;
+        }
+        return order;
+    }
+
     /** The hierarchy of no primitive: one empty leaf. */
     static Bvh empty(long start) {
         float inf = Float.POSITIVE_INFINITY;

@@ -48,10 +48,7 @@ final class MortonBuilder extends BvhBuild {
             return empty(start);
         }
         long[] keys = codes(primBounds, primCount);
-        int[] order = new int[primCount];
-        for (int p = 0; p < primCount; p++) {
-            order[p] = p;
-        }
+        int[] order = identity(primCount);
         sort(keys, order);
         MortonBuilder b = new MortonBuilder(primBounds, order, keys, opts);
         Subtree root = new Subtree(b, 0, 1, 0, primCount, 1);
