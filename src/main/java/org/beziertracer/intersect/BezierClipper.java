@@ -409,7 +409,7 @@ final class BezierClipper {
         double lx, ly;
         double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
         if (alongU) {
-            if (vv > 1e-20 * uu && vv > 0) {
+            if (vv > 1e-20 * uu) { // (uu ≥ 0, so this implies vv > 0)
                 lx = vx; ly = vy;
             } else if (uu > 0) {
                 lx = -uy; ly = ux;
@@ -417,7 +417,7 @@ final class BezierClipper {
                 lx = 0; ly = 1;
             }
         } else {
-            if (uu > 1e-20 * vv && uu > 0) {
+            if (uu > 1e-20 * vv) {
                 lx = ux; ly = uy;
             } else if (vv > 0) {
                 lx = -vy; ly = vx;
