@@ -368,4 +368,87 @@ class ClippingStepsTest {
         }
         assertTrue(checked > 150, "roots checked " + checked);
     }
+
+    /**
+     * A rational quadratic arc of the unit circle from 45° to 135° (weights 1, cos 45°, 1), swept
+     * along z over [0, 1]: a cylinder piece whose exact hits are circle–line intersections.
+     */
+    static BezierPatch arc() {
+        double c = Math.sqrt(0.5);
+        double[] xy = {c, c, 0, Math.sqrt(2), -c, c};
+        double[] net = new double[3 * 6], w = new double[6];
+        for (int j = 0; j <= 1; j++) {
+            for (int i = 0; i <= 2; i++) {
+                int p = 3 * (3 * j + i);
+                net[p] = xy[2 * i];
+                net[p + 1] = xy[2 * i + 1];
+                net[p + 2] = j;
+                w[3 * j + i] = i == 1 ? c : 1;
+            }
+        }
+        return new BezierPatch(2, 1, net, w, null, null);
+    }
+
+    /** Nearest t in (0, ∞) where the ray meets the unit cylinder within 45°..135° and 0 ≤ z ≤ 1; NaN if none. */
+    static double arcHit(double ox, double oy, double oz, double dx, double dy, double dz) {
+        double a = dx * dx + dy * dy, b = 2 * (ox * dx + oy * dy), c = ox * ox + oy * oy - 1;
+        double disc = b * b - 4 * a * c;
+        if (disc < 0) {
+            return Double.NaN;
+        }
+        for (double t : new double[] {(-b - Math.sqrt(disc)) / (2 * a), (-b + Math.sqrt(disc)) / (2 * a)}) {
+            double x = ox + t * dx, y = oy + t * dy, z = oz + t * dz;
+            if (t > 0 && y > Math.abs(x) && z >= 0 && z <= 1) {
+                return t;
+            }
+        }
+        return Double.NaN;
+    }
+
+    /**
+     * Rays that cross the arc twice (the leaf is not single-root, so it is clipped, restricted and
+     * split with its weights) and rays that cross it once: the nearest exact hit, for the whole
+     * patch as one leaf and for the default leaves.
+     */
+    @Test
+    void aRationalArcIsClippedWithItsWeights() {
+        Random rnd = new Random(1994);
+        BezierPatch arc = arc();
+        TraceContext ctx = new TraceContext();
+        int twice = 0, once = 0;
+        for (SplitOptions split : List.of(SplitOptions.wholePatches(), SplitOptions.defaults())) {
+            SubPatchTable tab = SubPatchTable.build(List.of(arc), split);
+            for (int r = 0; r < 600; r++) {
+                double ox, oy, oz = 0.1 + 0.8 * rnd.nextDouble(), dx, dy, dz = 0.2 * rnd.nextGaussian();
+                if (r % 2 == 0) { // nearly horizontal at a height where it crosses the arc twice
+                    ox = -2;
+                    oy = 0.72 + 0.26 * rnd.nextDouble();
+                    dx = 1;
+                    dy = 0.02 * rnd.nextGaussian();
+                } else { // from outside towards the axis
+                    double phi = Math.PI * (0.2 + 0.6 * rnd.nextDouble());
+                    ox = 3 * Math.cos(phi);
+                    oy = 3 * Math.sin(phi);
+                    dx = -ox + 0.3 * rnd.nextGaussian();
+                    dy = -oy + 0.3 * rnd.nextGaussian();
+                }
+                dz *= 0.3 / Math.max(1, Math.abs(dz)) * Math.hypot(dx, dy);
+                double want = arcHit(ox, oy, oz, dx, dy, dz);
+                if (Double.isNaN(want) || oz + want * dz < 0.01 || oz + want * dz > 0.99) {
+                    continue;
+                }
+                ctx.setRay(ox, oy, oz, dx, dy, dz);
+                double best = Double.POSITIVE_INFINITY;
+                for (int leaf = 0; leaf < tab.count; leaf++) {
+                    if (BezierClipper.intersect(ctx, tab, leaf, 0, best, 1e-12)) {
+                        best = ctx.rootT;
+                    }
+                }
+                String where = "ray " + r + " o (" + ox + ", " + oy + ", " + oz + ") d (" + dx + ", " + dy + ", " + dz + ")";
+                assertEquals(want, best, ROOT_T * 3 / Math.sqrt(dx * dx + dy * dy + dz * dz), where);
+                if (r % 2 == 0) twice++; else once++;
+            }
+        }
+        assertTrue(twice > 400 && once > 400, twice + " crossing twice, " + once + " once");
+    }
 }
