@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import static org.beziertracer.Tolerances.ROUNDING;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -103,5 +104,27 @@ class HullClipTest {
         assertTrue(HullClip.zeroInterval(lo2, hi2, 2, 0, out));
         assertEquals(1 / 6.0, out[0], ROUNDING, "column 0's top (-1) to column 1's top (2)");
         assertEquals(0.75, out[1], ROUNDING, "column 2's bottom (2) to column 1's bottom (-2)");
+    }
+
+    /** A column exactly {@code eps} from zero, above or below, touches it; and only column 0 may touch. */
+    @Test
+    void aColumnExactlyEpsAwayTouches() {
+        double[] out = new double[2];
+        // the middle column's bottom is exactly eps above zero; the others lie far above
+        assertTrue(HullClip.zeroInterval(new double[] {0.5, 0.25, 0.7}, new double[] {0.6, 0.35, 0.8}, 2, 0.25, out));
+        assertArrayEquals(new double[] {0.5, 0.5}, out, ROUNDING);
+        // ... its top exactly eps below zero, the others far below
+        assertTrue(HullClip.zeroInterval(new double[] {-0.6, -0.35, -0.8}, new double[] {-0.5, -0.25, -0.7}, 2, 0.25, out));
+        assertArrayEquals(new double[] {0.5, 0.5}, out, ROUNDING);
+        // only the first column touches: the interval is [0, 0]
+        assertTrue(HullClip.zeroInterval(new double[] {0.1, 1, 2}, new double[] {0.2, 1.1, 2.1}, 2, 0.15, out));
+        assertArrayEquals(new double[] {0, 0}, out, ROUNDING);
+        // only the last one: [1, 1]
+        assertTrue(HullClip.zeroInterval(new double[] {2, 1, 0.1}, new double[] {2.1, 1.1, 0.2}, 2, 0.15, out));
+        assertArrayEquals(new double[] {1, 1}, out, ROUNDING);
+        // the last column straddles zero, the one before lies below: the interval stops at 1
+        assertTrue(HullClip.zeroInterval(new double[] {1, -1, -0.3}, new double[] {1, -1, 0.3}, 2, 0, out));
+        assertEquals(0.25, out[0], ROUNDING);
+        assertEquals(1, out[1], 0);
     }
 }
