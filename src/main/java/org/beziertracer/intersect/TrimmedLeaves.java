@@ -34,24 +34,35 @@ final class TrimmedLeaves extends PatchLeaves {
         return leaves.table.trimTest == null || leaves instanceof TrimmedLeaves ? leaves : new TrimmedLeaves(leaves);
     }
 
+    /**
+     * A leaf wholly inside the trim region needs no test for a root in its own parameter box; but
+     * a solver may return a root beyond it (Newton accepts roots in the leaf's overlapped domain,
+     * {@link NewtonSolver#OVERLAP}), and there the trim curves decide as for any other leaf.
+     */
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        if (!table.trimTest[s]) {
-            return inner.solve(ctx, s, tMin, tMax);
-        }
         int k = table.parent[s];
         TrimCurves trim = table.patchTrim[k];
+        if (trim == null) {
+            return inner.solve(ctx, s, tMin, tMax);
+        }
         double lo = tMin;
         for (int attempt = 0; attempt <= MAX_REJECTED; attempt++) {
             if (!inner.solve(ctx, s, lo, tMax)) {
                 return false;
             }
-            if (inside(table.patchDomain, k, trim, ctx.rootU, ctx.rootV, ctx.trimScratch)) {
+            if (!table.trimTest[s] && inLeafBox(table.boxes, s, ctx.rootU, ctx.rootV)
+                    || inside(table.patchDomain, k, trim, ctx.rootU, ctx.rootV, ctx.trimScratch)) {
                 return true;
             }
             lo = ctx.rootT + BEYOND * Math.max(Math.abs(ctx.rootT), Double.MIN_NORMAL);
         }
         return false;
+    }
+
+    /** True when {@code (u, v)} lies in leaf {@code s}'s parameter box (its parent patch's parameters). */
+    static boolean inLeafBox(float[] boxes, int s, double u, double v) {
+        return u >= boxes[4 * s] && u <= boxes[4 * s + 1] && v >= boxes[4 * s + 2] && v <= boxes[4 * s + 3];
     }
 
     /** True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region. */
