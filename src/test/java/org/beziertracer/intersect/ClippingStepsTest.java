@@ -451,4 +451,35 @@ class ClippingStepsTest {
         }
         assertTrue(twice > 400 && once > 400, twice + " crossing twice, " + once + " once");
     }
+
+    /**
+     * A flat square parametrised by x = 4(u − ½)³, y = 4(v − ½)³ (degree 3×3, z = 0): its
+     * parametrisation is singular along u = ½ and v = ½, so Newton from the leaf centre fails at
+     * once, and from most other starts steps out of the leaf; from where the ray meets the corners'
+     * parallelogram (the leaf's documented start) it converges to the root.
+     */
+    @Test
+    void newtonFromTheCornersStartsWhereTheRayMeetsTheirParallelogram() {
+        double[] xs = {-0.5, 0.5, -0.5, 0.5};
+        double[] net = new double[3 * 16];
+        for (int j = 0; j <= 3; j++) {
+            for (int i = 0; i <= 3; i++) {
+                net[3 * (4 * j + i)] = xs[i];
+                net[3 * (4 * j + i) + 1] = xs[j];
+            }
+        }
+        SubPatchTable tab = whole(new BezierPatch(3, 3, net));
+        TraceContext ctx = new TraceContext();
+        for (double us : new double[] {0.93, 0.95, 0.05, 0.07}) {
+            for (double vs : new double[] {0.95, 0.06, 0.93}) {
+                double x = 4 * Math.pow(us - 0.5, 3), y = 4 * Math.pow(vs - 0.5, 3);
+                ctx.setRay(x, y, 1, 0, 0, -2);
+                String where = "(u*, v*) = (" + us + ", " + vs + ")";
+                assertTrue(BezierClipper.newtonFromCorners(ctx, tab, 0, 0, 1e-13), where);
+                assertEquals(us, ctx.rootU, 1e-9, where);
+                assertEquals(vs, ctx.rootV, 1e-9, where);
+                assertEquals(0.5, ctx.rootT, 1e-12, where);
+            }
+        }
+    }
 }
