@@ -228,4 +228,29 @@ class AnalyticShapesTest {
         c.setRay(0, 5, 0, 1, 0, 1);
         assertTrue(Double.isNaN(s.planeT(0, c)), "parallel");
     }
+    /**
+     * The texture axes of axis-aligned planes (floors and walls) are fixed: dp/du and dp/dv of
+     * each of the six axis normals, right-handed, from the smallest normal component.
+     */
+    @Test
+    void axisAlignedPlanesHaveFixedTextureAxes() {
+        double[][] expected = { // normal, dp/du, dp/dv
+            {1, 0, 0, 0, 0, 1, 0, -1, 0}, {-1, 0, 0, 0, 0, -1, 0, -1, 0},
+            {0, 1, 0, 0, 0, 1, 1, 0, 0}, {0, -1, 0, 0, 0, -1, 1, 0, 0},
+            {0, 0, 1, 0, -1, 0, 1, 0, 0}, {0, 0, -1, 0, 1, 0, 1, 0, 0}};
+        TraceContext c = new TraceContext();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        for (double[] e : expected) {
+            Plane plane = new Plane(new Vec3(1, 2, 3), new Vec3(e[0], e[1], e[2]).scale(2), 0, 1);
+            AnalyticShapes s = new AnalyticShapes(List.of(plane), List.of());
+            c.setRay(5 * e[0] + 0.5, 5 * e[1] + 0.5, 5 * e[2] + 0.5, -e[0], -e[1], -e[2]);
+            hit.t = s.planeT(0, c);
+            s.planePoint(0, hit, c, sp);
+            double[] actual = {sp.nx, sp.ny, sp.nz, sp.dpdux, sp.dpduy, sp.dpduz, sp.dpdvx, sp.dpdvy, sp.dpdvz};
+            for (int k = 0; k < 9; k++) {
+                assertEquals(e[k], actual[k], 0, "normal (" + e[0] + ", " + e[1] + ", " + e[2] + "), value " + k);
+            }
+        }
+    }
 }

@@ -221,7 +221,11 @@ class RationalNetsTest {
                 assertTrue(z >= rb[2] - TOL && z <= rb[5] + TOL, "the piece's distances lie within the bounds");
             }
             // back to Euclidean: the corners are surface points of the restricted piece
+            int next = (slot + 1) * 3 * points;
+            c.arena[next] = 7.5;
+            c.weightArena[(slot + 1) * points] = 2;
             RationalNets.toEuclidean(c, slot, points);
+            assertEquals(7.5, c.arena[next], 0, "the next slot is left alone");
             int base = slot * 3 * points, last = base + 3 * (points - 1);
             assertImage(image(c, p, a, 0), new double[] {c.arena[base], c.arena[base + 1], c.arena[base + 2]}, "P00");
             assertImage(image(c, p, b, 1), new double[] {c.arena[last], c.arena[last + 1], c.arena[last + 2]}, "Pnm");
