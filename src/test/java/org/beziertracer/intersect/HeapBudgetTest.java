@@ -173,6 +173,10 @@ class HeapBudgetTest {
         assertTrue(message.startsWith("x: a scene need about " + HeapBudget.size((long) (tight * HeapBudget.GC_HEADROOM))
                 + " of heap; this JVM allows " + HeapBudget.size(rt.maxMemory())), message);
         HeapBudget.require("x", "a scene", (long) (available / 1.2)); // fits, headroom included
+        // the whole heap with its headroom: never fits beside what is in use
+        long all = (long) (rt.maxMemory() / HeapBudget.GC_HEADROOM);
+        assertTrue(UserMessages.of(IllegalArgumentException.class, () -> HeapBudget.require(null, "it", all))
+                .startsWith("it need about "));
     }
 
     @Test
