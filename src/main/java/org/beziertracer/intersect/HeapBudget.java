@@ -38,7 +38,7 @@ public final class HeapBudget {
                     + Bvh.estimateBytes(triangles);
         }
         SubPatchTable.Estimate table = SubPatchTable.estimate(patches, options.effectiveSplit());
-        long solverBytes = options.method() == Method.NEWTON ? 4L * (NewtonLeafRecords.STRIDE + 1) * table.leaves() : 0;
+        long solverBytes = options.method() == Method.NEWTON ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
         // The table, the leaves' boxes handed to the BVH build, the build itself and a solver's per-leaf records
         return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + solverBytes;
     }

@@ -59,46 +59,6 @@ final class NewtonLeafRecords {
         return rec;
     }
 
-    /**
-     * Per sub-patch of {@code table}, a bound on the distance of the leaf from the bilinear patch
-     * through its four corners (rounded up to a float): the largest distance of a control point
-     * {@code P[i][j]} from that bilinear patch's point at {@code (i/n, j/m)}. The bilinear patch
-     * raised to degree n×m has exactly those points as its control points, so the difference of
-     * the two surfaces has the differences as control points and lies within their largest length
-     * (convex hull). A rational leaf gets {@code +∞} (its surface is not the polynomial of its
-     * points).
-     */
-    static float[] reach(SubPatchTable table) {
-        float[] reach = new float[table.count];
-        for (int s = 0; s < table.count; s++) {
-            reach[s] = table.patchDim[table.parent[s]] == 3
-                    ? up(bilinearReach(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s]))
-                    : Float.POSITIVE_INFINITY;
-        }
-        return reach;
-    }
-
-    /** The largest distance of the control points of the net at {@code net[off..]} from the bilinear points of its corners. */
-    static double bilinearReach(double[] net, int off, int n, int m) {
-        int row = 3 * (n + 1);
-        int p00 = off, pn0 = off + 3 * n, p0m = off + row * m, pnm = p0m + 3 * n;
-        double reach = 0;
-        for (int j = 0; j <= m; j++) {
-            double b = (double) j / m;
-            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
-                double a = (double) i / n, sq = 0;
-                for (int c = 0; c < 3; c++) {
-                    double bilinear = (1 - b) * ((1 - a) * net[p00 + c] + a * net[pn0 + c])
-                            + b * ((1 - a) * net[p0m + c] + a * net[pnm + c]);
-                    double d = net[p + c] - bilinear;
-                    sq += d * d;
-                }
-                reach = Math.max(reach, Math.sqrt(sq));
-            }
-        }
-        return reach;
-    }
-
     /** The record of a whole net, in its own parameters (box {@code [0,1]²}), from its {@link #frame}. */
     static float[] leaf(double[] frame) {
         float[] rec = new float[STRIDE];

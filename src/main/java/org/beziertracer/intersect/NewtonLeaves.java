@@ -10,18 +10,15 @@ import org.beziertracer.geometry.SubPatchTable;
 final class NewtonLeaves extends PatchLeaves {
 
     private final float[] records;
-    /** {@link NewtonLeafRecords#reach}: each leaf's distance bound from the bilinear patch of its corners. */
-    private final float[] reach;
 
     NewtonLeaves(SubPatchTable table, double tolerance) {
         super(table, tolerance);
         this.records = NewtonLeafRecords.build(table);
-        this.reach = NewtonLeafRecords.reach(table);
     }
 
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        return NewtonSolver.intersect(ctx, table, records, reach, s, tMin, tMax, tolerance);
+        return NewtonSolver.intersect(ctx, table, records, s, tMin, tMax, tolerance);
     }
 
     @Override

@@ -67,8 +67,6 @@ final class NewtonSolver {
     private static final double[] QUARTERS = {0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75};
     /** Outcomes of {@link #start}. */
     static final int MISS = 0, SINGLE_ROOT = 1, MAYBE_SEVERAL = 2;
-    /** A leaf that may hold several roots of the overlapped domain but at most one of its own box ({@link LeafNetTest}). */
-    static final int ONE_OWN_ROOT = 3;
     /** Outcomes of {@link #iterate}. */
     static final int CONVERGED = 0, FAILED = 1;
     /** Doubles of {@link TraceContext#newton}: domain, t range, the root to avoid, the leaf size. */
@@ -82,19 +80,14 @@ final class NewtonSolver {
      *
      * @param records the table's {@link NewtonLeafRecords}
      */
-    static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] reach, int s, double tMin,
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, int s, double tMin,
                              double tMax, double tolerance) {
         int o = NewtonLeafRecords.STRIDE * s;
         int kind = start(ctx, records, o, tMin, tMax, tolerance);
         if (kind == MISS) {
             return false;
         }
-        if (kind == MAYBE_SEVERAL) {
-            int own = LeafNetTest.classify(ctx, tab, s, reach[s], tMin, tMax, tolerance);
-            // no root of its own: one attempt, as a single-root leaf, for a neighbour's root in the overlap
-            kind = own == LeafNetTest.NO_ROOT ? SINGLE_ROOT : own == LeafNetTest.ONE_ROOT ? ONE_OWN_ROOT : MAYBE_SEVERAL;
-        }
-        return search(ctx, tab, records, s, kind, tMin, tMax, tolerance);
+        return search(ctx, tab, records, s, kind == SINGLE_ROOT, tMin, tMax, tolerance);
     }
 
     /**
@@ -151,9 +144,8 @@ final class NewtonSolver {
     }
 
     /** Runs the attempts from the start in {@code ctx.clip}; keeps the nearest accepted root. */
-    private static boolean search(TraceContext ctx, SubPatchTable tab, float[] rec, int s, int kind,
+    private static boolean search(TraceContext ctx, SubPatchTable tab, float[] rec, int s, boolean singleRoot,
                                   double tMin, double tMax, double tolerance) {
-        boolean singleRoot = kind == SINGLE_ROOT;
         int o = NewtonLeafRecords.STRIDE * s, k = tab.parent[s];
         double u0 = rec[o + NewtonLeafRecords.U0], du = rec[o + NewtonLeafRecords.DU];
         double v0 = rec[o + NewtonLeafRecords.V0], dv = rec[o + NewtonLeafRecords.DV];
@@ -193,9 +185,6 @@ final class NewtonSolver {
                 reflection++;
             } else if (attempt > 1) {
                 break;
-            }
-            if (found && kind == ONE_OWN_ROOT && bestU >= u0 && bestU <= u0 + du && bestV >= v0 && bestV <= v0 + dv) {
-                break; // the leaf's one root of its own: any other lies in a neighbour's box
             }
             w[TMIN] = tMin;
             w[TMAX] = bestT;
