@@ -48,10 +48,11 @@ class NewtonLeafRecordsTest {
         double[] frame = new double[NewtonLeafRecords.STRIDE];
         double sumR = 0, sumBall = 0;
         for (int s = 0; s < table.count; s++) {
-            NewtonLeafRecords.frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s], false, frame, 0);
-            double ball = ballBound(frame, table.nets, table.netOffset[s]);
-            assertTrue(frame[NewtonLeafRecords.R] <= ball, "leaf " + s + ": R " + frame[NewtonLeafRecords.R] + ", ball bound " + ball);
-            sumR += frame[NewtonLeafRecords.R];
+            NewtonLeafRecords.frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s], false,
+                    frame, 0);
+            double ball = ballBound(frame, table.nets, table.netOffset[s]), r = frame[NewtonLeafRecords.R];
+            assertTrue(r <= ball, "leaf " + s + ": R " + r + ", ball bound " + ball);
+            sumR += r;
             sumBall += ball;
         }
         assertTrue(sumR < 0.5 * sumBall, "mean R " + sumR / table.count + " vs ball bound " + sumBall / table.count);
@@ -61,8 +62,8 @@ class NewtonLeafRecordsTest {
     private static double ballBound(double[] frame, double[] net, int off) {
         double sq = 0;
         for (int c = 0; c < 3; c++) {
-            double e = frame[NewtonLeafRecords.C + c] - 0.5 * (frame[NewtonLeafRecords.A + c] + frame[NewtonLeafRecords.B + c])
-                    - net[off + c];
+            double e = frame[NewtonLeafRecords.C + c]
+                    - 0.5 * (frame[NewtonLeafRecords.A + c] + frame[NewtonLeafRecords.B + c]) - net[off + c];
             sq += e * e;
         }
         return Math.sqrt(sq) + frame[NewtonLeafRecords.RA] + frame[NewtonLeafRecords.RB];
@@ -96,13 +97,15 @@ class NewtonLeafRecordsTest {
                 for (int b = 0; b < GRID; b++) {
                     double u = rec[o + NewtonLeafRecords.U0] + rec[o + NewtonLeafRecords.DU] * a / (GRID - 1);
                     double v = rec[o + NewtonLeafRecords.V0] + rec[o + NewtonLeafRecords.DV] * b / (GRID - 1);
-                    RationalDeCasteljau.pointAndDerivatives(table.patchNets, table.patchNetOffset[k], table.patchDegreeU[k],
-                            table.patchDegreeV[k], table.patchDim[k], u, v, e, scratch);
+                    RationalDeCasteljau.pointAndDerivatives(table.patchNets, table.patchNetOffset[k],
+                            table.patchDegreeU[k], table.patchDegreeV[k], table.patchDim[k], u, v, e, scratch);
                     double d = distanceToParallelogram(e, rec, o);
-                    assertTrue(d <= r, "leaf " + s + " point (" + u + ", " + v + ") " + d + " from its parallelogram, R " + r);
+                    assertTrue(d <= r, "leaf " + s + " point (" + u + ", " + v + ") " + d
+                            + " from its parallelogram, R " + r);
                     for (int ray = 0; ray < 3; ray++) {
                         aimThrough(ctx, e, rnd); // the point is at t = 1
-                        assertNotEquals(NewtonSolver.MISS, NewtonSolver.start(ctx, rec, o, 1 - 1e-9, 1 + 1e-9, tolerance),
+                        int kind = NewtonSolver.start(ctx, rec, o, 1 - 1e-9, 1 + 1e-9, tolerance);
+                        assertNotEquals(NewtonSolver.MISS, kind,
                                 "leaf " + s + " rejected a ray through its point (" + u + ", " + v + ")");
                     }
                 }
@@ -137,7 +140,7 @@ class NewtonLeafRecordsTest {
         ctx.setRay(e[0] - scale * dx, e[1] - scale * dy, e[2] - scale * dz, scale * dx, scale * dy, scale * dz);
     }
 
-    /** Distance from {@code p[0..3)} to the parallelogram {@code C + (s−½)A + (t−½)B}, s, t in [0,1], of record {@code o}. */
+    /** Distance from {@code p[0..3)} to the parallelogram C + (s−½)A + (t−½)B, s, t in [0,1], of record o. */
     static double distanceToParallelogram(double[] p, float[] rec, int o) {
         double[] c = new double[3], a = new double[3], b = new double[3], q = new double[3];
         for (int i = 0; i < 3; i++) {
