@@ -17,9 +17,16 @@ import org.beziertracer.geometry.SubPatchTable;
  *                    CAGD, 5th ed., §16.6)
  *   R                the leaf lies within R of its parallelogram P(s,t) = C + (s−½)A + (t−½)B
  * </pre>
- * The bound R: along any path from the corner {@code (0,0)}, {@code S(s,t) − P00 − sA − tB} is
- * the integral of {@code Su − A} and {@code Sv − B}, so {@code |S − (P00 + sA + tB)| ≤ s·RA + t·RB},
- * and {@code P00 + sA + tB} is {@code P(s,t)} shifted by {@code P00 − C + (A+B)/2}; R adds the two.
+ * The bound R is the smaller of two bounds. (1) Along any path from the corner {@code (0,0)},
+ * {@code S(s,t) − P00 − sA − tB} is the integral of {@code Su − A} and {@code Sv − B}, so
+ * {@code |S − (P00 + sA + tB)| ≤ s·RA + t·RB}, and {@code P00 + sA + tB} is {@code P(s,t)} shifted
+ * by {@code P00 − C + (A+B)/2}; this bound adds the two (polynomial leaves only). (2) Every
+ * control point {@code P[i][j]} lies within distance {@code d} of the parallelogram's point
+ * {@code P(i/n, j/m)} (d the largest such distance), so the convex hull of the control points,
+ * which holds the leaf (also a rational one, its weights being positive), lies within {@code d}
+ * of the parallelogram. Bound (2) is usually several times the smaller on curved leaves: (1)
+ * grows with the whole spread of the derivatives, (2) with the leaf's deviation from the plane
+ * of A and B.
  * The parallelogram is the leaf's enclosure (a thin parallelepiped, as in K. Qin, M. Gong, G. Tong,
  * "Fast ray tracing NURBS surfaces", J. Comput. Sci. Technol. 11(1), 1996, whose ray–enclosure
  * intersection also gives the start) and its axes the single-root test's balls
@@ -43,7 +50,8 @@ final class NewtonLeafRecords {
         float[] rec = new float[STRIDE * table.count];
         double[] frame = new double[STRIDE];
         for (int s = 0; s < table.count; s++) {
-            frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s], frame, 0);
+            frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s],
+                    table.patchDim[table.parent[s]] != 3, frame, 0);
             float[] box = table.boxes;
             store(frame, box[4 * s], box[4 * s + 1] - box[4 * s], box[4 * s + 2], box[4 * s + 3] - box[4 * s + 2],
                     rec, STRIDE * s);
@@ -87,9 +95,10 @@ final class NewtonLeafRecords {
 
     /**
      * Writes C, A, B, RA, RB and R of the degree {@code n}×{@code m} net at {@code net[off..]} to
-     * {@code rec[o + C .. o + R]} (the box entries are left alone).
+     * {@code rec[o + C .. o + R]} (the box entries are left alone); for a {@code rational} leaf
+     * (its control points' Euclidean positions, positive weights) R is the convex-hull bound alone.
      */
-    static void frame(double[] net, int off, int n, int m, double[] rec, int o) {
+    static void frame(double[] net, int off, int n, int m, boolean rational, double[] rec, int o) {
         int row = 3 * (n + 1);
         int p00 = off, pn0 = off + 3 * n, p0m = off + row * m, pnm = p0m + 3 * n;
         for (int c = 0; c < 3; c++) {
@@ -113,7 +122,29 @@ final class NewtonLeafRecords {
         double ez = rec[o + C + 2] - 0.5 * (rec[o + A + 2] + rec[o + B + 2]) - net[p00 + 2];
         rec[o + RA] = ra;
         rec[o + RB] = rb;
-        rec[o + R] = Math.sqrt(ex * ex + ey * ey + ez * ez) + ra + rb;
+        double hull = hullReach(net, off, n, m, rec, o);
+        rec[o + R] = rational ? hull : Math.min(hull, Math.sqrt(ex * ex + ey * ey + ez * ez) + ra + rb);
+    }
+
+    /**
+     * The largest distance of a control point {@code P[i][j]} of the net at {@code net[off..]}
+     * from the parallelogram point {@code C + (i/n − ½)A + (j/m − ½)B} of {@code rec[o..]}.
+     */
+    private static double hullReach(double[] net, int off, int n, int m, double[] rec, int o) {
+        int row = 3 * (n + 1);
+        double reach = 0;
+        for (int j = 0; j <= m; j++) {
+            double t = (double) j / m - 0.5;
+            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
+                double s = (double) i / n - 0.5, sq = 0;
+                for (int c = 0; c < 3; c++) {
+                    double d = net[p + c] - (rec[o + C + c] + s * rec[o + A + c] + t * rec[o + B + c]);
+                    sq += d * d;
+                }
+                reach = Math.max(reach, Math.sqrt(sq));
+            }
+        }
+        return reach;
     }
 
     /**

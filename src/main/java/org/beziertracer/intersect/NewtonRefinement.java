@@ -54,7 +54,7 @@ final class NewtonRefinement implements LeafCriterion {
         }
         TraceContext ctx = CONTEXT.get();
         double[] frame = new double[NewtonLeafRecords.STRIDE];
-        NewtonLeafRecords.frame(net, 0, n, m, frame, 0);
+        NewtonLeafRecords.frame(net, 0, n, m, false, frame, 0);
         float[] rec = NewtonLeafRecords.leaf(frame);
         double[] e = new double[9];
         for (double s : PROBES) {
