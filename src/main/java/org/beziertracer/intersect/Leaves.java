@@ -86,16 +86,9 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
 
     /**
      * {@link #withPatch} for several patches at once ({@code edited} differs from the old scene in
-     * patches {@code indices} only); kinds that can should remake their data once, not once per
-     * patch.
+     * patches {@code indices} only): the data is remade once, not once per patch.
      */
-    default Leaves withPatches(Scene edited, int[] indices, double sceneSize) {
-        Leaves out = this;
-        for (int index : indices) {
-            out = out.withPatch(edited, index, sceneSize);
-        }
-        return out;
-    }
+    Leaves withPatches(Scene edited, int[] indices, double sceneSize);
 
     /** Heap held by these leaves' data (not the model's patches), in bytes. */
     long bytes();

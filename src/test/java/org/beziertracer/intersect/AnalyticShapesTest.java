@@ -167,4 +167,90 @@ class AnalyticShapesTest {
             assertTrue(Double.isNaN(parallel) || Math.abs(parallel) > 1e9, "parallel: " + parallel + ", " + where);
         }
     }
+    /**
+     * Exact cases with round numbers: a root exactly at tMin or tMax does not count (a ray leaving
+     * the sphere's surface finds the far side, not its own origin); a tangent ray touches at its
+     * double root; at the poles the frame is the φ = 0 limit; on the seam u is 0, never 1.
+     */
+    @Test
+    void rootsAtTheIntervalsEndsTangentsPolesAndTheSeam() {
+        AnalyticShapes s = new AnalyticShapes(List.of(), List.of(new Sphere(new Vec3(0, 0, 0), 2, 0)));
+        TraceContext c = new TraceContext();
+        c.setRay(2, 0, 0, -1, 0, 0); // from the surface inward: roots 0 and 4
+        assertEquals(4, s.sphereT(0, c, 0, 10), 0);
+        assertEquals(0, s.sphereT(0, c, -1, 10), 0);
+        assertTrue(Double.isNaN(s.sphereT(0, c, -1, 0)), "root 0 at tMax");
+        assertTrue(Double.isNaN(s.sphereT(0, c, 0, 4)), "roots at tMin and at tMax");
+        assertTrue(Double.isNaN(s.sphereT(0, c, 4, 10)), "root 4 at tMin");
+        assertEquals(4, s.sphereT(0, c, 0, Math.nextUp(4.0)), 0);
+        c.setRay(-5, 2, 0, 1, 0, 0); // tangent at (0, 2, 0)
+        assertEquals(5, s.sphereT(0, c, 0, 10), 0);
+        c.setRay(-5, Math.nextUp(2.0), 0, 1, 0, 0);
+        assertTrue(Double.isNaN(s.sphereT(0, c, 0, 10)), "just past the tangent");
+
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        for (double z : new double[] {1, -1}) {
+            c.setRay(0, 0, 5 * z, 0, 0, -z);
+            hit.t = s.sphereT(0, c, 0, 10);
+            assertEquals(3, hit.t, 0);
+            s.spherePoint(0, hit, c, sp);
+            assertEquals(z, sp.nz, 0, "pole normal");
+            assertEquals(0, Math.hypot(sp.dpdux, sp.dpduy), 0, "dp/du vanishes at the pole");
+            assertEquals(z * 2 * Math.PI, sp.dpdvx, 1e-12, "dp/dv at the pole: the φ = 0 meridian");
+            assertEquals(0, sp.dpdvy, 0);
+            assertEquals(0, sp.dpdvz, 1e-12);
+            s.sphereUv(0, sp.px, sp.py, sp.pz, hit);
+            assertEquals(z > 0 ? 0 : 1, hit.v, 0);
+        }
+        c.setRay(5, 0, 0, -1, 0, 0);
+        hit.t = s.sphereT(0, c, 0, 10);
+        s.spherePoint(0, hit, c, sp);
+        s.sphereUv(0, sp.px, sp.py, sp.pz, hit);
+        assertEquals(0, hit.u, 0, "on the seam φ = 0: u = 0");
+        assertEquals(0.5, hit.v, 0);
+        assertEquals(4 * Math.PI, sp.dpduy, 1e-12, "dp/du = 2π r along +y at φ = 0");
+        assertEquals(-2 * Math.PI, sp.dpdvz, 1e-12, "dp/dv = π r along -z on the equator");
+    }
+
+    /** Planes: a hit exactly at the plane's own point, a ray in the plane, and an exact parallel ray. */
+    @Test
+    void planeRootsWithRoundNumbers() {
+        AnalyticShapes s = new AnalyticShapes(List.of(new Plane(new Vec3(1, 2, 3), new Vec3(0, 2, 0), 0, 0.5)), List.of());
+        TraceContext c = new TraceContext();
+        c.setRay(1, 7, 3, 0, -2, 0);
+        assertEquals(2.5, s.planeT(0, c), 0);
+        c.setRay(4, 7, -1, 1, -1, 2); // meets y = 2 at t = 5, point (9, 2, 9)
+        assertEquals(5, s.planeT(0, c), 0);
+        Hit hit = new Hit();
+        s.planeUv(0, 9, 2, 9, hit);
+        assertEquals(Math.hypot(8, 6) * 2, Math.hypot(hit.u, hit.v), 1e-12, "distance / uvScale");
+        c.setRay(0, 5, 0, 1, 0, 1);
+        assertTrue(Double.isNaN(s.planeT(0, c)), "parallel");
+    }
+    /**
+     * The texture axes of axis-aligned planes (floors and walls) are fixed: dp/du and dp/dv of
+     * each of the six axis normals, right-handed, from the smallest normal component.
+     */
+    @Test
+    void axisAlignedPlanesHaveFixedTextureAxes() {
+        double[][] expected = { // normal, dp/du, dp/dv
+            {1, 0, 0, 0, 0, 1, 0, -1, 0}, {-1, 0, 0, 0, 0, -1, 0, -1, 0},
+            {0, 1, 0, 0, 0, 1, 1, 0, 0}, {0, -1, 0, 0, 0, -1, 1, 0, 0},
+            {0, 0, 1, 0, -1, 0, 1, 0, 0}, {0, 0, -1, 0, 1, 0, 1, 0, 0}};
+        TraceContext c = new TraceContext();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        for (double[] e : expected) {
+            Plane plane = new Plane(new Vec3(1, 2, 3), new Vec3(e[0], e[1], e[2]).scale(2), 0, 1);
+            AnalyticShapes s = new AnalyticShapes(List.of(plane), List.of());
+            c.setRay(5 * e[0] + 0.5, 5 * e[1] + 0.5, 5 * e[2] + 0.5, -e[0], -e[1], -e[2]);
+            hit.t = s.planeT(0, c);
+            s.planePoint(0, hit, c, sp);
+            double[] actual = {sp.nx, sp.ny, sp.nz, sp.dpdux, sp.dpduy, sp.dpduz, sp.dpdvx, sp.dpdvy, sp.dpdvz};
+            for (int k = 0; k < 9; k++) {
+                assertEquals(e[k], actual[k], 0, "normal (" + e[0] + ", " + e[1] + ", " + e[2] + "), value " + k);
+            }
+        }
+    }
 }

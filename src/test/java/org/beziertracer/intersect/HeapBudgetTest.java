@@ -125,4 +125,66 @@ class HeapBudgetTest {
         assertEquals("this JVM allows 1 GB, 400 MB of it in use (run java -Xmx4g …)",
                 HeapBudget.limit(1L << 30, 400L << 20, 2L << 30));
     }
+    /** The build's estimate is the sum of its parts: the leaves' data, the boxes handed to the BVH build, the build, Newton's records. */
+    @Test
+    void theBuildEstimateAddsUpItsParts() {
+        Scene teapot = Models.teapot();
+        for (int k : new int[] {1, 7}) {
+            long triangles = 2L * k * k * teapot.patchCount();
+            assertEquals(TriangleMesh.estimateBytes(teapot.patchCount(), k) + 6 * 8 * triangles + Bvh.estimateBytes(triangles),
+                    HeapBudget.estimateBytes(teapot, IntersectOptions.defaults().withTessellate(k)), "K = " + k);
+        }
+        IntersectOptions clipping = IntersectOptions.defaults();
+        SubPatchTable.Estimate table = SubPatchTable.estimate(teapot.patches(), clipping.split());
+        assertEquals(table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()),
+                HeapBudget.estimateBytes(teapot, clipping));
+        // Newton over the same leaves adds its per-leaf records (STRIDE floats each)
+        IntersectOptions newton = clipping.withMethod(Method.NEWTON).withSplit(clipping.split());
+        assertEquals(4L * NewtonLeafRecords.STRIDE * table.leaves(),
+                HeapBudget.estimateBytes(teapot, newton) - HeapBudget.estimateBytes(teapot, clipping));
+    }
+
+    /** The refusal names the scene's patches (and the tessellation with its triangle count). */
+    @Test
+    void theRefusalOfAModelSaysWhatNeedsTheMemory() {
+        Scene teapot = Models.teapot();
+        String tessellated = UserMessages.of(IllegalArgumentException.class,
+                () -> HeapBudget.require("teapot", teapot, IntersectOptions.defaults().withTessellate(1024)));
+        assertTrue(tessellated.startsWith("teapot: 32 patches tessellated 1024x1024 (67108864 triangles) need about "),
+                tessellated);
+        BezierPatch big = wavy(1, 15, 4).get(0);
+        Scene many = new Scene(java.util.Collections.nCopies(2_000_000, big));
+        String exact = UserMessages.of(IllegalArgumentException.class,
+                () -> HeapBudget.require(null, many, IntersectOptions.defaults().withBvh(false)));
+        assertTrue(exact.startsWith("2000000 patches need about "), exact);
+    }
+
+    /**
+     * The headroom counts: a request that fits only without the collector's 10 % is refused, and
+     * the message names the request with its headroom; one that fits with it is accepted.
+     */
+    @Test
+    void theCollectorsHeadroomIsPartOfTheRequest() {
+        Runtime rt = Runtime.getRuntime();
+        System.gc();
+        long available = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
+        long tight = (long) (available / 1.05);
+        String message = UserMessages.of(IllegalArgumentException.class, () -> HeapBudget.require("x", "a scene", tight));
+        assertTrue(message.startsWith("x: a scene need about " + HeapBudget.size((long) (tight * HeapBudget.GC_HEADROOM))
+                + " of heap; this JVM allows " + HeapBudget.size(rt.maxMemory())), message);
+        HeapBudget.require("x", "a scene", (long) (available / 1.2)); // fits, headroom included
+        // the whole heap with its headroom: never fits beside what is in use
+        long all = (long) (rt.maxMemory() / HeapBudget.GC_HEADROOM);
+        assertTrue(UserMessages.of(IllegalArgumentException.class, () -> HeapBudget.require(null, "it", all))
+                .startsWith("it need about "));
+    }
+
+    @Test
+    void outOfMemoryNamesTheLimitAndTheFix() {
+        long max = Runtime.getRuntime().maxMemory();
+        assertEquals("out of memory: this JVM allows " + HeapBudget.size(max) + " (run java -Xmx" + HeapBudget.suggestion(max)
+                + " …)", HeapBudget.outOfMemory());
+        assertEquals("1g", HeapBudget.suggestion(500L << 20), "exactly 1024 MB reads as 1g");
+        assertEquals("512m", HeapBudget.suggestion(300L << 20));
+    }
 }

@@ -310,4 +310,176 @@ class SceneIntersectorTest {
             assertTrue(Double.isFinite(hit.u) && Double.isFinite(hit.v), "finite (u,v) at scale " + scale);
         }
     }
+    /** Plane and sphere hits carry their texture coordinates; their surface points are the shapes'. */
+    @Test
+    void planeAndSphereHitsHaveTheirTextureCoordinatesAndSurfacePoints() {
+        Plane plane = new Plane(new Vec3(1, 2, -1), new Vec3(0, 0, 1), 0, 2);
+        Sphere sphere = new Sphere(new Vec3(3, -1, 4), 1.5);
+        Scene scene = new Scene(List.of(), List.of(plane), List.of(sphere));
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        AnalyticShapes shapes = new AnalyticShapes(List.of(plane), List.of(sphere));
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit(), expected = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        // a plane hit at (-2, 5.5, -1): t = 2
+        assertTrue(si.closestHit(ctx, 0, 4.5, 3, -1, 0.5, -2, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(Hit.PLANE, hit.kind);
+        assertEquals(2, hit.t, ROUNDING);
+        assertEquals(-1, hit.subPatch);
+        shapes.planeUv(0, -2, 5.5, -1, expected);
+        assertEquals(expected.u, hit.u, ROUNDING);
+        assertEquals(expected.v, hit.v, ROUNDING);
+        assertEquals(Math.hypot(3, 3.5) / 2, Math.hypot(hit.u, hit.v), ROUNDING, "distance from the plane's point / uvScale");
+        si.surfacePoint(ctx, hit, sp);
+        assertEquals(Hit.PLANE, sp.kind);
+        assertEquals(hit.u, sp.u, 0);
+        assertEquals(-2, sp.px, ROUNDING);
+        assertEquals(5.5, sp.py, ROUNDING);
+        assertEquals(-1, sp.pz, ROUNDING);
+        assertEquals(1, sp.nz, 0);
+        assertEquals(0, sp.dpduz, ROUNDING, "dp/du lies in the plane");
+        assertEquals(1, Math.hypot(sp.dpdux, sp.dpduy), ROUNDING);
+        // a sphere hit at colatitude 60° and longitude 60°: u = 1/6, v = 1/3
+        double[] n = {Math.sqrt(3) / 4, 0.75, 0.5};
+        double[] o = {3 + 3.5 * n[0], -1 + 3.5 * n[1], 4 + 3.5 * n[2]};
+        assertTrue(si.closestHit(ctx, o[0], o[1], o[2], -n[0], -n[1], -n[2], 0, 100, hit));
+        assertEquals(Hit.SPHERE, hit.kind);
+        assertEquals(0, hit.index);
+        assertEquals(2, hit.t, 1e-12);
+        assertEquals(1.0 / 6, hit.u, 1e-12);
+        assertEquals(1.0 / 3, hit.v, 1e-12);
+        si.surfacePoint(ctx, hit, sp);
+        assertEquals(4 + 1.5 * n[2], sp.pz, 1e-12);
+        assertEquals(n[0], sp.nx, 1e-12);
+        // nothing in front: a miss leaves the answer false
+        assertFalse(si.closestHit(ctx, 0, 0, 10, 0, 0, 1, 0, Double.POSITIVE_INFINITY, hit));
+    }
+
+    /** The interval is open at both ends, for planes in both queries and for spheres. */
+    @Test
+    void shapesExactlyAtTMinOrTMaxDoNotCount() {
+        Scene scene = new Scene(List.of(), List.of(new Plane(new Vec3(0, 0, 0), new Vec3(0, 0, 1))),
+                List.of(new Sphere(new Vec3(10, 0, 0), 1)));
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        assertFalse(si.closestHit(ctx, 0, 0, 10, 0, 0, -1, 0, 10, hit), "plane at tMax");
+        assertFalse(si.closestHit(ctx, 0, 0, 10, 0, 0, -1, 10, 20, hit), "plane at tMin");
+        assertTrue(si.closestHit(ctx, 0, 0, 10, 0, 0, -1, Math.nextDown(10.0), 20, hit));
+        assertFalse(si.occluded(ctx, 0, 0, 10, 0, 0, -1, 0, 10), "plane at tMax");
+        assertFalse(si.occluded(ctx, 0, 0, 10, 0, 0, -1, 10, 20), "plane at tMin");
+        assertTrue(si.occluded(ctx, 0, 0, 10, 0, 0, -1, Math.nextDown(10.0), Math.nextUp(10.0)));
+        // the sphere occludes, and only inside the interval
+        assertTrue(si.occluded(ctx, 5, 0, 0.5, 1, 0, 0, 0, 10));
+        assertFalse(si.occluded(ctx, 5, 0, 0.5, 1, 0, 0, 0, 4));
+        assertFalse(si.occluded(ctx, 5, 0, 0.5, -1, 0, 0, 0, 100), "behind the origin");
+        assertTrue(si.closestHit(ctx, 5, 0, 0.5, 1, 0, 0, 0, 100, hit));
+        assertEquals(Hit.SPHERE, hit.kind);
+    }
+
+    /** An occlusion query on its own (no closest-hit query first with the same ray) in both modes. */
+    @Test
+    void occlusionAloneAnswersLikeClosestHit() {
+        Random rnd = new Random(29);
+        Scene scene = wildScene(rnd, 15, 3);
+        for (int tessellate : new int[] {0, 5}) {
+            SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults().withTessellate(tessellate));
+            TraceContext a = si.newContext(), b = si.newContext();
+            Hit hit = new Hit();
+            int blocked = 0;
+            for (int r = 0; r < 800; r++) {
+                double[] ray = randomRay(rnd);
+                boolean occluded = si.occluded(a, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, 1);
+                boolean closest = si.closestHit(b, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0, 1, hit);
+                assertEquals(closest, occluded, "K = " + tessellate + " ray " + r);
+                blocked += occluded ? 1 : 0;
+            }
+            assertTrue(blocked > 50 && blocked < 750, "K = " + tessellate + ": " + blocked + " blocked");
+        }
+    }
+
+    @Test
+    void theSceneSizeIsTheControlBoxDiagonalOrOne() {
+        BezierPatch unit = new BezierPatch(1, 1, new double[] {0, 0, 0, 3, 0, 0, 0, 4, 0, 3, 4, 12});
+        assertEquals(13, SceneIntersector.build(new Scene(List.of(unit)), IntersectOptions.defaults()).sceneSize(), ROUNDING);
+        BezierPatch point = new BezierPatch(1, 1, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2});
+        assertEquals(1, SceneIntersector.build(new Scene(List.of(point)), IntersectOptions.defaults()).sceneSize(), 0);
+        Scene shapesOnly = new Scene(List.of(), List.of(), List.of(new Sphere(new Vec3(0, 0, 0), 50)));
+        assertEquals(1, SceneIntersector.build(shapesOnly, IntersectOptions.defaults()).sceneSize(), 0);
+        // the edit measures the edited scene
+        SceneIntersector si = SceneIntersector.build(new Scene(List.of(unit)), IntersectOptions.defaults());
+        assertEquals(26, si.withPatch(0, unit.withPoint(1, 1, 6, 8, 24)).sceneSize(), ROUNDING);
+    }
+
+    @Test
+    void theStatisticsDescribeTheBuild() {
+        Scene teapot = org.beziertracer.model.io.Models.teapot();
+        for (IntersectOptions io : List.of(IntersectOptions.defaults(), IntersectOptions.defaults().withTessellate(3))) {
+            long before = System.nanoTime();
+            SceneIntersector si = SceneIntersector.build(teapot, io);
+            double wallMillis = (System.nanoTime() - before) / 1e6;
+            assertSame(io, si.options());
+            assertTrue(si.buildMillis() > 0 && si.buildMillis() <= wallMillis, si.buildMillis() + " of " + wallMillis);
+            assertTrue(si.nodeCount() >= 2 * si.primitiveCount() / io.bvhOptions().maxLeafSize() - 1, "nodes " + si.nodeCount());
+            assertTrue(si.depth() > 1 && si.depth() < si.nodeCount(), "depth " + si.depth());
+            assertTrue(si.accelBytes() >= 32L * si.nodeCount(), "accel bytes " + si.accelBytes());
+            assertEquals(si.leaves.bytes(), si.leafBytes());
+            assertTrue(si.leafBytes() > 8L * 3 * si.primitiveCount(), "leaf bytes " + si.leafBytes());
+            before = System.nanoTime();
+            SceneIntersector edited = si.withPatch(0, teapot.patches().get(0).withPoint(1, 1, 0, 0, 50));
+            wallMillis = (System.nanoTime() - before) / 1e6;
+            assertTrue(edited.buildMillis() > 0 && edited.buildMillis() <= wallMillis, edited.buildMillis() + " of " + wallMillis);
+        }
+    }
+
+    @Test
+    void aSceneThatWouldNotFitInTheHeapIsRefusedBeforeItIsBuilt() {
+        Scene teapot = org.beziertracer.model.io.Models.teapot();
+        String message = org.beziertracer.UserMessages.of(IllegalArgumentException.class,
+                () -> SceneIntersector.build(teapot, IntersectOptions.defaults().withTessellate(1024)));
+        assertTrue(message.startsWith("32 patches tessellated 1024x1024"), message);
+    }
+
+    /**
+     * A context grows its traversal stack to the BVH it is given: one whose stack is smaller than
+     * the teapot's BVH needs (as if it had served only shallower trees; a real BVH that deep
+     * would need more than 2^128 leaves or a degenerate build) answers both queries.
+     */
+    @Test
+    void aContextWithATooSmallStackGrowsItForTheBvh() {
+        SceneIntersector si = SceneIntersector.build(org.beziertracer.model.io.Models.teapot(), IntersectOptions.defaults());
+        Hit hit = new Hit(), expected = new Hit();
+        assertTrue(si.closestHit(si.newContext(), 0, 0, 220, 0.01, 0.02, -1, 0, Double.POSITIVE_INFINITY, expected));
+        TraceContext ctx = si.newContext();
+        ctx.stack = new int[1];
+        assertTrue(si.closestHit(ctx, 0, 0, 220, 0.01, 0.02, -1, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(expected.t, hit.t, 0);
+        assertTrue(ctx.stack.length >= 2 * si.depth());
+        ctx.stack = new int[1];
+        assertTrue(si.occluded(ctx, 0, 0, 220, 0.01, 0.02, -1, 0, Double.POSITIVE_INFINITY));
+        assertTrue(ctx.stack.length >= 2 * si.depth());
+    }
+
+    /** Edits that change the number of leaves rebuild the BVH; with the BVH off the list is rebuilt. */
+    @Test
+    void editsThatChangeTheLeafCountOrHaveNoBvhAnswerLikeARebuild() {
+        Random rnd = new Random(31);
+        Scene scene = wildScene(rnd, 10, 3);
+        for (IntersectOptions io : List.of(IntersectOptions.defaults(), IntersectOptions.defaults().withBvh(false))) {
+            SceneIntersector si = SceneIntersector.build(scene, io);
+            // a flat bilinear patch needs one leaf; the wild patch it replaces needed several
+            int index = 0;
+            while (io.bvh() && si.leaves.leafCount(index) == 1) {
+                index++;
+            }
+            BezierPatch flat = new BezierPatch(1, 1, new double[] {0, 0, 3, 8, 0, 3, 0, 8, 3, 8, 8, 3});
+            SceneIntersector edited = si.withPatch(index, flat);
+            SceneIntersector rebuilt = SceneIntersector.build(scene.withPatch(index, flat), io);
+            assertEquals(rebuilt.primitiveCount(), edited.primitiveCount());
+            if (io.bvh()) {
+                assertTrue(edited.primitiveCount() < si.primitiveCount(), "fewer leaves");
+            }
+            assertTrue(sameAnswers(edited, rebuilt, rnd) > 100);
+        }
+    }
 }
