@@ -160,9 +160,10 @@ public final class PatchSplitter {
          * growing to {@code 2^maxDepthFor}. Below bicubic the flatness also counts the corner twist
          * ({@link NetMeasures#twist}): a degree-1 net never deviates from its own bilinear patch, so
          * a big twisted bilinear (or biquadratic) patch was kept whole, and the solvers then had no
-         * single-root leaf and no good Newton start on it (wavy2 frame 41 % and wavy3 16 % less CPU
-         * with the twist; at degree 3 and above it split the tuned leaves further and cost 11–12 %
-         * on the curved and wavy10 frames, so there it is left out).
+         * single-root leaf and no good Newton start on it (CPU per wavy-grid frame, A/B: degree 2
+         * 80–89 ms against 93–96; degree 1 61–69 ms in every run, where the whole-patch leaf took
+         * 60–66 or, in 3 runs of 7, 127–139; at degree 3 and above the twist split the tuned leaves
+         * further and cost 11–12 % on the curved and wavy10 frames, so there it is left out).
          */
         private boolean done(double[] xyz, int depth, int trimState) {
             if (!options.enabled() || depth >= maxDepth) {
