@@ -3,7 +3,7 @@
 # another, and writes docs/perf/report.md (stamped with date, commit, machine, JDK and load) with
 # its plots in docs/perf/report-*.png and the JMH JSON in bench/results/report/.
 #
-#   bench/report.sh            # the whole set (about 20 minutes on 2 cores)
+#   bench/report.sh            # the whole set (about 30 minutes on 2 cores)
 #   bench/report.sh --quick    # one iteration each (a smoke run: the numbers mean little)
 #
 # Run it on a quiet machine; the load average at start and end is written into the report.
@@ -31,6 +31,7 @@ sets=(
   "kernel|KernelBench|de Casteljau kernel by degree|"
   "build|SceneBuildBench -p model=teapots3200,teapots32000,body100000,grid10|Split + BVH build, and an edit|"
   "frame|FrameBench -p threads=2|Frame 800x600, 1 spp, Phong + shadows (median, min..p90)|"
+  "degree|DegreeSweep|Cost versus degree: the wavy grid of degree 1..15, exact and tessellated at equal accuracy|"
 )
 for s in "${sets[@]}"; do
   IFS='|' read -r name selector title opts <<<"$s"
@@ -58,6 +59,15 @@ load_end=$(cut -d' ' -f1-3 /proc/loadavg)
   echo
   for s in "${sets[@]}"; do
     IFS='|' read -r name selector title opts <<<"$s"
+    if [ "$name" = degree ]; then
+      echo "## $title"
+      echo
+      java -cp "$jar" org.beziertracer.bench.report.DegreeCurve "$out/$name.json" "docs/perf/report-$name.png"
+      echo
+      echo "![$name](report-$name.png)"
+      echo
+      continue
+    fi
     # shellcheck disable=SC2086
     java -cp "$jar" org.beziertracer.bench.report.Plots $opts --title "$title" "$out/$name.json" "docs/perf/report-$name.png" >&2
     echo "## $title"

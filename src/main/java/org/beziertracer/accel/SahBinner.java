@@ -10,9 +10,9 @@ import static org.beziertracer.accel.BvhBuild.setEmpty;
 import java.util.Arrays;
 
 /**
- * One node's split for {@link BinnedSahBuilder}: bins the centroids along the axis of their widest
- * extent (Wald 2007 bins all three; one axis costs a third of the binning for trees about 1–2 %
- * dearer in SAH cost on the teapot and on 100 teapots), sweeps the bins for the cheapest SAH border, partitions the node's primitive indices and
+ * One node's split for {@link BinnedSahBuilder}: bins the centroids along all three axes (Wald
+ * 2007), or in big builds ({@link BinnedSahBuilder#ALL_AXES_PRIMS}) along the axis of their widest
+ * extent only (a third of the binning for trees about 1–2 % dearer in SAH cost), sweeps the bins for the cheapest SAH border, partitions the node's primitive indices and
  * writes the children's boxes. Scratch of one build task; not thread-safe.
  */
 final class SahBinner {
@@ -65,7 +65,7 @@ final class SahBinner {
             float extent = cbox[3 + a] - cbox[a];
             float s = bins / extent;
             cmin[a] = cbox[a];
-            scale[a] = a == widest && extent > 0 && Float.isFinite(s) ? s : 0;
+            scale[a] = (b.allAxes || a == widest) && extent > 0 && Float.isFinite(s) ? s : 0;
             any |= scale[a] > 0;
         }
         if (!any) {

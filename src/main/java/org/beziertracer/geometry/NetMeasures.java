@@ -75,4 +75,19 @@ public final class NetMeasures {
         }
         return Math.sqrt(maxSq);
     }
+
+    /**
+     * Length of the corner points' twist {@code T = P00 − Pn0 − P0m + Pnm} of a 3-D net. The
+     * bilinear patch through the corners is the parallelogram spanned at their centroid plus
+     * {@code (u − ½)(v − ½) T}, so it lies within {@code |T| / 4} of that plane parallelogram, and
+     * the surface within {@link #flatness} {@code + |T| / 4}.
+     */
+    public static double twist(double[] net, int off, int n, int m) {
+        int row = 3 * (n + 1);
+        int c00 = off, cn0 = off + 3 * n, c0m = off + m * row, cnm = c0m + 3 * n;
+        double x = net[c00] - net[cn0] - net[c0m] + net[cnm];
+        double y = net[c00 + 1] - net[cn0 + 1] - net[c0m + 1] + net[cnm + 1];
+        double z = net[c00 + 2] - net[cn0 + 2] - net[c0m + 2] + net[cnm + 2];
+        return Math.sqrt(x * x + y * y + z * z);
+    }
 }

@@ -157,7 +157,13 @@ public final class PatchSplitter {
          * {@link SplitOptions#maxDepthFor}); past the base cap {@link SplitOptions#maxDepth} only a
          * piece within {@value #PAST_CAP_FLATNESS} times the base tolerance of flat is refined on,
          * so a net far from flat (a random one) stays near the base cap's piece count instead of
-         * growing to {@code 2^maxDepthFor}.
+         * growing to {@code 2^maxDepthFor}. Below bicubic the flatness also counts the corner twist
+         * ({@link NetMeasures#twist}): a degree-1 net never deviates from its own bilinear patch, so
+         * a big twisted bilinear (or biquadratic) patch was kept whole, and the solvers then had no
+         * single-root leaf and no good Newton start on it (CPU per wavy-grid frame, A/B: degree 2
+         * 80–89 ms against 93–96; degree 1 61–69 ms in every run, where the whole-patch leaf took
+         * 60–66 or, in 3 runs of 7, 127–139; at degree 3 and above the twist split the tuned leaves
+         * further and cost 11–12 % on the curved and wavy10 frames, so there it is left out).
          */
         private boolean done(double[] xyz, int depth, int trimState) {
             if (!options.enabled() || depth >= maxDepth) {
@@ -173,7 +179,7 @@ public final class PatchSplitter {
             if (size < minSize) {
                 return true;
             }
-            double f = NetMeasures.flatness(xyz, 0, n, m);
+            double f = flatness(xyz, 0, n, m);
             if (pastBaseCap) {
                 return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
             }
@@ -198,6 +204,16 @@ public final class PatchSplitter {
             return trim.classify(domain.u0() + su * (u0 - gu), domain.u0() + su * (u1 + gu),
                     domain.v0() + sv * (v0 - gv), domain.v0() + sv * (v1 + gv), trimScratch);
         }
+    }
+
+    /**
+     * The split's flatness of a 3-D net: {@link NetMeasures#flatness}, plus a quarter of the
+     * corner twist ({@link NetMeasures#twist}) below bicubic — then a bound on the distance to the
+     * corners' plane parallelogram (see {@link #split}'s leaf rule).
+     */
+    static double flatness(double[] net, int off, int n, int m) {
+        double f = NetMeasures.flatness(net, off, n, m);
+        return Math.max(n, m) <= 2 ? f + 0.25 * NetMeasures.twist(net, off, n, m) : f;
     }
 
     /** Largest control-polygon length over the rows (along u) or the columns (along v). */

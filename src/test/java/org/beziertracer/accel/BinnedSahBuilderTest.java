@@ -119,6 +119,30 @@ class BinnedSahBuilderTest {
         }
     }
 
+    /**
+     * Two thin layers of small boxes, 10 apart in y, each spread 100 wide in x: the widest centroid
+     * axis is x, but the cheap root split separates the layers along y. A build of up to
+     * {@link BinnedSahBuilder#ALL_AXES_PRIMS} primitives bins every axis and finds it (the root's
+     * children do not overlap in y); a bigger build bins the widest axis only and splits in x.
+     */
+    @Test
+    void smallBuildsBinEveryAxisAndBigOnesTheWidest() {
+        for (int n : new int[] {64, 1000, BinnedSahBuilder.ALL_AXES_PRIMS, BinnedSahBuilder.ALL_AXES_PRIMS + 2}) {
+            Random rnd = new Random(n);
+            double[] bounds = new double[6 * n];
+            for (int p = 0; p < n; p++) {
+                double x = 100 * rnd.nextDouble(), y = (p % 2) * 10 + 0.1 * rnd.nextDouble(), z = rnd.nextDouble();
+                double[] box = {x, y, z, x + 0.01, y + 0.01, z + 0.01};
+                System.arraycopy(box, 0, bounds, 6 * p, 6);
+            }
+            Bvh bvh = Bvh.build(bounds, n, BvhOptions.defaults());
+            int left = bvh.nodeLeftFirst(0);
+            Aabb a = bvh.nodeBounds(left), b = bvh.nodeBounds(left + 1);
+            boolean apartInY = a.max().y() < b.min().y() || b.max().y() < a.min().y();
+            assertEquals(n <= BinnedSahBuilder.ALL_AXES_PRIMS, apartInY, n + " boxes: root children " + a + " and " + b);
+        }
+    }
+
     @Test
     void onePrimitiveIsASingleLeaf() {
         double[] bounds = {1, 2, 3, 4, 5, 6};

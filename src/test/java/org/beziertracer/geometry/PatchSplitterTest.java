@@ -88,7 +88,7 @@ class PatchSplitterTest {
                 int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
                 NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
                 double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-                boolean flat = NetMeasures.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
+                boolean flat = PatchSplitter.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
                 String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
                 // past the base cap, only pieces near flat by the base tolerance are split on
                 boolean baseLeaf = depth >= options.maxDepth() && !flatByBase(pieces, p, n, m, options);
@@ -104,8 +104,41 @@ class PatchSplitterTest {
             double[] net = patch.copyNet();
             NetMeasures.controlBounds(net, 0, n, m, box);
             double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-            assertTrue(NetMeasures.flatness(net, 0, n, m) > options.flatnessFor(n, m) * diagonal,
+            assertTrue(PatchSplitter.flatness(net, 0, n, m) > options.flatnessFor(n, m) * diagonal,
                     "a flat patch was split: trial " + trial);
+        }
+    }
+
+    /**
+     * A bilinear patch is its own bilinear interpolation (flatness 0), so below bicubic the split
+     * also counts the corner twist: a twisted unit square (a hyperbolic paraboloid) is split, a
+     * plane parallelogram stays whole; the twist bounds the distance from
+     * the corners' parallelogram. From degree 3 on, the measure is the plain flatness.
+     */
+    @Test
+    void belowBicubicTheCornerTwistCountsAsNonFlat() {
+        SplitOptions options = SplitOptions.defaults();
+        double[] saddle = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0.5};
+        assertTrue(PatchSplitter.split(new BezierPatch(1, 1, saddle), options).count() > 1, "twisted bilinear kept whole");
+        double[] parallelogram = {0, 0, 0, 1, 0, 0.2, 0.3, 1, 0.1, 1.3, 1, 0.3};
+        assertEquals(1, PatchSplitter.split(new BezierPatch(1, 1, parallelogram), options).count());
+        assertEquals(0.125, PatchSplitter.flatness(saddle, 0, 1, 1), 1e-15);
+        // Every point (u, v, uv/2) of the saddle lies within that bound of the corners' plane
+        // through their centroid (0.5, 0.5, 0.125), normal (-0.25, -0.25, 1)
+        double nl = Math.sqrt(0.0625 + 0.0625 + 1);
+        for (int i = 0; i <= 10; i++) {
+            for (int j = 0; j <= 10; j++) {
+                double u = i / 10.0, v = j / 10.0;
+                double d = Math.abs(-0.25 * (u - 0.5) - 0.25 * (v - 0.5) + (0.5 * u * v - 0.125)) / nl;
+                assertTrue(d <= PatchSplitter.flatness(saddle, 0, 1, 1) + 1e-15, "(" + u + ", " + v + ") " + d);
+            }
+        }
+        Random rnd = new Random(2019);
+        for (int trial = 0; trial < 50; trial++) {
+            int n = 3 + rnd.nextInt(5), m = 1 + rnd.nextInt(7);
+            double[] net = TestNets.randomNet(rnd, n, m, 3, 1);
+            assertEquals(NetMeasures.flatness(net, 0, n, m), PatchSplitter.flatness(net, 0, n, m), 0.0);
+            assertEquals(NetMeasures.flatness(net, 0, m, n), PatchSplitter.flatness(net, 0, m, n), 0.0);
         }
     }
 
@@ -120,7 +153,7 @@ class PatchSplitterTest {
         int off = p * pieces.netLength();
         NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
         double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-        return NetMeasures.flatness(pieces.nets(), off, n, m)
+        return PatchSplitter.flatness(pieces.nets(), off, n, m)
                 <= PatchSplitter.PAST_CAP_FLATNESS * options.flatnessTolerance() * diagonal;
     }
 

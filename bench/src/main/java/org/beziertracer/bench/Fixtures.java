@@ -25,6 +25,21 @@ public final class Fixtures {
     /** Rays per benchmark invocation (the {@code @OperationsPerInvocation} of the ray loops). */
     public static final int RAYS = 1024;
 
+    /**
+     * Eight drag steps of {@code p}'s middle control point: moved along z by 2 % of the patch's
+     * control-box diagonal times {@code sin(k π/4)}, k = 0..7 (up, back, down, back).
+     */
+    public static BezierPatch[] drags(BezierPatch p) {
+        int i = p.degreeU() / 2, j = p.degreeV() / 2;
+        double size = p.controlBounds().diagonal();
+        BezierPatch[] drags = new BezierPatch[8];
+        for (int k = 0; k < drags.length; k++) {
+            double dz = 0.02 * size * Math.sin(k * Math.PI / 4);
+            drags[k] = p.withPoint(i, j, p.get(i, j, 0), p.get(i, j, 1), p.get(i, j, 2) + dz);
+        }
+        return drags;
+    }
+
     /** The first {@code count} patches of the teapot, or {@code count/32} teapots on a grid. */
     public static Scene teapots(int patchCount) {
         List<BezierPatch> teapot = Models.teapot().patches();

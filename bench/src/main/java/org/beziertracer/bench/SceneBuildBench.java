@@ -46,14 +46,7 @@ public class SceneBuildBench {
         scene = scene(model);
         built = SceneIntersector.build(scene, IntersectOptions.defaults());
         // A drag: the middle control point of patch 0 moved a little, back and forth
-        BezierPatch p = scene.patches().get(0);
-        int i = p.degreeU() / 2, j = p.degreeV() / 2;
-        double size = p.controlBounds().diagonal();
-        drags = new BezierPatch[8];
-        for (int k = 0; k < drags.length; k++) {
-            double dz = 0.02 * size * Math.sin(k * Math.PI / 4);
-            drags[k] = p.withPoint(i, j, p.get(i, j, 0), p.get(i, j, 1), p.get(i, j, 2) + dz);
-        }
+        drags = Fixtures.drags(scene.patches().get(0));
     }
 
     /** The scene of {@code name} (see the class comment). */

@@ -205,7 +205,7 @@ public final class Plots {
         ImageIO.write(img, "png", out.toFile());
     }
 
-    private static double niceStep(double raw) {
+    static double niceStep(double raw) {
         double p = Math.pow(10, Math.floor(Math.log10(raw)));
         double f = raw / p;
         return (f < 1.5 ? 1 : f < 3 ? 2 : f < 7 ? 5 : 10) * p;
