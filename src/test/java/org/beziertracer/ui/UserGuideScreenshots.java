@@ -40,6 +40,7 @@ class UserGuideScreenshots {
             modelShots(d, dir);
             editingShots(d, dir);
             lightShot(d, dir);
+            differenceShot(d, dir);
             exportDialogShot(d, dir);
         } finally {
             d.close();
@@ -131,6 +132,21 @@ class UserGuideScreenshots {
         d.mouseAway();
         shot(d, dir, "light.png");
         GuiDriver.onEdt(() -> d.app.settings().set(Toggle.SHOW_LIGHT, false));
+    }
+
+    /** View → Difference to Clipping on the teapot in the tessellated mode (K = 16). */
+    private static void differenceShot(GuiDriver d, Path dir) throws Exception {
+        open(d, "teapot");
+        d.menu("View", "polygon");
+        d.menu("View", "points");
+        d.menu("View", "differenceToClipping");
+        d.menu("Render", "tessellated");
+        d.waitFor("the difference count", () -> d.frame.statusBar().text("difference").contains("tessellated"));
+        shot(d, dir, "difference.png");
+        d.menu("Render", "tessellated");
+        d.menu("View", "differenceToClipping");
+        d.menu("View", "polygon");
+        d.menu("View", "points");
     }
 
     /** File → Export Image…'s dialog. */
