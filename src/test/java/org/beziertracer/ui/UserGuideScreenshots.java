@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Regenerates the user guide's screenshots (not a test; skipped unless asked):
- * {@code xvfb-run -a -s '-screen 0 1280x800x24' mvn -B -q test -Dtest=UserGuideScreenshots -Dscreenshots=docs/images}.
+ * {@code xvfb-run -a -s '-screen 0 1280x800x24' ./mvnw -B -q test -Dtest=UserGuideScreenshots -Dscreenshots=docs/images}.
  */
 @Tag("gui")
 class UserGuideScreenshots {
