@@ -90,4 +90,45 @@ public final class NetMeasures {
         double z = net[c00 + 2] - net[cn0 + 2] - net[c0m + 2] + net[cnm + 2];
         return Math.sqrt(x * x + y * y + z * z);
     }
+
+    /**
+     * A bound {@code M} on the second derivatives of the patch of the 3-D net: for every
+     * {@code (u,v)} in {@code [0,1]²}, {@code |S_uu|}, {@code |S_uv|} and {@code |S_vv|} are at most
+     * {@code M}, hence for any step {@code (a,b)} the Taylor remainder
+     * {@code |S(u+a,v+b) − S(u,v) − a·S_u − b·S_v| ≤ ½·M·(|a|+|b|)²} (integral form, segment inside
+     * the domain). The second derivatives are Bézier patches whose control points are
+     * {@code n(n−1)·Δ²_u P}, {@code n·m·Δ_uΔ_v P} and {@code m(m−1)·Δ²_v P} (Farin, <i>Curves and
+     * Surfaces for CAGD</i>, the derivatives of tensor-product patches), so by the convex-hull
+     * property each is at most the largest length among its control points. Rounded up a little
+     * for the rounding of the differences.
+     */
+    public static double secondDerivativeBound(double[] net, int off, int n, int m) {
+        int row = 3 * (n + 1);
+        double uu = 0, uv = 0, vv = 0;
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
+                double x, y, z;
+                if (i + 2 <= n) {
+                    x = net[p] - 2 * net[p + 3] + net[p + 6];
+                    y = net[p + 1] - 2 * net[p + 4] + net[p + 7];
+                    z = net[p + 2] - 2 * net[p + 5] + net[p + 8];
+                    uu = Math.max(uu, x * x + y * y + z * z);
+                }
+                if (j + 2 <= m) {
+                    x = net[p] - 2 * net[p + row] + net[p + 2 * row];
+                    y = net[p + 1] - 2 * net[p + row + 1] + net[p + 2 * row + 1];
+                    z = net[p + 2] - 2 * net[p + row + 2] + net[p + 2 * row + 2];
+                    vv = Math.max(vv, x * x + y * y + z * z);
+                }
+                if (i < n && j < m) {
+                    x = net[p] - net[p + 3] - net[p + row] + net[p + row + 3];
+                    y = net[p + 1] - net[p + 4] - net[p + row + 1] + net[p + row + 4];
+                    z = net[p + 2] - net[p + 5] - net[p + row + 2] + net[p + row + 5];
+                    uv = Math.max(uv, x * x + y * y + z * z);
+                }
+            }
+        }
+        double bound = Math.max(Math.max(n * (n - 1) * Math.sqrt(uu), m * (m - 1) * Math.sqrt(vv)), n * m * Math.sqrt(uv));
+        return bound * (1 + 1e-9) + 1e-300;
+    }
 }

@@ -62,8 +62,8 @@ public final class SubPatchTable {
     public static final int LEAF_BUDGET = 1 << 17;
     /** Retained bytes per leaf besides its net: parent, degrees, net offset, box, diagonal, uniqueness. */
     static final int LEAF_BYTES = 4 + 2 + 4 + 4 * 4 + 8 + HodographBounds.STRIDE * 8;
-    /** Retained bytes per patch besides its net: offsets, degrees, first leaf, squared extent, dim, domain. */
-    static final int PATCH_BYTES = 4 + 4 + 4 + 4 + 8 + 4 + 4 * 8;
+    /** Retained bytes per patch besides its net: offsets, degrees, first leaf, squared extent, dim, curvature, domain. */
+    static final int PATCH_BYTES = 4 + 4 + 4 + 4 + 8 + 4 + 4 + 4 * 8;
 
     private final List<BezierPatch> patches;
     private final SplitOptions options;
@@ -94,6 +94,12 @@ public final class SubPatchTable {
     public final double[] uniqueness;
     /** {@link PatchNormals#squaredExtent} of patch {@code k}'s net (for the normal at a hit). */
     public final double[] patchSquaredExtent;
+    /**
+     * Per patch a bound on its second derivatives ({@link NetMeasures#secondDerivativeBound}, as
+     * a float rounded up), with which a Newton step near a root is taken without evaluating the
+     * patch again; {@code +∞} for a rational patch (no such bound is kept for it).
+     */
+    public final float[] patchCurvature;
     /** 3: patch {@code k}'s net in {@link #patchNets} is Euclidean; 4: homogeneous (a rational patch). */
     public final int[] patchDim;
     /**
@@ -132,6 +138,7 @@ public final class SubPatchTable {
         patchDegreeV = new int[patchCount];
         patchSquaredExtent = new double[patchCount];
         patchDim = new int[patchCount];
+        patchCurvature = new float[patchCount];
         patchDomain = new double[4 * patchCount];
         patchTrim = trims;
         weights = rational ? new double[netDoubles / 3] : null;
@@ -236,6 +243,8 @@ public final class SubPatchTable {
         patchDegreeV[k] = m;
         patchDim[k] = dim;
         patchSquaredExtent[k] = PatchNormals.squaredExtent(nets, off, n, m, dim);
+        patchCurvature[k] = dim == 3 ? Math.nextUp((float) NetMeasures.secondDerivativeBound(nets, off, n, m))
+                : Float.POSITIVE_INFINITY;
         PatchDomain d = patch.domain();
         patchDomain[4 * k] = d.u0();
         patchDomain[4 * k + 1] = d.u1();
@@ -394,6 +403,7 @@ public final class SubPatchTable {
             t.patchDegreeV[k] = patchDegreeV[k];
             t.patchSquaredExtent[k] = patchSquaredExtent[k];
             t.patchDim[k] = patchDim[k];
+            t.patchCurvature[k] = patchCurvature[k];
             System.arraycopy(patchDomain, 4 * k, t.patchDomain, 4 * k, 4);
             if (e < edited.length && edited[e] == k) {
                 shiftL += dLeaves[e];
@@ -482,6 +492,7 @@ public final class SubPatchTable {
                 + HeapBytes.of(nets) + HeapBytes.of(boxes) + HeapBytes.of(diagonal) + HeapBytes.of(firstOf)
                 + HeapBytes.of(patchNetOffset) + HeapBytes.of(patchDegreeU) + HeapBytes.of(patchDegreeV)
                 + HeapBytes.of(uniqueness) + HeapBytes.of(patchSquaredExtent) + HeapBytes.of(patchDim)
+                + HeapBytes.of(patchCurvature)
                 + HeapBytes.of(patchDomain) + HeapBytes.of(weights) + HeapBytes.of(trimTest);
     }
 

@@ -64,15 +64,33 @@ final class BezierClipper {
     /**
      * Nearest root of sub-patch {@code s} with {@code tMin < t < tMax}; on success stores it in
      * {@code ctx.rootT/rootU/rootV} (parent-patch parameters) and returns true.
+     *
+     * @param records the table's {@link NewtonLeafRecords}, or null: with them a ray that misses
+     *                a leaf's enclosure (its parallelogram grown by R, {@link NewtonSolver#start})
+     *                is rejected before anything else, and Newton starts where the ray crosses
+     *                that parallelogram; without them it starts at the parallelogram of the leaf's
+     *                corners
      */
-    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax,
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, int s, double tMin, double tMax,
                              double tolerance) {
+        if (records == null) {
+            cornerStart(ctx, tab, s);
+        } else if (NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance)
+                == NewtonSolver.MISS) {
+            return false; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
+        }
+        double su = ctx.clip[0], sv = ctx.clip[1];
         boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
-        if (unique && newtonFromCorners(ctx, tab, s, tab.parent[s], tolerance)) {
+        if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
         return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
+    }
+
+    /** {@link #intersect} without records: every leaf is searched, Newton starting at its corners' parallelogram. */
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tMax, double tolerance) {
+        return intersect(ctx, tab, null, s, tMin, tMax, tolerance);
     }
 
     /**
@@ -318,13 +336,28 @@ final class BezierClipper {
     }
 
     /**
-     * Newton on the parent patch {@code k}, confined to the parameter box of leaf {@code s}, from
-     * the point where the ray meets the parallelogram spanned by the leaf's corner points at
-     * their centroid, in ray space (one Newton step on the corners' bilinear patch from the leaf
-     * centre; only the four corners are projected). True when it converged, the root then
-     * refined as in {@link #newtonInPiece}.
+     * Newton on leaf {@code s}'s parent patch from the leaf's point {@code (su, sv)} (leaf
+     * parameters), iterates confined to the leaf's parameter box, then {@link RayPatchNewton#refine};
+     * true when it converged (the root in {@code ctx.root*}).
      */
-    static boolean newtonFromCorners(TraceContext ctx, SubPatchTable tab, int s, int k, double tolerance) {
+    static boolean newtonFrom(TraceContext ctx, SubPatchTable tab, int s, double su, double sv, double tolerance) {
+        int k = tab.parent[s];
+        float[] bx = tab.boxes;
+        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
+        if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * su, v0 + (v1 - v0) * sv, NEWTON_STEPS,
+                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
+            return false;
+        }
+        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
+        return true;
+    }
+
+    /**
+     * The start of a leaf without records, in leaf parameters into {@code ctx.clip[0..1]}: where the
+     * ray crosses the parallelogram of the leaf's four corners (clamped to the leaf), or its centre
+     * when the ray sees that parallelogram edge-on.
+     */
+    static void cornerStart(TraceContext ctx, SubPatchTable tab, int s) {
         int n = tab.degreeU[s], m = tab.degreeV[s];
         double[] c = ctx.corners;
         ctx.projectCorners(tab.nets, tab.netOffset[s], n, m, c);
@@ -337,14 +370,8 @@ final class BezierClipper {
             u = Math.min(1, Math.max(0, u + (fx * cy - fy * cx) / det));
             v = Math.min(1, Math.max(0, v + (ey * cx - ex * cy) / det));
         }
-        float[] bx = tab.boxes;
-        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
-        if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * u, v0 + (v1 - v0) * v, NEWTON_STEPS,
-                u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
-            return false;
-        }
-        RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
-        return true;
+        ctx.clip[0] = u;
+        ctx.clip[1] = v;
     }
 
     /** Diagonal of the leaf's control box. */

@@ -1,21 +1,43 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.math.HeapBytes;
 
-/** Sub-patch leaves solved by Bézier clipping ({@link BezierClipper}): exact, the default. */
+/**
+ * Sub-patch leaves solved by Bézier clipping ({@link BezierClipper}): exact, the default. Up to
+ * {@link #RECORD_LEAVES} leaves, each also gets its {@link NewtonLeafRecords} (64 bytes): the
+ * enclosure that rejects most leaves a ray misses before any evaluation, and Newton's start. A
+ * bigger table (a model of tens of thousands of patches, issue [6]'s memory budget of about 2 KB a
+ * patch) goes without and searches every leaf its ray reaches.
+ */
 final class ClippingLeaves extends PatchLeaves {
+
+    /** Most leaves that get records (8 MB of them). */
+    static final int RECORD_LEAVES = 1 << 17;
+
+    /** Null above {@link #RECORD_LEAVES} leaves. */
+    private final float[] records;
 
     ClippingLeaves(SubPatchTable table, double tolerance) {
         super(table, tolerance);
+        this.records = hasRecords(table.count) ? NewtonLeafRecords.build(table) : null;
+    }
+
+    /** True when a table of {@code leaves} leaves gets records. */
+    static boolean hasRecords(long leaves) {
+        return leaves <= RECORD_LEAVES;
     }
 
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        return BezierClipper.intersect(ctx, table, s, tMin, tMax, tolerance);
+        return BezierClipper.intersect(ctx, table, records, s, tMin, tMax, tolerance);
     }
 
     @Override
     ClippingLeaves with(SubPatchTable edited, double editedTolerance) {
         return new ClippingLeaves(edited, editedTolerance);
     }
+
+    @Override
+    long solverBytes() { return HeapBytes.of(records); }
 }

@@ -38,7 +38,9 @@ public final class HeapBudget {
                     + Bvh.estimateBytes(triangles);
         }
         SubPatchTable.Estimate table = SubPatchTable.estimate(patches, options.effectiveSplit());
-        long solverBytes = options.method() == Method.NEWTON ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
+        boolean records = options.method() == Method.NEWTON
+                || options.method() == Method.CLIPPING && ClippingLeaves.hasRecords(table.leaves());
+        long solverBytes = records ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
         // The table, the leaves' boxes handed to the BVH build, the build itself and a solver's per-leaf records
         return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + solverBytes;
     }

@@ -1,5 +1,7 @@
 package org.beziertracer.intersect;
 
+import java.util.stream.IntStream;
+
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
@@ -48,15 +50,28 @@ final class NewtonLeafRecords {
      */
     static float[] build(SubPatchTable table) {
         float[] rec = new float[STRIDE * table.count];
+        int chunks = (table.count + CHUNK - 1) / CHUNK;
+        if (chunks > 1) {
+            IntStream.range(0, chunks).parallel().forEach(c -> fill(table, rec, c * CHUNK, Math.min(table.count, (c + 1) * CHUNK)));
+        } else {
+            fill(table, rec, 0, table.count);
+        }
+        return rec;
+    }
+
+    /** Leaves a task of the parallel {@link #build} fills. */
+    private static final int CHUNK = 4096;
+
+    /** The records of leaves {@code from .. to-1}. */
+    private static void fill(SubPatchTable table, float[] rec, int from, int to) {
         double[] frame = new double[STRIDE];
-        for (int s = 0; s < table.count; s++) {
+        float[] box = table.boxes;
+        for (int s = from; s < to; s++) {
             frame(table.nets, table.netOffset[s], table.degreeU[s], table.degreeV[s],
                     table.patchDim[table.parent[s]] != 3, frame, 0);
-            float[] box = table.boxes;
             store(frame, box[4 * s], box[4 * s + 1] - box[4 * s], box[4 * s + 2], box[4 * s + 3] - box[4 * s + 2],
                     rec, STRIDE * s);
         }
-        return rec;
     }
 
     /** The record of a whole net, in its own parameters (box {@code [0,1]²}), from its {@link #frame}. */

@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.math.HeapBytes;
 
 /**
  * Sub-patch leaves solved by Newton iteration alone ({@link NewtonSolver}), over the Newton
@@ -25,4 +26,7 @@ final class NewtonLeaves extends PatchLeaves {
     NewtonLeaves with(SubPatchTable edited, double editedTolerance) {
         return new NewtonLeaves(edited, editedTolerance);
     }
+
+    @Override
+    long solverBytes() { return HeapBytes.of(records); }
 }

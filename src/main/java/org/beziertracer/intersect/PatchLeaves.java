@@ -135,7 +135,10 @@ abstract class PatchLeaves implements Leaves {
     }
 
     @Override
-    public final long bytes() { return table.bytes(); }
+    public final long bytes() { return table.bytes() + solverBytes(); }
+
+    /** Heap held by the solver's own per-leaf data beyond the table; none by default. */
+    long solverBytes() { return 0; }
 
     @Override
     public final int count() { return table.count; }

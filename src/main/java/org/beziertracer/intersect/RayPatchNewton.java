@@ -17,6 +17,11 @@ final class RayPatchNewton {
 
     /** Outcome codes of {@link #solve}. */
     static final int CONVERGED = 0, SINGULAR = 1, DIVERGED = 2;
+    /**
+     * A step is taken unevaluated ({@link #extrapolate}) when the bound on its second-order error
+     * is within this fraction of the residual tolerance: the level {@link #refine} reaches.
+     */
+    static final double EXTRAPOLATED = 1e-3;
 
     /**
      * Iterates from {@code (u,v)} on patch {@code k}; on return {@code ctx.rootU/rootV/rootT}
@@ -34,6 +39,7 @@ final class RayPatchNewton {
         int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
         int dim = table.patchDim[k];
         double[] e = ctx.eval;
+        double curvature = table.patchCurvature[k];
         ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
         for (int step = 0; step <= maxSteps; step++) {
             evaluate(ctx, net, off, n, m, dim, u, v);
@@ -55,6 +61,9 @@ final class RayPatchNewton {
             }
             double du = (b * f2 - d * f1) / det;
             double dv = (c * f1 - a * f2) / det;
+            if (extrapolate(ctx, curvature, du, dv, tolerance, uLo, uHi, vLo, vHi)) {
+                return CONVERGED;
+            }
             if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15
                     && Math.max(Math.abs(f1), Math.abs(f2)) <= 1e-3 * tolerance) {
                 // Already a root to rounding (as in refine): the step could not move the point
@@ -96,6 +105,42 @@ final class RayPatchNewton {
     }
 
     /**
+     * Takes the Newton step {@code (du, dv)} from the last evaluation without evaluating again,
+     * when that is as exact as an evaluation: the linear model {@code F + J·Δ} is zero there, and
+     * the patch departs from it by at most {@code ½·M·(|du|+|dv|)²} ({@code M} the patch's
+     * {@link SubPatchTable#patchCurvature}, {@link org.beziertracer.geometry.NetMeasures#secondDerivativeBound}).
+     * When that bound is within {@link #EXTRAPOLATED} of the tolerance and the step stays in the
+     * box, the root moves by the step and the point by {@code Su·du + Sv·dv} (so its t follows),
+     * the derivatives in {@code ctx.eval} are kept (they move by at most {@code M·(|du|+|dv|)},
+     * which the normal at the hit does not see), and the result is true. Rational patches carry
+     * {@code M = +∞} and never extrapolate.
+     */
+    static boolean extrapolate(TraceContext ctx, double curvature, double du, double dv, double tolerance,
+                               double uLo, double uHi, double vLo, double vHi) {
+        double reach = Math.abs(du) + Math.abs(dv);
+        if (!(0.5 * curvature * reach * reach <= EXTRAPOLATED * tolerance)) {
+            return false;
+        }
+        double u = ctx.rootU + du, v = ctx.rootV + dv;
+        if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
+            return false;
+        }
+        double[] e = ctx.eval;
+        e[0] += e[3] * du + e[6] * dv;
+        e[1] += e[4] * du + e[7] * dv;
+        e[2] += e[5] * du + e[8] * dv;
+        double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
+        ctx.residual1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+        ctx.residual2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        ctx.rootU = u;
+        ctx.rootV = v;
+        ctx.evalU = u;
+        ctx.evalV = v;
+        ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+        return true;
+    }
+
+    /**
      * One more Newton step from a converged {@link #solve} (whose last evaluation, at
      * {@code ctx.rootU/rootV}, is still in {@code ctx.eval}): near a simple root Newton converges
      * quadratically, so a root accepted at the residual tolerance becomes exact to rounding. The
@@ -120,8 +165,12 @@ final class RayPatchNewton {
         if (!(Math.abs(det) > 1e-300) || Math.abs(det) <= 1e-14 * (Math.abs(a * d) + Math.abs(b * c))) {
             return;
         }
-        double u = ctx.rootU + (b * f2 - d * f1) / det;
-        double v = ctx.rootV + (c * f1 - a * f2) / det;
+        double du = (b * f2 - d * f1) / det, dv = (c * f1 - a * f2) / det;
+        if (extrapolate(ctx, table.patchCurvature[k], du, dv, tolerance, uLo, uHi, vLo, vHi)) {
+            return;
+        }
+        double u = ctx.rootU + du;
+        double v = ctx.rootV + dv;
         if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
             return;
         }

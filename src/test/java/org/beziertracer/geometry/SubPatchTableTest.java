@@ -121,7 +121,7 @@ class SubPatchTableTest {
         long expected = HeapBytes.array(tab.count, 4) * 2 + HeapBytes.array(tab.count, 1) * 2
                 + HeapBytes.array(4L * tab.count, 4) + HeapBytes.array(tab.count, 8)
                 + HeapBytes.array((long) HodographBounds.STRIDE * tab.count, 8) + HeapBytes.array(tab.nets.length, 8)
-                + HeapBytes.array(tab.patchCount() + 1, 4) + 4 * HeapBytes.array(tab.patchCount(), 4)
+                + HeapBytes.array(tab.patchCount() + 1, 4) + 5 * HeapBytes.array(tab.patchCount(), 4)
                 + HeapBytes.array(tab.patchCount(), 8) + HeapBytes.array(4L * tab.patchCount(), 8);
         assertEquals(expected, tab.bytes());
         long perLeaf = (tab.bytes() - HeapBytes.array(tab.nets.length, 8)) / tab.count;

@@ -475,7 +475,8 @@ class ClippingStepsTest {
                 double x = 4 * Math.pow(us - 0.5, 3), y = 4 * Math.pow(vs - 0.5, 3);
                 ctx.setRay(x, y, 1, 0, 0, -2);
                 String where = "(u*, v*) = (" + us + ", " + vs + ")";
-                assertTrue(BezierClipper.newtonFromCorners(ctx, tab, 0, 0, 1e-13), where);
+                BezierClipper.cornerStart(ctx, tab, 0);
+                assertTrue(BezierClipper.newtonFrom(ctx, tab, 0, ctx.clip[0], ctx.clip[1], 1e-13), where);
                 assertEquals(us, ctx.rootU, 1e-9, where);
                 assertEquals(vs, ctx.rootV, 1e-9, where);
                 assertEquals(0.5, ctx.rootT, 1e-12, where);

@@ -136,12 +136,16 @@ class HeapBudgetTest {
         }
         IntersectOptions clipping = IntersectOptions.defaults();
         SubPatchTable.Estimate table = SubPatchTable.estimate(teapot.patches(), clipping.split());
-        assertEquals(table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()),
+        // Clipping below ClippingLeaves.RECORD_LEAVES and Newton add their per-leaf records (STRIDE floats each)
+        long records = 4L * NewtonLeafRecords.STRIDE * table.leaves();
+        assertTrue(ClippingLeaves.hasRecords(table.leaves()));
+        assertEquals(table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + records,
                 HeapBudget.estimateBytes(teapot, clipping));
-        // Newton over the same leaves adds its per-leaf records (STRIDE floats each)
         IntersectOptions newton = clipping.withMethod(Method.NEWTON).withSplit(clipping.split());
-        assertEquals(4L * NewtonLeafRecords.STRIDE * table.leaves(),
-                HeapBudget.estimateBytes(teapot, newton) - HeapBudget.estimateBytes(teapot, clipping));
+        assertEquals(HeapBudget.estimateBytes(teapot, clipping), HeapBudget.estimateBytes(teapot, newton));
+        // Subdivision keeps no records
+        IntersectOptions subdivision = clipping.withMethod(Method.SUBDIVISION).withSplit(clipping.split());
+        assertEquals(records, HeapBudget.estimateBytes(teapot, clipping) - HeapBudget.estimateBytes(teapot, subdivision));
     }
 
     /** The refusal names the scene's patches (and the tessellation with its triangle count). */

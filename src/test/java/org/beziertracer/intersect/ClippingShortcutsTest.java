@@ -1,0 +1,162 @@
+package org.beziertracer.intersect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.geometry.DeCasteljau;
+import org.beziertracer.geometry.SplitOptions;
+import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The two shortcuts of the clipping leaves (issue 9), each against the slow reference on seeded
+ * random patches of degree 1..15 and on the teapot, rays aimed at points of every leaf up to and
+ * on its borders (so along every border two teapot patches share) and rays through the leaves'
+ * boxes that may miss:
+ * <ul>
+ *   <li>the leaf records' enclosure rejects a leaf before any evaluation
+ *       ({@link BezierClipper#intersect} with {@link NewtonLeafRecords}): the same answer as the
+ *       search of every leaf without records, hit for hit;</li>
+ *   <li>Newton's last step taken without an evaluation when the patch's second-derivative bound
+ *       makes it exact ({@link RayPatchNewton#extrapolate}): the root is the aimed point, and the
+ *       evaluation kept for the hit is within that bound of a fresh one.</li>
+ * </ul>
+ */
+class ClippingShortcutsTest {
+
+    @Test
+    void theEnclosureRejectsOnlyLeavesWithoutARootAndTheAnswersAreTheReferencesOwn() {
+        Random rnd = new Random(9_2026_12_02L);
+        int rays = 0, hits = 0, rejected = 0;
+        for (List<BezierPatch> patches : models(rnd)) {
+            SubPatchTable table = SubPatchTable.build(patches, SplitOptions.defaults());
+            float[] records = NewtonLeafRecords.build(table);
+            double size = new Scene(patches).controlBounds().diagonal();
+            double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
+            TraceContext ctx = new TraceContext();
+            double[] e = new double[9], scratch = new double[4096];
+            for (int s = 0; s < table.count; s++) {
+                int k = table.parent[s];
+                float[] box = table.boxes;
+                for (int r = 0; r < 12; r++) {
+                    // a point of the leaf (borders included), and a ray to it from a random direction
+                    double a = r < 4 ? r % 2 : rnd.nextDouble(), b = r < 4 ? r / 2 : rnd.nextDouble();
+                    double u = box[4 * s] + a * (box[4 * s + 1] - box[4 * s]);
+                    double v = box[4 * s + 2] + b * (box[4 * s + 3] - box[4 * s + 2]);
+                    DeCasteljau.evaluateWithDerivatives(table.patchNets, table.patchNetOffset[k], table.patchDegreeU[k],
+                            table.patchDegreeV[k], u, v, e, scratch);
+                    double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+                    double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                    // every third ray is shifted off the surface by up to a tenth of the leaf: it may miss
+                    double shift = r % 3 == 2 ? 0.1 * table.diagonal[s] * rnd.nextGaussian() : 0;
+                    double ox = e[0] - 2 * size * dx / len + shift, oy = e[1] - 2 * size * dy / len, oz = e[2] - 2 * size * dz / len;
+                    ctx.setRay(ox, oy, oz, dx / len, dy / len, dz / len);
+                    boolean reference = BezierClipper.intersect(ctx, table, null, s, 0, Double.POSITIVE_INFINITY, tolerance);
+                    double tRef = ctx.rootT;
+                    boolean fast = BezierClipper.intersect(ctx, table, records, s, 0, Double.POSITIVE_INFINITY, tolerance);
+                    String where = "leaf " + s + " of " + table.count + ", ray " + r;
+                    assertEquals(reference, fast, where);
+                    if (fast) {
+                        assertEquals(tRef, ctx.rootT, 1e-9 * size, where);
+                        hits++;
+                    } else if (NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, 0,
+                            Double.POSITIVE_INFINITY, tolerance) == NewtonSolver.MISS) {
+                        rejected++;
+                    }
+                    rays++;
+                }
+            }
+        }
+        assertTrue(hits > 0.5 * rays && rejected > 0.02 * rays,
+                rays + " rays: " + hits + " hits, " + rejected + " leaves rejected by the enclosure");
+    }
+
+    @Test
+    void anUnevaluatedLastStepGivesTheAimedRootAndAnEvaluationWithinItsBound() {
+        Random rnd = new Random(20261202L);
+        int roots = 0, extrapolated = 0;
+        double[] fresh = new double[9], scratch = new double[4096];
+        for (int trial = 0; trial < 120; trial++) {
+            int n = 1 + trial % 15, m = 1 + rnd.nextInt(15);
+            BezierPatch patch = RandomPatches.heightField(rnd, n, m, 4, 0.4);
+            SubPatchTable table = SubPatchTable.build(List.of(patch), SplitOptions.defaults());
+            double size = new Scene(List.of(patch)).controlBounds().diagonal();
+            double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
+            double curvature = table.patchCurvature[0];
+            TraceContext ctx = new TraceContext();
+            for (int r = 0; r < 40; r++) {
+                double u = rnd.nextDouble(), v = rnd.nextDouble();
+                DeCasteljau.evaluateWithDerivatives(table.patchNets, 0, n, m, u, v, fresh, scratch);
+                double dx = 0.3 * rnd.nextGaussian(), dy = 0.3 * rnd.nextGaussian(), dz = -1;
+                double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                ctx.setRay(fresh[0] - 5 * dx / len, fresh[1] - 5 * dy / len, fresh[2] - 5 * dz / len, dx / len, dy / len,
+                        dz / len);
+                int s = leafOf(table, u, v);
+                float[] box = table.boxes;
+                double su = (u - box[4 * s]) / (box[4 * s + 1] - box[4 * s]) + 0.05 * rnd.nextGaussian();
+                double sv = (v - box[4 * s + 2]) / (box[4 * s + 3] - box[4 * s + 2]) + 0.05 * rnd.nextGaussian();
+                if (!BezierClipper.newtonFrom(ctx, table, s, Math.min(1, Math.max(0, su)), Math.min(1, Math.max(0, sv)),
+                        tolerance)) {
+                    continue; // a start outside the basin (the clipping search takes over); not this test's subject
+                }
+                roots++;
+                String where = "degree " + n + "x" + m + ", ray " + r;
+                assertEquals(5, ctx.rootT, 1e-9 * size, where);
+                assertEquals(u, ctx.rootU, 1e-7, where);
+                assertEquals(v, ctx.rootV, 1e-7, where);
+                assertEquals(ctx.rootU, ctx.evalU, 0, where);
+                assertEquals(ctx.rootV, ctx.evalV, 0, where);
+                double[] kept = ctx.eval;
+                DeCasteljau.evaluateWithDerivatives(table.patchNets, 0, n, m, ctx.rootU, ctx.rootV, fresh, scratch);
+                boolean same = true;
+                for (int c = 0; c < 9; c++) {
+                    same &= kept[c] == fresh[c];
+                }
+                if (!same) {
+                    extrapolated++;
+                    // position: the remainder bound was within EXTRAPOLATED × tolerance
+                    for (int c = 0; c < 3; c++) {
+                        assertEquals(fresh[c], kept[c], RayPatchNewton.EXTRAPOLATED * tolerance + 1e-14 * size, where);
+                    }
+                    // derivatives: they moved by at most M·(|du|+|dv|), where ½·M·(|du|+|dv|)² ≤ 1e-3·tolerance
+                    double moved = Math.sqrt(2 * curvature * RayPatchNewton.EXTRAPOLATED * tolerance) + 1e-12 * size;
+                    for (int c = 3; c < 9; c++) {
+                        assertEquals(fresh[c], kept[c], moved * (1 + 1e-9) + 1e-12 * Math.abs(fresh[c]), where);
+                    }
+                }
+            }
+        }
+        assertTrue(roots > 3000 && extrapolated > 0.3 * roots,
+                roots + " roots, " + extrapolated + " ended on an unevaluated step");
+    }
+
+    /** The leaf of the single-patch table that holds {@code (u, v)}. */
+    private static int leafOf(SubPatchTable table, double u, double v) {
+        for (int s = 0; s < table.count; s++) {
+            float[] b = table.boxes;
+            if (u >= b[4 * s] && u <= b[4 * s + 1] && v >= b[4 * s + 2] && v <= b[4 * s + 3]) {
+                return s;
+            }
+        }
+        throw new AssertionError("no leaf holds (" + u + ", " + v + ")");
+    }
+
+    /** Random height fields and folded nets of every degree 1..15, and the teapot. */
+    private static List<List<BezierPatch>> models(Random rnd) {
+        List<List<BezierPatch>> models = new ArrayList<>();
+        for (int n = 1; n <= 15; n++) {
+            int m = 1 + rnd.nextInt(15);
+            models.add(List.of(RandomPatches.heightField(rnd, n, m, 4, 0.5)));
+            models.add(List.of(RandomPatches.wild(rnd, n, 1 + rnd.nextInt(15), 4)));
+        }
+        models.add(Models.teapot().patches());
+        return models;
+    }
+}
