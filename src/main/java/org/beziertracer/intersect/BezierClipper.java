@@ -80,16 +80,6 @@ final class BezierClipper {
             return false; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
         }
         double su = ctx.clip[0], sv = ctx.clip[1];
-        if (ctx.predictedPatch == tab.parent[s] && ctx.hintTable == tab) {
-            // the neighbouring ray's root, moved by one unevaluated Newton step, if it lies in this leaf
-            float[] bx = tab.boxes;
-            double pu = (ctx.predictedU - bx[4 * s]) / (bx[4 * s + 1] - bx[4 * s]);
-            double pv = (ctx.predictedV - bx[4 * s + 2]) / (bx[4 * s + 3] - bx[4 * s + 2]);
-            if (pu >= 0 && pu <= 1 && pv >= 0 && pv <= 1) {
-                su = pu;
-                sv = pv;
-            }
-        }
         boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
@@ -343,34 +333,6 @@ final class BezierClipper {
         }
         RayPatchNewton.refine(ctx, tab, k, u0, u1, v0, v1, tolerance);
         return true;
-    }
-
-    /**
-     * Coherence (the issue's "start Newton at the neighbour's (u,v)"): the last closest hit's
-     * evaluation ({@link TraceContext#hintEval}, usually the neighbouring pixel's hit) gives this
-     * ray a start on the same patch without evaluating anything: one Newton step for this ray's
-     * two planes from that point, with its Jacobian. Written to {@code ctx.predictedPatch/U/V}
-     * ({@code predictedPatch = -1}: no hint from this table, or a singular Jacobian). A start only:
-     * {@link #intersect} takes it for a leaf that holds it, where its root is proven unique, so the
-     * root found from it is the one any start would find.
-     */
-    static void predictStart(TraceContext ctx, SubPatchTable tab) {
-        ctx.predictedPatch = -1;
-        if (ctx.hintTable != tab || ctx.hintPatch < 0) {
-            return;
-        }
-        double[] e = ctx.hintEval;
-        double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
-        double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz, f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
-        double a = ctx.n1x * e[3] + ctx.n1y * e[4] + ctx.n1z * e[5], b = ctx.n1x * e[6] + ctx.n1y * e[7] + ctx.n1z * e[8];
-        double c = ctx.n2x * e[3] + ctx.n2y * e[4] + ctx.n2z * e[5], d = ctx.n2x * e[6] + ctx.n2y * e[7] + ctx.n2z * e[8];
-        double det = a * d - b * c;
-        if (!(Math.abs(det) > 1e-12 * (Math.abs(a * d) + Math.abs(b * c)))) {
-            return;
-        }
-        ctx.predictedU = ctx.hintU + (b * f2 - d * f1) / det;
-        ctx.predictedV = ctx.hintV + (c * f1 - a * f2) / det;
-        ctx.predictedPatch = ctx.hintPatch;
     }
 
     /**

@@ -28,12 +28,6 @@ final class ClippingLeaves extends PatchLeaves {
         return leaves <= RECORD_LEAVES;
     }
 
-    /** Predicts this ray's start on the last hit's patch ({@link BezierClipper#predictStart}). */
-    @Override
-    public void beginRay(TraceContext ctx) {
-        BezierClipper.predictStart(ctx, table);
-    }
-
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
         return BezierClipper.intersect(ctx, table, records, s, tMin, tMax, tolerance);

@@ -68,7 +68,6 @@ abstract class PatchLeaves implements Leaves {
         ctx.best.v = ctx.rootV;
         if (ctx.evalPatch == k && ctx.evalU == ctx.rootU && ctx.evalV == ctx.rootV) {
             ctx.keepEvaluationForHit();
-            ctx.keepHint(table);
         }
         return ctx.rootT;
     }

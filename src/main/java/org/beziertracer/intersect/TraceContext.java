@@ -62,22 +62,6 @@ public final class TraceContext {
     final double[] hitEval = new double[9];
     int hitEvalPatch = -1;
     double hitEvalU, hitEvalV;
-    /**
-     * Coherence: the evaluation at the last closest hit a solver kept (S, Su, Sv of patch
-     * {@code hintPatch} of table {@code hintTable} at {@code (hintU, hintV)}; -1: none). It
-     * outlives the query, so the next ray (usually the neighbouring pixel's) can start there.
-     */
-    final double[] hintEval = new double[9];
-    Object hintTable;
-    int hintPatch = -1;
-    double hintU, hintV;
-    /**
-     * This ray's start predicted from the hint by one Newton step that needs no evaluation
-     * ({@link BezierClipper#predictStart}): patch {@code predictedPatch} (-1: none) at
-     * {@code (predictedU, predictedV)}.
-     */
-    int predictedPatch = -1;
-    double predictedU, predictedV;
     final double[] normal = new double[3];
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];
@@ -181,15 +165,6 @@ public final class TraceContext {
         hitEvalPatch = evalPatch;
         hitEvalU = evalU;
         hitEvalV = evalV;
-    }
-
-    /** Keeps the evaluation at the hit just kept ({@link #keepEvaluationForHit}) as the next ray's hint. */
-    void keepHint(Object table) {
-        System.arraycopy(eval, 0, hintEval, 0, 9);
-        hintTable = table;
-        hintPatch = evalPatch;
-        hintU = evalU;
-        hintV = evalV;
     }
 
     /** Maps {@code count} points from {@code src[srcOff..]} into ray space at {@code dest[destOff..]}. */

@@ -34,11 +34,6 @@ final class TrimmedLeaves extends PatchLeaves {
         return leaves.table.trimTest == null || leaves instanceof TrimmedLeaves ? leaves : new TrimmedLeaves(leaves);
     }
 
-    @Override
-    public void beginRay(TraceContext ctx) {
-        inner.beginRay(ctx);
-    }
-
     /**
      * A leaf wholly inside the trim region needs no test for a root in its own parameter box; but
      * a solver may return a root beyond it (Newton accepts roots in the leaf's overlapped domain,

@@ -137,69 +137,6 @@ class ClippingShortcutsTest {
                 roots + " roots, " + extrapolated + " ended on an unevaluated step");
     }
 
-    /**
-     * Coherent rays (a raster of neighbouring rays sweeping each model, across leaf and patch
-     * borders) start Newton from the previous ray's hit ({@link BezierClipper#predictStart}): every
-     * answer is the one a fresh context (no hint) gives, and most rays had a prediction.
-     */
-    @Test
-    void startsFromTheNeighboursHitGiveTheAnswersOfAFreshContext() {
-        Random rnd = new Random(1990);
-        int rays = 0, predicted = 0, hits = 0;
-        for (List<BezierPatch> patches : models(rnd)) {
-            Scene scene = new Scene(patches);
-            SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
-            double size = si.sceneSize();
-            var box = scene.controlBounds();
-            double cx = 0.5 * (box.minX() + box.maxX()), cy = 0.5 * (box.minY() + box.maxY()), cz = 0.5 * (box.minZ() + box.maxZ());
-            // an eye outside the box, looking at the centre; a 48×48 raster over the box's extent
-            double ex = rnd.nextGaussian(), ey = rnd.nextGaussian(), ez = rnd.nextGaussian();
-            double el = Math.sqrt(ex * ex + ey * ey + ez * ez);
-            double ox = cx + 2 * size * ex / el, oy = cy + 2 * size * ey / el, oz = cz + 2 * size * ez / el;
-            double[] w = {-ex / el, -ey / el, -ez / el};
-            double[] uAxis = normalized(cross(w, Math.abs(w[2]) < 0.9 ? new double[] {0, 0, 1} : new double[] {1, 0, 0}));
-            double[] vAxis = cross(w, uAxis);
-            TraceContext coherent = si.newContext(), cold = si.newContext();
-            Hit hit = new Hit(), fresh = new Hit();
-            int side = 48;
-            for (int y = 0; y < side; y++) {
-                for (int x = 0; x < side; x++) {
-                    double a = 0.6 * size * (x / (side - 1.0) - 0.5), b = 0.6 * size * (y / (side - 1.0) - 0.5);
-                    double tx = cx + a * uAxis[0] + b * vAxis[0] - ox, ty = cy + a * uAxis[1] + b * vAxis[1] - oy;
-                    double tz = cz + a * uAxis[2] + b * vAxis[2] - oz;
-                    double len = Math.sqrt(tx * tx + ty * ty + tz * tz);
-                    boolean got = si.closestHit(coherent, ox, oy, oz, tx / len, ty / len, tz / len, 0, Double.POSITIVE_INFINITY, hit);
-                    if (coherent.predictedPatch >= 0) {
-                        predicted++;
-                    }
-                    cold.hintPatch = -1; // a context that has seen no ray before
-                    boolean want = si.closestHit(cold, ox, oy, oz, tx / len, ty / len, tz / len, 0,
-                            Double.POSITIVE_INFINITY, fresh);
-                    assertEquals(-1, cold.predictedPatch);
-                    String where = patches.size() + " patches of degree " + patches.get(0).degreeU() + "x"
-                            + patches.get(0).degreeV() + ", pixel (" + x + ", " + y + ")";
-                    assertEquals(want, got, where);
-                    if (got) {
-                        hits++;
-                        assertEquals(fresh.t, hit.t, 1e-9 * size, where); // (the patch may differ on a shared border)
-                    }
-                    rays++;
-                }
-            }
-        }
-        assertTrue(hits > 0.2 * rays && predicted > 0.3 * rays, rays + " rays, " + hits + " hits, " + predicted
-                + " with a start predicted from the neighbour's hit");
-    }
-
-    private static double[] cross(double[] a, double[] b) {
-        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-
-    private static double[] normalized(double[] a) {
-        double l = Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        return new double[] {a[0] / l, a[1] / l, a[2] / l};
-    }
-
     /** The leaf of the single-patch table that holds {@code (u, v)}. */
     private static int leafOf(SubPatchTable table, double u, double v) {
         for (int s = 0; s < table.count; s++) {
