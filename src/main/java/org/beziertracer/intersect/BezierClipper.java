@@ -114,7 +114,10 @@ final class BezierClipper {
         ctx.pieceFound = false;
         ctx.clipNewtonTries = 0;
         int sp = 1, steps = 0;
-        while (sp > 0) {
+        // an any-hit query is answered by the first root (not with trims: a root the trim rejects
+        // is searched past, TrimmedLeaves, and a nearer one left on the stack would be lost)
+        boolean anyRoot = ctx.anyHit && tab.trimTest == null;
+        while (sp > 0 && !(anyRoot && ctx.pieceFound)) {
             int w = sp - 1, base = w * len, b4 = 4 * w;
             if (++steps > MAX_STEPS) {
                 break;

@@ -167,6 +167,7 @@ public final class SceneIntersector {
         ctx.ensureStack(accel.stackSize());
         ctx.setRay(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
+        ctx.anyHit = true;
         for (int k = 0; k < shapes.sphereCount; k++) {
             if (!Double.isNaN(shapes.sphereT(k, ctx, tMin, tMax))) {
                 return true;

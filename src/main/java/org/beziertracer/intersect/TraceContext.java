@@ -77,6 +77,8 @@ public final class TraceContext {
     /** Best patch hit of the current closest-hit query. */
     final Hit best = new Hit();
     boolean found;
+    /** The query in progress is an any-hit one ({@link SceneIntersector#occluded}): any root in range answers it. */
+    boolean anyHit;
 
     // Root found by the last solver call, in the parent patch's parameters
     double rootT, rootU, rootV;
@@ -140,6 +142,7 @@ public final class TraceContext {
     /** Starts a closest-hit query: no hit yet. */
     void beginClosestHit(double tMin) {
         this.tMin = tMin;
+        anyHit = false;
         found = false;
         hitEvalPatch = -1;
     }
