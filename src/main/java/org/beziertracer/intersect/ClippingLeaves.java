@@ -5,15 +5,15 @@ import org.beziertracer.math.HeapBytes;
 
 /**
  * Sub-patch leaves solved by Bézier clipping ({@link BezierClipper}): exact, the default. Up to
- * {@link #RECORD_LEAVES} leaves, each also gets its {@link NewtonLeafRecords} (64 bytes): the
+ * {@link #RECORD_LEAVES} leaves (65,536), each also gets its {@link NewtonLeafRecords} (64 bytes): the
  * enclosure that rejects most leaves a ray misses before any evaluation, and Newton's start. A
  * bigger table (a model of tens of thousands of patches, issue [6]'s memory budget of about 2 KB a
  * patch) goes without and searches every leaf its ray reaches.
  */
 final class ClippingLeaves extends PatchLeaves {
 
-    /** Most leaves that get records (8 MB of them). */
-    static final int RECORD_LEAVES = 1 << 17;
+    /** Most leaves that get records (4 MB of them): a single model of up to about 30,000 patches. */
+    static final int RECORD_LEAVES = 1 << 16;
 
     /** Null above {@link #RECORD_LEAVES} leaves. */
     private final float[] records;

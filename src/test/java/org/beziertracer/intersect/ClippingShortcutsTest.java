@@ -165,7 +165,6 @@ class ClippingShortcutsTest {
                 dz /= len;
                 double ox = px - size * dx, oy = py - size * dy, oz = pz - size * dz, tMax = 2 * size * rnd.nextDouble();
                 boolean any = si.occluded(shared, ox, oy, oz, dx, dy, dz, 0, tMax);
-                cold.hintPatch = -1;
                 boolean closest = si.closestHit(cold, ox, oy, oz, dx, dy, dz, 0, tMax, coldHit);
                 String where = patches.size() + " patches of degree " + patches.get(0).degreeU() + "x"
                         + patches.get(0).degreeV() + ", ray " + r;

@@ -13,6 +13,7 @@ import org.beziertracer.geometry.PatchPieces;
 import org.beziertracer.geometry.PatchSplitter;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
@@ -146,6 +147,27 @@ class HeapBudgetTest {
         // Subdivision keeps no records
         IntersectOptions subdivision = clipping.withMethod(Method.SUBDIVISION).withSplit(clipping.split());
         assertEquals(records, HeapBudget.estimateBytes(teapot, clipping) - HeapBudget.estimateBytes(teapot, subdivision));
+    }
+
+    /**
+     * Above {@link ClippingLeaves#RECORD_LEAVES} leaves the clipping leaves keep no records (issue
+     * [6]'s memory budget): 40,000 random bicubic patches estimate to more leaves than that, and
+     * their clipping estimate equals subdivision's, which keeps none; the built leaves hold none.
+     */
+    @Test
+    void aBigModelsClippingLeavesKeepNoRecords() {
+        List<BezierPatch> patches = wavy(40_000, 3, 5);
+        Scene scene = new Scene(patches);
+        IntersectOptions clipping = IntersectOptions.defaults();
+        SubPatchTable.Estimate table = SubPatchTable.estimate(patches, clipping.split());
+        assertTrue(!ClippingLeaves.hasRecords(table.leaves()), table.leaves() + " leaves");
+        assertEquals(HeapBudget.estimateBytes(scene, clipping.withMethod(Method.SUBDIVISION).withSplit(clipping.split())),
+                HeapBudget.estimateBytes(scene, clipping));
+        PatchLeaves leaves = PatchLeaves.build(scene, clipping, 1);
+        assertTrue(!ClippingLeaves.hasRecords(leaves.count()), leaves.count() + " leaves built");
+        assertEquals(leaves.table.bytes(), leaves.bytes());
+        PatchLeaves small = PatchLeaves.build(Models.teapot(), clipping, 1);
+        assertEquals(small.table.bytes() + HeapBytes.array((long) NewtonLeafRecords.STRIDE * small.count(), 4), small.bytes());
     }
 
     /** The refusal names the scene's patches (and the tessellation with its triangle count). */
