@@ -20,12 +20,18 @@ import org.beziertracer.geometry.SubPatchTable;
  * <p>Shortcut: when a clipped piece provably holds at most one root ({@link RootUniqueness}),
  * Newton on the parent patch, confined to the piece's parameter box, finds that root directly
  * and the piece is settled (its only root is known, so nothing nearer can hide in it); a failed
- * attempt falls back to clipping. Before anything else, a precomputed test per leaf
- * ({@link RootUniqueness#atMostOneRoot(TraceContext, SubPatchTable, int)}: four dot products)
- * often proves the whole leaf single-root for this ray; Newton then starts where the ray meets
- * the parallelogram of the leaf's corners and, when it converges inside the leaf, no net is
- * projected or clipped at all. Otherwise, on a leaf's first visit both clips run on the
- * unrestricted net, so a leaf with a unique root needs no de Casteljau restriction.
+ * attempt falls back to clipping. Before anything else, the leaf's record
+ * ({@link NewtonLeafRecords}, when the leaves keep them) rejects a ray that misses the leaf's
+ * enclosure, a parallelogram grown by the leaf's largest deviation from it (K. Qin, M. Gong,
+ * G. Tong, "Fast ray tracing NURBS surfaces", 1996), with no evaluation at all; then a
+ * precomputed test per leaf ({@link RootUniqueness#atMostOneRoot(TraceContext, SubPatchTable, int)}:
+ * four dot products) often proves the whole leaf single-root for this ray; Newton then starts
+ * where the ray meets that parallelogram (without records: the parallelogram of the leaf's
+ * corners) and, when it converges inside the leaf, no net is projected or clipped at all; its
+ * last step is usually taken without evaluating the patch again ({@link RayPatchNewton#extrapolate}).
+ * Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
+ * unique root needs no de Casteljau restriction. An any-hit query (a shadow ray) ends the search
+ * at the leaf's first root.
  *
  * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
  * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a

@@ -108,17 +108,20 @@ final class RayPatchNewton {
      * Takes the Newton step {@code (du, dv)} from the last evaluation without evaluating again,
      * when that is as exact as an evaluation: the linear model {@code F + J·Δ} is zero there, and
      * the patch departs from it by at most {@code ½·M·(|du|+|dv|)²} ({@code M} the patch's
-     * {@link SubPatchTable#patchCurvature}, {@link org.beziertracer.geometry.NetMeasures#secondDerivativeBound}).
-     * When that bound is within {@link #EXTRAPOLATED} of the tolerance and the step stays in the
-     * box, the root moves by the step and the point by {@code Su·du + Sv·dv} (so its t follows),
-     * the derivatives in {@code ctx.eval} are kept (they move by at most {@code M·(|du|+|dv|)},
-     * which the normal at the hit does not see), and the result is true. Rational patches carry
-     * {@code M = +∞} and never extrapolate.
+     * {@link SubPatchTable#patchCurvature},
+     * {@link org.beziertracer.geometry.NetMeasures#secondDerivativeBound}). When that bound plus
+     * the linear model's own residual at the new point (the rounding of the step) is within
+     * {@link #EXTRAPOLATED} of the tolerance and the step stays in the box, the root moves by the
+     * step and the point by {@code Su·du + Sv·dv} (so its t follows), the derivatives in
+     * {@code ctx.eval} are kept (they move by at most {@code M·(|du|+|dv|)}, which the normal at
+     * the hit does not see), and the result is true. Rational patches carry {@code M = +∞} and
+     * never extrapolate. The result does not depend on anything but the evaluation and the step,
+     * so a ray's root stays the same whatever ray came before (renders repeat bit for bit).
      */
     static boolean extrapolate(TraceContext ctx, double curvature, double du, double dv, double tolerance,
                                double uLo, double uHi, double vLo, double vHi) {
-        double reach = Math.abs(du) + Math.abs(dv);
-        if (!(0.5 * curvature * reach * reach <= EXTRAPOLATED * tolerance)) {
+        double reach = Math.abs(du) + Math.abs(dv), remainder = 0.5 * curvature * reach * reach;
+        if (!(remainder <= EXTRAPOLATED * tolerance)) {
             return false;
         }
         double u = ctx.rootU + du, v = ctx.rootV + dv;
@@ -126,12 +129,19 @@ final class RayPatchNewton {
             return false;
         }
         double[] e = ctx.eval;
-        e[0] += e[3] * du + e[6] * dv;
-        e[1] += e[4] * du + e[7] * dv;
-        e[2] += e[5] * du + e[8] * dv;
-        double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
-        ctx.residual1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
-        ctx.residual2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        double px = e[0] + e[3] * du + e[6] * dv, py = e[1] + e[4] * du + e[7] * dv, pz = e[2] + e[5] * du + e[8] * dv;
+        double qx = px - ctx.ox, qy = py - ctx.oy, qz = pz - ctx.oz;
+        double r1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz, r2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        // The linear model's own residual there (zero but for the rounding of an ill-conditioned
+        // step) counts too
+        if (!(Math.max(Math.abs(r1), Math.abs(r2)) + remainder <= EXTRAPOLATED * tolerance)) {
+            return false;
+        }
+        e[0] = px;
+        e[1] = py;
+        e[2] = pz;
+        ctx.residual1 = r1;
+        ctx.residual2 = r2;
         ctx.rootU = u;
         ctx.rootV = v;
         ctx.evalU = u;
