@@ -79,14 +79,18 @@ final class BezierClipper {
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, int s, double tMin, double tMax,
                              double tolerance) {
+        int kind = NewtonSolver.MAYBE_SEVERAL;
         if (records == null) {
             cornerStart(ctx, tab, s);
-        } else if (NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance)
+        } else if ((kind = NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance))
                 == NewtonSolver.MISS) {
             return false; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
         }
         double su = ctx.clip[0], sv = ctx.clip[1];
-        boolean unique = RootUniqueness.atMostOneRoot(ctx, tab, s);
+        // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
+        // they prove a single root, the table's own test need not run
+        boolean unique = kind == NewtonSolver.SINGLE_ROOT && tab.patchDim[tab.parent[s]] == 3
+                || RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
