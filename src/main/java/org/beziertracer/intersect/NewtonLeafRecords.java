@@ -5,9 +5,10 @@ import java.util.stream.IntStream;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
- * What {@link NewtonSolver} needs of each leaf, in one flat record of {@link #STRIDE} floats (64
- * bytes) so that a leaf test reads one or two cache lines (the leaf's control net is not touched;
- * Newton evaluates the parent patch):
+ * What {@link NewtonSolver} needs of each leaf (and what {@link ClippingLeaves} keep for its
+ * enclosure and start, {@link BezierClipper#intersect}), in one flat record of {@link #STRIDE}
+ * floats (64 bytes) so that a leaf test reads one or two cache lines (the leaf's control net is
+ * not touched; Newton evaluates the parent patch):
  * <pre>
  *   U0, DU, V0, DV   the leaf's parameter box in its patch: [U0, U0+DU] × [V0, V0+DV]
  *   C  (3)           centre of the leaf's four corner points
