@@ -95,6 +95,11 @@ final class BezierClipper {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
+        if (unique && tab.patchDim[tab.parent[s]] == 3 && BoundaryWinding.holdsNoRoot(ctx, tab, s,
+                tolerance + 1e-13 * (Math.abs(ctx.ox) + Math.abs(ctx.oy) + Math.abs(ctx.oz)))) {
+            // Newton failed because there is nothing to find: the ray passes beside the leaf
+            return false;
+        }
         return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
     }
 

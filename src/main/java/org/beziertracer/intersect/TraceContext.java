@@ -62,6 +62,9 @@ public final class TraceContext {
     final double[] hitEval = new double[9];
     int hitEvalPatch = -1;
     double hitEvalU, hitEvalV;
+    /** Pieces of a leaf's border curves in ray space ({@link BoundaryWinding}), and their depths. */
+    final double[] curveStack = new double[2 * DeCasteljau.MAX_ORDER * (BoundaryWinding.MAX_DEPTH + 2)];
+    final int[] curveDepth = new int[BoundaryWinding.MAX_DEPTH + 2];
     final double[] normal = new double[3];
     final double[] columnMin = new double[DeCasteljau.MAX_ORDER];
     final double[] columnMax = new double[DeCasteljau.MAX_ORDER];

@@ -1,0 +1,167 @@
+package org.beziertracer.intersect;
+
+import org.beziertracer.geometry.SubPatchTable;
+
+/**
+ * Proves that a single-root leaf holds no root at all, from its border alone.
+ *
+ * <p>On a leaf that {@link RootUniqueness} proves single-root for the ray, the ray-space map
+ * {@code F = (F1, F2)} is one-to-one: the single-root argument (the mean-value theorem along the
+ * segment from {@code p} to {@code q} and the non-vanishing of every mixed Jacobian) uses only
+ * {@code F(p) = F(q)}, so it excludes that for every {@code p ≠ q}. A continuous one-to-one map of
+ * the closed parameter square is a homeomorphism onto its image, a closed disk bounded by the
+ * image of the square's border. So the ray meets the leaf exactly when the origin lies in that
+ * disk, that is when the closed curve {@code F(∂leaf)}, four Bézier curves (the border rows and
+ * columns of the net, in ray space), winds around the origin. The winding number is the signed
+ * count of the curve's crossings of the half-line {@code {y = 0, x > 0}} (J. Kajiya's
+ * ray-crossing test for curves, as in the point-in-region tests of Nishita, Sederberg and
+ * Kakimoto 1990 for trim curves). Each border curve is split with de Casteljau until every piece
+ * is settled by its control points (convex hull): wholly above, below or left of the half-line,
+ * or monotone in y with both ends clear of the axis and wholly right of the origin. Every test
+ * keeps a margin {@code eps} (rounding of the projection), so a curve passing within {@code eps}
+ * of the origin, or a vertex on the half-line, is never settled: the caller then searches the leaf
+ * as before. A winding number of zero, every piece settled, is a proof that the leaf holds no
+ * root.
+ *
+ * <p>Allocation-free: the pieces live in the context's {@link TraceContext#curveStack}.
+ */
+final class BoundaryWinding {
+    private BoundaryWinding() {}
+
+    /** Halvings of a border curve before it is given up on. */
+    static final int MAX_DEPTH = 6;
+
+    /**
+     * True when polynomial leaf {@code s}, proven single-root for the ray of {@code ctx}, provably
+     * holds no root: the image of its border does not wind around the ray. False when it does, or
+     * when that could not be settled within {@code eps}.
+     */
+    static boolean holdsNoRoot(TraceContext ctx, SubPatchTable tab, int s, double eps) {
+        int n = tab.degreeU[s], m = tab.degreeV[s], off = tab.netOffset[s], row = 3 * (n + 1);
+        int winding = 0;
+        // The border as a closed loop: v = 0 forwards, u = 1 forwards, v = 1 backwards, u = 0 backwards
+        for (int edge = 0; edge < 4; edge++) {
+            int deg = edge % 2 == 0 ? n : m, first, step;
+            switch (edge) {
+                case 0 -> { first = off; step = 3; }
+                case 1 -> { first = off + 3 * n; step = row; }
+                case 2 -> { first = off + row * m + 3 * n; step = -3; }
+                default -> { first = off + row * m; step = -row; }
+            }
+            int crossings = crossings(ctx, tab.nets, first, step, deg, eps);
+            if (crossings == UNSETTLED) {
+                return false;
+            }
+            winding += crossings;
+        }
+        return winding == 0;
+    }
+
+    /** {@link #crossings} could not settle a piece. */
+    static final int UNSETTLED = Integer.MIN_VALUE;
+
+    /**
+     * Signed crossings of the half-line {@code y = 0, x > 0} by the border curve of degree
+     * {@code deg} whose 3-D control points are {@code net[first + i·step]}, projected into the
+     * ray's plane: +1 for each crossing upwards, −1 downwards; {@link #UNSETTLED} when a piece
+     * could not be settled within {@link #MAX_DEPTH} halvings.
+     */
+    static int crossings(TraceContext ctx, double[] net, int first, int step, int deg, double eps) {
+        double[] st = ctx.curveStack;
+        int len = 2 * (deg + 1);
+        for (int i = 0, p = first; i <= deg; i++, p += step) {
+            double qx = net[p] - ctx.ox, qy = net[p + 1] - ctx.oy, qz = net[p + 2] - ctx.oz;
+            st[2 * i] = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
+            st[2 * i + 1] = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
+        }
+        int[] depth = ctx.curveDepth;
+        depth[0] = 0;
+        int sp = 1, count = 0;
+        while (sp > 0) {
+            int base = (sp - 1) * len;
+            int piece = settle(st, base, deg, eps);
+            if (piece != UNSETTLED) {
+                count += piece;
+                sp--;
+                continue;
+            }
+            int d = depth[sp - 1];
+            if (d >= MAX_DEPTH) {
+                return UNSETTLED;
+            }
+            // Halve: the right half goes on top of the left one (both in place of the piece)
+            halve(st, base, base + len, deg);
+            depth[sp - 1] = d + 1;
+            depth[sp] = d + 1;
+            sp++;
+        }
+        return count;
+    }
+
+    /**
+     * The signed crossings of the piece at {@code st[base..]} when its control points settle them;
+     * else {@link #UNSETTLED}.
+     */
+    private static int settle(double[] st, int base, int deg, double eps) {
+        double yMin = Double.POSITIVE_INFINITY, yMax = Double.NEGATIVE_INFINITY;
+        double xMin = Double.POSITIVE_INFINITY, xMax = Double.NEGATIVE_INFINITY;
+        boolean up = true, down = true;
+        for (int i = 0; i <= deg; i++) {
+            double x = st[base + 2 * i], y = st[base + 2 * i + 1];
+            xMin = Math.min(xMin, x);
+            xMax = Math.max(xMax, x);
+            yMin = Math.min(yMin, y);
+            yMax = Math.max(yMax, y);
+            if (i > 0) {
+                double prev = st[base + 2 * i - 1];
+                up &= y >= prev;
+                down &= y <= prev;
+            }
+        }
+        if (yMin > eps || yMax < -eps || xMax < -eps) {
+            return 0; // wholly above, below, or left of the half-line
+        }
+        double y0 = st[base + 1], y1 = st[base + 2 * deg + 1];
+        if ((up || down) && Math.abs(y0) > eps && Math.abs(y1) > eps) {
+            if ((y0 > 0) == (y1 > 0)) {
+                return 0; // monotone in y, both ends on one side: no crossing at all
+            }
+            if (xMin > eps) {
+                return y1 > 0 ? 1 : -1; // one crossing, and it is right of the origin
+            }
+        }
+        return UNSETTLED;
+    }
+
+    /**
+     * de Casteljau at ½: the left half of the 2-D curve at {@code st[base..]} stays there, the
+     * right half goes to {@code st[right..]}.
+     */
+    private static void halve(double[] st, int base, int right, int deg) {
+        // right half first from the original points (it is filled from the last point back)
+        System.arraycopy(st, base, st, right, 2 * (deg + 1));
+        for (int level = 1; level <= deg; level++) {
+            for (int i = deg; i >= level; i--) {
+                int p = right + 2 * i, q = p - 2;
+                st[p] = 0.5 * (st[q] + st[p]);
+                st[p + 1] = 0.5 * (st[q + 1] + st[p + 1]);
+            }
+        }
+        // now st[right + 2i] holds the left half's point i (b_0^i); the right half's point i is
+        // b_i^(deg-i): recompute it from the original points kept at st[base..]
+        for (int level = 1; level <= deg; level++) {
+            for (int i = 0; i <= deg - level; i++) {
+                int p = base + 2 * i;
+                st[p] = 0.5 * (st[p] + st[p + 2]);
+                st[p + 1] = 0.5 * (st[p + 1] + st[p + 3]);
+            }
+        }
+        // st[base + 2i] holds b_i^(deg-i) ... after the loop, entry i = point i of the right half;
+        // swap the two halves so that the left half is at base and the right at right
+        for (int k = 0; k < 2 * (deg + 1); k++) {
+            double t = st[base + k];
+            st[base + k] = st[right + k];
+            st[right + k] = t;
+        }
+    }
+}
