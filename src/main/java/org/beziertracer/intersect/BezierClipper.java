@@ -29,7 +29,8 @@ import org.beziertracer.geometry.SubPatchTable;
  * where the ray meets that parallelogram (without records: the parallelogram of the leaf's
  * corners) and, when it converges inside the leaf, no net is projected or clipped at all; its
  * last step is usually taken without evaluating the patch again ({@link RayPatchNewton#extrapolate}).
- * Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
+ * When Newton fails on such a leaf, the ray usually passes beside it: the winding of the image of
+ * the leaf's border around the ray then proves it empty ({@link BoundaryWinding}). Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
  * unique root needs no de Casteljau restriction. An any-hit query (a shadow ray) ends the search
  * at the leaf's first root.
  *
