@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
@@ -13,7 +12,6 @@ import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -28,7 +26,7 @@ class BoundaryWindingTest {
     void aLeafDeclaredEmptyHoldsNoRootAndMostLeavesBesideTheRayAreDeclaredEmpty() {
         Random rnd = new Random(1990_2026L);
         int single = 0, declared = 0, besideAndSingle = 0, besideDeclared = 0;
-        for (List<BezierPatch> patches : models(rnd)) {
+        for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
             SubPatchTable table = SubPatchTable.build(patches, SplitOptions.defaults());
             double size = new Scene(patches).controlBounds().diagonal();
             double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
@@ -120,16 +118,5 @@ class BoundaryWindingTest {
             sum += c;
         }
         return sum;
-    }
-
-    /** Random height fields and folded nets of every degree 1..15, and the teapot. */
-    private static List<List<BezierPatch>> models(Random rnd) {
-        List<List<BezierPatch>> models = new ArrayList<>();
-        for (int n = 1; n <= 15; n++) {
-            models.add(List.of(RandomPatches.heightField(rnd, n, 1 + rnd.nextInt(15), 4, 0.5)));
-            models.add(List.of(RandomPatches.wild(rnd, n, 1 + rnd.nextInt(15), 4)));
-        }
-        models.add(Models.teapot().patches());
-        return models;
     }
 }

@@ -3,7 +3,6 @@ package org.beziertracer.intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
@@ -12,7 +11,6 @@ import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
-import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -35,7 +33,7 @@ class ClippingShortcutsTest {
     void theEnclosureRejectsOnlyLeavesWithoutARootAndTheAnswersAreTheReferencesOwn() {
         Random rnd = new Random(9_2026_12_02L);
         int rays = 0, hits = 0, rejected = 0;
-        for (List<BezierPatch> patches : models(rnd)) {
+        for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
             SubPatchTable table = SubPatchTable.build(patches, SplitOptions.defaults());
             float[] records = NewtonLeafRecords.build(table);
             double size = new Scene(patches).controlBounds().diagonal();
@@ -147,7 +145,7 @@ class ClippingShortcutsTest {
     void anAnyHitQueryStoppedAtItsFirstRootAnswersAsTheClosestHit() {
         Random rnd = new Random(777);
         int rays = 0, occluded = 0;
-        for (List<BezierPatch> patches : models(rnd)) {
+        for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
             Scene scene = new Scene(patches);
             SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
             double size = si.sceneSize();
@@ -190,17 +188,5 @@ class ClippingShortcutsTest {
             }
         }
         throw new AssertionError("no leaf holds (" + u + ", " + v + ")");
-    }
-
-    /** Random height fields and folded nets of every degree 1..15, and the teapot. */
-    private static List<List<BezierPatch>> models(Random rnd) {
-        List<List<BezierPatch>> models = new ArrayList<>();
-        for (int n = 1; n <= 15; n++) {
-            int m = 1 + rnd.nextInt(15);
-            models.add(List.of(RandomPatches.heightField(rnd, n, m, 4, 0.5)));
-            models.add(List.of(RandomPatches.wild(rnd, n, 1 + rnd.nextInt(15), 4)));
-        }
-        models.add(Models.teapot().patches());
-        return models;
     }
 }

@@ -7,6 +7,7 @@ import java.util.Random;
 import org.beziertracer.geometry.DegreeElevation;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
 
 /** Seeded random test patches. */
 final class RandomPatches {
@@ -84,5 +85,19 @@ final class RandomPatches {
             }
         }
         return new BezierPatch(6, 6, net);
+    }
+
+    /**
+     * One random wavy height field and one folded net of every degree 1..15 in u (random degree
+     * in v), then the teapot: the models the seeded tests of the solvers' shortcuts sweep.
+     */
+    static List<List<BezierPatch>> everyDegreeAndTheTeapot(Random rnd) {
+        List<List<BezierPatch>> models = new ArrayList<>();
+        for (int n = 1; n <= 15; n++) {
+            models.add(List.of(heightField(rnd, n, 1 + rnd.nextInt(15), 4, 0.5)));
+            models.add(List.of(wild(rnd, n, 1 + rnd.nextInt(15), 4)));
+        }
+        models.add(Models.teapot().patches());
+        return models;
     }
 }
