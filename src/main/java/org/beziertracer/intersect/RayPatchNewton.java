@@ -92,8 +92,17 @@ final class RayPatchNewton {
      * far (u, v and its t along the ray) and its residuals to the ray's two planes.
      */
     private static void evaluate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v) {
+        RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, ctx.eval, ctx.scratch);
+        takeIterate(ctx, u, v);
+    }
+
+    /**
+     * Makes {@code (u, v)}, whose point is in {@code ctx.eval[0..3)}, the iterate: the root so far
+     * (u, v and its t along the ray), the point of {@code ctx.eval}, and its residuals to the
+     * ray's two planes.
+     */
+    private static void takeIterate(TraceContext ctx, double u, double v) {
         double[] e = ctx.eval;
-        RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
         double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
         ctx.residual1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
         ctx.residual2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
@@ -140,13 +149,7 @@ final class RayPatchNewton {
         e[0] = px;
         e[1] = py;
         e[2] = pz;
-        ctx.residual1 = r1;
-        ctx.residual2 = r2;
-        ctx.rootU = u;
-        ctx.rootV = v;
-        ctx.evalU = u;
-        ctx.evalV = v;
-        ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
+        takeIterate(ctx, u, v);
         return true;
     }
 
@@ -192,12 +195,8 @@ final class RayPatchNewton {
         double g1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
         double g2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
         if (Math.max(Math.abs(g1), Math.abs(g2)) <= Math.max(Math.abs(f1), Math.abs(f2))) {
-            ctx.rootU = u;
-            ctx.rootV = v;
-            ctx.evalU = u;
-            ctx.evalV = v;
-            ctx.rootT = (ctx.n3x * qx + ctx.n3y * qy + ctx.n3z * qz) * ctx.invLength;
             System.arraycopy(g, 0, e, 0, 9); // keep ctx.eval at the root
+            takeIterate(ctx, u, v);
         }
     }
 }
