@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -139,7 +140,8 @@ class ClippingShortcutsTest {
      * An any-hit query stops the clipping search at its first root: on folded and wavy nets of
      * degree 1..15 and the teapot, for segments of random length, {@code occluded} answers as the
      * closest hit within the segment does; the same context then answers closest-hit queries as a
-     * cold one (the flag does not leak).
+     * cold one (the flag does not leak), and nothing occludes the segment before that closest hit
+     * (a closest-hit query never stops at a farther root).
      */
     @Test
     void anAnyHitQueryStoppedAtItsFirstRootAnswersAsTheClosestHit() {
@@ -171,6 +173,8 @@ class ClippingShortcutsTest {
                 assertEquals(closest, again, where);
                 if (closest) {
                     assertEquals(coldHit.t, hit.t, 1e-9 * size, where);
+                    // the closest hit is the nearest root: nothing occludes the segment before it
+                    assertFalse(si.occluded(shared, ox, oy, oz, dx, dy, dz, 0, hit.t - 1e-7 * size), where);
                     occluded++;
                 }
                 rays++;
