@@ -106,6 +106,9 @@ public final class TraceContext {
 
     TraceContext() {}
 
+    /** Squared direction lengths strictly between these take {@link #setRay}'s unscaled path. */
+    static final double SQUARES_FROM = 1e-280, SQUARES_TO = 1e280;
+
     /**
      * Sets the ray and computes its ray-space frame. {@code d} must be finite and non-zero; its
      * length may be anything from about 1e-300 to 1e300.
@@ -114,12 +117,22 @@ public final class TraceContext {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
         invDx = 1.0 / dx; invDy = 1.0 / dy; invDz = 1.0 / dz;
-        // scale by the largest component first, so tiny or huge directions neither underflow nor overflow
-        double big = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
-        double sx = dx / big, sy = dy / big, sz = dz / big;
-        double scaledLength = Math.sqrt(sx * sx + sy * sy + sz * sz);
-        invLength = 1.0 / (scaledLength * big);
-        n3x = sx / scaledLength; n3y = sy / scaledLength; n3z = sz / scaledLength;
+        double squared = dx * dx + dy * dy + dz * dz;
+        if (squared > SQUARES_FROM && squared < SQUARES_TO) {
+            // the usual direction: its squared length neither underflows nor overflows, so one
+            // square root and one division (every ray pays this; a division costs as much as a
+            // handful of multiplications)
+            double inv = 1.0 / Math.sqrt(squared);
+            invLength = inv;
+            n3x = dx * inv; n3y = dy * inv; n3z = dz * inv;
+        } else {
+            // scale by the largest component first, so tiny or huge directions neither underflow nor overflow
+            double big = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+            double sx = dx / big, sy = dy / big, sz = dz / big;
+            double scaledLength = Math.sqrt(sx * sx + sy * sy + sz * sz);
+            invLength = 1.0 / (scaledLength * big);
+            n3x = sx / scaledLength; n3y = sy / scaledLength; n3z = sz / scaledLength;
+        }
         // n1: perpendicular to d, built from its two largest components
         double ax, ay, az;
         if (Math.abs(n3x) > Math.abs(n3z)) {

@@ -59,6 +59,30 @@ class TraceContextTest {
         }
     }
 
+    /**
+     * Directions whose squared length lies just inside and just outside the range where
+     * {@code setRay} normalises without scaling first, with one component far below the others
+     * (its square underflows): the same frame either side of the switch.
+     */
+    @Test
+    void theFrameIsTheSameEitherSideOfTheUnscaledRange() {
+        TraceContext c = new TraceContext();
+        for (double squared : new double[] {TraceContext.SQUARES_FROM, TraceContext.SQUARES_TO}) {
+            for (double factor : new double[] {0.5, 0.999, 1.001, 2}) {
+                double len = Math.sqrt(squared * factor);
+                double[] d = {0.6 * len, -0.8 * len, 1e-30 * len};
+                c.setRay(0, 0, 0, d[0], d[1], d[2]);
+                String where = "|d|² = " + squared * factor;
+                assertEquals(1, c.invLength * len, ROUNDING, where);
+                assertEquals(0.6, c.n3x, ROUNDING, where);
+                assertEquals(-0.8, c.n3y, ROUNDING, where);
+                assertEquals(1e-30, c.n3z, 1e-45, where);
+                assertEquals(1, dot(c.n1x, c.n1y, c.n1z, c.n1x, c.n1y, c.n1z), ROUNDING, where);
+                assertEquals(0, dot(c.n1x, c.n1y, c.n1z, c.n3x, c.n3y, c.n3z), ROUNDING, where);
+            }
+        }
+    }
+
     @Test
     void aPointMapsToItsDistancesFromTheRaysPlanesAndAlongTheRay() {
         Random rnd = new Random(62);
