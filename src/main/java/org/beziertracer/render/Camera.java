@@ -64,8 +64,10 @@ public final class Camera {
      * {@code ray[0..5] = ox, oy, oz, dx, dy, dz}. Allocation-free.
      */
     public void generateRay(double x, double y, int width, int height, double[] ray) {
-        double sx = (2 * x / width - 1) * halfWidth;
-        double sy = (1 - 2 * y / height) * halfWidth * height / width;
+        // (1 − 2y/height)·halfWidth·height/width, with one division a ray instead of three
+        double invWidth = 1.0 / width;
+        double sx = (2 * x * invWidth - 1) * halfWidth;
+        double sy = (height - 2 * y) * invWidth * halfWidth;
         if (fovDegrees == 0) {
             ray[0] = eye.x() + sx * rx + sy * ux;
             ray[1] = eye.y() + sx * ry + sy * uy;
