@@ -27,7 +27,8 @@ import org.beziertracer.geometry.SubPatchTable;
  * precomputed test per leaf ({@link RootUniqueness#atMostOneRoot(TraceContext, SubPatchTable, int)}:
  * four dot products) often proves the whole leaf single-root for this ray; Newton then starts
  * where the ray meets that parallelogram (without records: the parallelogram of the leaf's
- * corners) and, when it converges inside the leaf, no net is projected or clipped at all; its
+ * corners; on a leaf above bicubic, where the ray meets the leaf's quadratic model,
+ * {@link LeafQuadratics}) and, when it converges inside the leaf, no net is projected or clipped at all; its
  * last step is usually taken without evaluating the patch again ({@link RayPatchNewton#extrapolate}).
  * When Newton fails on such a leaf, the ray usually passes beside it: the winding of the image of
  * the leaf's border around the ray then proves it empty ({@link BoundaryWinding}). Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
@@ -80,6 +81,16 @@ final class BezierClipper {
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, int s, double tMin, double tMax,
                              double tolerance) {
+        return intersect(ctx, tab, records, null, s, tMin, tMax, tolerance);
+    }
+
+    /**
+     * As {@link #intersect(TraceContext, SubPatchTable, float[], int, double, double, double)};
+     * with {@code quadratics} (the leaves' {@link LeafQuadratics}, or null) Newton on a leaf proven
+     * single-root starts where the ray meets the leaf's quadratic model, when that lies in the leaf.
+     */
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics, int s,
+                             double tMin, double tMax, double tolerance) {
         int kind = NewtonSolver.MAYBE_SEVERAL;
         if (records == null) {
             cornerStart(ctx, tab, s);
@@ -87,11 +98,14 @@ final class BezierClipper {
                 == NewtonSolver.MISS) {
             return false; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
         }
-        double su = ctx.clip[0], sv = ctx.clip[1];
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
         // they prove a single root, the table's own test need not run
         boolean unique = kind == NewtonSolver.SINGLE_ROOT && tab.patchDim[tab.parent[s]] == 3
                 || RootUniqueness.atMostOneRoot(ctx, tab, s);
+        if (unique && quadratics != null) {
+            LeafQuadratics.start(ctx, quadratics, s); // a nearer start, when the model's lies in the leaf
+        }
+        double su = ctx.clip[0], sv = ctx.clip[1];
         if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;

@@ -17,10 +17,13 @@ final class ClippingLeaves extends PatchLeaves {
 
     /** Null above {@link #RECORD_LEAVES} leaves. */
     private final float[] records;
+    /** {@link LeafQuadratics} of the leaves above bicubic; null without records or without such leaves. */
+    private final float[] quadratics;
 
     ClippingLeaves(SubPatchTable table, double tolerance) {
         super(table, tolerance);
         this.records = hasRecords(table.count) ? NewtonLeafRecords.build(table) : null;
+        this.quadratics = records != null ? LeafQuadratics.build(table) : null;
     }
 
     /** True when a table of {@code leaves} leaves gets records. */
@@ -30,7 +33,7 @@ final class ClippingLeaves extends PatchLeaves {
 
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        return BezierClipper.intersect(ctx, table, records, s, tMin, tMax, tolerance);
+        return BezierClipper.intersect(ctx, table, records, quadratics, s, tMin, tMax, tolerance);
     }
 
     @Override
@@ -39,5 +42,5 @@ final class ClippingLeaves extends PatchLeaves {
     }
 
     @Override
-    long solverBytes() { return HeapBytes.of(records); }
+    long solverBytes() { return HeapBytes.of(records) + HeapBytes.of(quadratics); }
 }

@@ -41,6 +41,11 @@ public final class HeapBudget {
         boolean records = options.method() == Method.NEWTON
                 || options.method() == Method.CLIPPING && ClippingLeaves.hasRecords(table.leaves());
         long solverBytes = records ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
+        if (records && options.method() == Method.CLIPPING && patches.stream().anyMatch(
+                p -> !p.isRational() && LeafQuadratics.worthIt(p.degreeU(), p.degreeV()))) {
+            // clipping's quadratic starts, a model for every leaf once a patch is above bicubic
+            solverBytes += 4L * LeafQuadratics.STRIDE * table.leaves();
+        }
         // The table, the leaves' boxes handed to the BVH build, the build itself and a solver's per-leaf records
         return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + solverBytes;
     }

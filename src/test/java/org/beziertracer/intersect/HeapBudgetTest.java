@@ -147,6 +147,30 @@ class HeapBudgetTest {
         // Subdivision keeps no records
         IntersectOptions subdivision = clipping.withMethod(Method.SUBDIVISION).withSplit(clipping.split());
         assertEquals(records, HeapBudget.estimateBytes(teapot, clipping) - HeapBudget.estimateBytes(teapot, subdivision));
+        // Above bicubic, clipping also keeps a quadratic start a leaf (LeafQuadratics), Newton does not
+        Scene wavy = new Scene(List.of(new BezierPatch(5, 5, wavyNet(5))));
+        SubPatchTable.Estimate wavyTable = SubPatchTable.estimate(wavy.patches(), clipping.split());
+        assertEquals(table(wavyTable) + 4L * (NewtonLeafRecords.STRIDE + LeafQuadratics.STRIDE) * wavyTable.leaves(),
+                HeapBudget.estimateBytes(wavy, clipping));
+        assertEquals(table(wavyTable) + 4L * NewtonLeafRecords.STRIDE * wavyTable.leaves(),
+                HeapBudget.estimateBytes(wavy, newton));
+    }
+
+    private static long table(SubPatchTable.Estimate t) {
+        return t.bytes() + 6 * 8 * t.leaves() + Bvh.estimateBytes(t.leaves());
+    }
+
+    /** A degree-n×n height field with some waves, on the unit square. */
+    private static double[] wavyNet(int n) {
+        double[] net = new double[3 * (n + 1) * (n + 1)];
+        for (int j = 0, p = 0; j <= n; j++) {
+            for (int i = 0; i <= n; i++, p += 3) {
+                net[p] = (double) i / n;
+                net[p + 1] = (double) j / n;
+                net[p + 2] = 0.2 * Math.sin(7.0 * i / n) * Math.cos(5.0 * j / n);
+            }
+        }
+        return net;
     }
 
     /**
