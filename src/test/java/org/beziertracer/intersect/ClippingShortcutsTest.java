@@ -35,28 +35,17 @@ class ClippingShortcutsTest {
         Random rnd = new Random(9_2026_12_02L);
         int rays = 0, hits = 0, rejected = 0;
         for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
-            SubPatchTable table = SubPatchTable.build(patches, SplitOptions.defaults());
-            float[] records = NewtonLeafRecords.build(table);
-            double size = new Scene(patches).controlBounds().diagonal();
-            double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
+            LeafRays aimer = LeafRays.of(patches);
+            SubPatchTable table = aimer.table;
+            float[] records = aimer.records;
+            double size = aimer.size, tolerance = aimer.tolerance;
             TraceContext ctx = new TraceContext();
-            double[] e = new double[9], scratch = new double[4096];
             for (int s = 0; s < table.count; s++) {
-                int k = table.parent[s];
-                float[] box = table.boxes;
                 for (int r = 0; r < 12; r++) {
-                    // a point of the leaf (borders included), and a ray to it from a random direction
-                    double a = r < 4 ? r % 2 : rnd.nextDouble(), b = r < 4 ? r / 2 : rnd.nextDouble();
-                    double u = box[4 * s] + a * (box[4 * s + 1] - box[4 * s]);
-                    double v = box[4 * s + 2] + b * (box[4 * s + 3] - box[4 * s + 2]);
-                    DeCasteljau.evaluateWithDerivatives(table.patchNets, table.patchNetOffset[k], table.patchDegreeU[k],
-                            table.patchDegreeV[k], u, v, e, scratch);
-                    double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
-                    double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                    // a point of the leaf (borders included), and a ray to it from a random direction;
                     // every third ray is shifted off the surface by up to a tenth of the leaf: it may miss
-                    double shift = r % 3 == 2 ? 0.1 * table.diagonal[s] * rnd.nextGaussian() : 0;
-                    double ox = e[0] - 2 * size * dx / len + shift, oy = e[1] - 2 * size * dy / len, oz = e[2] - 2 * size * dz / len;
-                    ctx.setRay(ox, oy, oz, dx / len, dy / len, dz / len);
+                    double a = r < 4 ? r % 2 : rnd.nextDouble(), b = r < 4 ? r / 2 : rnd.nextDouble();
+                    aimer.aim(ctx, s, a, b, r % 3 == 2 ? 0.1 * table.diagonal[s] : 0, rnd);
                     boolean reference = BezierClipper.intersect(ctx, table, null, s, 0, Double.POSITIVE_INFINITY, tolerance);
                     double tRef = ctx.rootT;
                     boolean fast = BezierClipper.intersect(ctx, table, records, s, 0, Double.POSITIVE_INFINITY, tolerance);
