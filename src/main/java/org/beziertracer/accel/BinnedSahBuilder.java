@@ -54,14 +54,16 @@ final class BinnedSahBuilder extends BvhBuild {
     /** Bin all three axes ({@link #ALL_AXES_PRIMS}), else the widest only. */
     final boolean allAxes;
 
-    private BinnedSahBuilder(double[] primBounds, int primCount, BvhOptions opts) {
-        super(primBounds, identity(primCount), opts);
+    /** Over the primitives {@code order} (their indices into {@code primBounds}, in leaf order). */
+    private BinnedSahBuilder(double[] primBounds, int[] order, BvhOptions opts, boolean allAxes) {
+        super(primBounds, order, opts);
         this.binCount = opts.binCount();
-        this.allAxes = primCount <= ALL_AXES_PRIMS;
-        centroids = new float[3 * primCount];
-        for (int p = 0; p < primCount; p++) {
+        this.allAxes = allAxes;
+        centroids = new float[3 * order.length];
+        for (int i = 0; i < order.length; i++) {
+            int p = order[i];
             for (int a = 0; a < 3; a++) {
-                centroids[3 * p + a] = (float) (primBounds[6 * p + a] + primBounds[6 * p + 3 + a]);
+                centroids[3 * i + a] = (float) (primBounds[6 * p + a] + primBounds[6 * p + 3 + a]);
             }
         }
     }
@@ -77,7 +79,17 @@ final class BinnedSahBuilder extends BvhBuild {
         if (primCount == 0) {
             return empty(start);
         }
-        BinnedSahBuilder b = new BinnedSahBuilder(primBounds, primCount, opts);
+        return build(primBounds, identity(primCount), opts, parallel, primCount <= ALL_AXES_PRIMS, start);
+    }
+
+    /**
+     * The hierarchy over the primitives {@code order} (indices into {@code primBounds}, checked by
+     * the caller; not empty), which becomes its leaf order; {@code allAxes}: bin all three axes.
+     */
+    static Bvh build(double[] primBounds, int[] order, BvhOptions opts, boolean parallel, boolean allAxes,
+                     long start) {
+        int primCount = order.length;
+        BinnedSahBuilder b = new BinnedSahBuilder(primBounds, order, opts, allAxes);
         float[] rootCentroids = new float[6];
         b.unionOf(0, primCount, b.nodeBounds, 0, rootCentroids);
         Subtree root = new Subtree(b, 0, 1, 0, primCount, 1, rootCentroids);

@@ -45,9 +45,9 @@ public final class Bvh implements Accelerator {
     /** Bytes of one node: six float bounds and two ints. */
     static final int NODE_BYTES = 6 * 4 + 2 * 4;
 
-    private final float[] nodeBounds;
-    private final int[] nodes;
-    private final int[] primIndices;
+    final float[] nodeBounds;
+    final int[] nodes;
+    final int[] primIndices;
     private final int depth;
     private final double buildMillis;
 
@@ -93,6 +93,19 @@ public final class Bvh implements Accelerator {
     public static Bvh build(double[] primBounds, int primCount, BvhOptions opts) {
         return primCount >= opts.mortonPrims() ? MortonBuilder.build(primBounds, primCount, opts)
                 : BinnedSahBuilder.build(primBounds, primCount, opts);
+    }
+
+    /**
+     * Builds a hierarchy over {@code primCount} boxes that come in contiguous groups, in two
+     * levels ({@link GroupedBuilder}): a tree per group, then one over the groups.
+     *
+     * @param groupFirst the first primitive of each group, then {@code primCount}: group {@code j}
+     *     is {@code groupFirst[j] .. groupFirst[j+1]-1} (may be empty)
+     * @throws IllegalArgumentException for a bad box (as {@link #build(double[], int, BvhOptions)})
+     *     or groups that do not cover {@code 0 .. primCount-1} in order
+     */
+    public static Bvh build(double[] primBounds, int primCount, int[] groupFirst, BvhOptions opts) {
+        return GroupedBuilder.build(primBounds, primCount, groupFirst, opts);
     }
 
     /** The node boxes and nodes ({@code leftFirst, count} pairs), copies, for tests. */

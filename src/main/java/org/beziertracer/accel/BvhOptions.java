@@ -18,6 +18,19 @@ public record BvhOptions(int maxLeafSize, int binCount, int mortonPrims) {
     /** Default {@link #mortonPrims()}: the binned SAH up to this size (see docs/performance.md). */
     public static final int MORTON_PRIMS = 1 << 18;
 
+    /**
+     * Builds over at least this many primitives in groups of four or more on average (a big
+     * scene's patches, split into sub-patches) use the two-level {@link Bvh#build(double[], int,
+     * int[], BvhOptions)}; below it the one tree over all primitives is built fast enough and
+     * traces a little faster (docs/performance.md, "Fifth pass").
+     */
+    public static final int GROUPED_PRIMS = 1 << 16;
+
+    /** Whether {@code primCount} primitives in {@code groupCount} groups are built in two levels ({@link #GROUPED_PRIMS}). */
+    public static boolean groupsPay(int primCount, int groupCount) {
+        return primCount >= GROUPED_PRIMS && 4L * groupCount <= primCount;
+    }
+
     public BvhOptions {
         if (maxLeafSize < 1) {
             throw new IllegalArgumentException("maxLeafSize must be >= 1, got " + maxLeafSize);

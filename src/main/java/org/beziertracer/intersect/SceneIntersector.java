@@ -2,6 +2,7 @@ package org.beziertracer.intersect;
 
 import org.beziertracer.accel.Accelerator;
 import org.beziertracer.accel.Bvh;
+import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.accel.FlatList;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
@@ -52,7 +53,7 @@ public final class SceneIntersector {
         long t0 = System.nanoTime();
         double size = sizeOf(scene);
         Leaves leaves = Leaves.of(scene, options, size);
-        Accelerator accel = buildAccel(leaves, options);
+        Accelerator accel = buildAccel(leaves, scene.patches().size(), options);
         return new SceneIntersector(scene, leaves, accel, options, size, (System.nanoTime() - t0) / 1e6);
     }
 
@@ -62,10 +63,21 @@ public final class SceneIntersector {
         return size > 0 ? size : 1;
     }
 
-    private static Accelerator buildAccel(Leaves leaves, IntersectOptions options) {
-        double[] bounds = leaves.bounds(0, leaves.count());
-        return options.bvh() ? Bvh.build(bounds, leaves.count(), options.bvhOptions())
-                : FlatList.build(bounds, leaves.count());
+    private static Accelerator buildAccel(Leaves leaves, int patches, IntersectOptions options) {
+        int count = leaves.count();
+        double[] bounds = leaves.bounds(0, count);
+        if (!options.bvh()) {
+            return FlatList.build(bounds, count);
+        }
+        if (BvhOptions.groupsPay(count, patches)) {
+            int[] groupFirst = new int[patches + 1];
+            for (int k = 0; k < patches; k++) {
+                groupFirst[k] = leaves.firstLeaf(k);
+            }
+            groupFirst[patches] = count;
+            return Bvh.build(bounds, count, groupFirst, options.bvhOptions());
+        }
+        return Bvh.build(bounds, count, options.bvhOptions());
     }
 
     /**
@@ -100,7 +112,7 @@ public final class SceneIntersector {
             int n = Math.max(0, end - first);
             newAccel = n == 0 ? accel : bvh.refit(newLeaves.bounds(first, n), first, n);
         } else {
-            newAccel = buildAccel(newLeaves, options);
+            newAccel = buildAccel(newLeaves, edited.patches().size(), options);
         }
         return new SceneIntersector(edited, newLeaves, newAccel, options, size, (System.nanoTime() - t0) / 1e6);
     }
