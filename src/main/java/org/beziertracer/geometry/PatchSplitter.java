@@ -58,12 +58,51 @@ public final class PatchSplitter {
 
     /** With the caller's trim curves (or null) and the scene-relative stop {@code minSize}. */
     public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim, double minSize) {
+        return split(patch, options, trim, minSize, new Workspace());
+    }
+
+    /**
+     * As {@link #split(BezierPatch, SplitOptions, TrimCurves, double)}, in the working memory
+     * {@code w} of the calling thread, which a build reuses from patch to patch.
+     */
+    public static PatchPieces split(BezierPatch patch, SplitOptions options, TrimCurves trim, double minSize,
+                                    Workspace w) {
         int n = patch.degreeU(), m = patch.degreeV();
         int dim = Patches.dim(patch);
-        Builder out = new Builder((n + 1) * (m + 1), dim == 4, trim != null);
-        Recursion r = new Recursion(n, m, dim, options, minSize, out, trim, patch.domain());
+        w.out.reset((n + 1) * (m + 1), dim == 4, trim != null);
+        Recursion r = new Recursion(n, m, dim, options, minSize, w, trim, patch.domain());
         r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED);
-        return out.pieces(n, m);
+        return w.out.pieces(n, m);
+    }
+
+    /**
+     * The working memory of {@link #split}: the nets of each level of the halving and the pieces
+     * made so far, kept from one patch to the next and grown when a patch needs more. One thread's.
+     */
+    public static final class Workspace {
+        double[][] lo = new double[0][], hi = new double[0][];
+        double[] euclid = new double[0], weights = new double[0];
+        final Builder out = new Builder();
+
+        /** The two nets of level {@code depth}, at least {@code length} doubles each. */
+        void ensureLevel(int depth, int length) {
+            if (depth >= lo.length) {
+                lo = Arrays.copyOf(lo, depth + 1);
+                hi = Arrays.copyOf(hi, depth + 1);
+            }
+            if (lo[depth] == null || lo[depth].length < length) {
+                lo[depth] = new double[length];
+                hi[depth] = new double[length];
+            }
+        }
+
+        /** Room for the Euclidean net and weights of a rational patch of {@code points} points. */
+        void ensureRational(int points) {
+            if (weights.length < points) {
+                euclid = new double[3 * points];
+                weights = new double[points];
+            }
+        }
     }
 
     /**
@@ -75,10 +114,10 @@ public final class PatchSplitter {
     static final double PAST_CAP_FLATNESS = 2;
 
     /**
-     * The depth-first halving with all working memory allocated once per patch: level
-     * {@code d} owns two nets (the halves made from level {@code d-1}), which stay intact while
-     * the lower half's subtree uses deeper levels; a level's nets are made when the halving first
-     * reaches it (a patch that stays whole allocates none).
+     * The depth-first halving in the working memory of a {@link Workspace}: level {@code d} owns
+     * two nets (the halves made from level {@code d-1}), which stay intact while the lower half's
+     * subtree uses deeper levels; a level's nets are made when a halving first reaches it (a
+     * patch that stays whole needs none), and kept for the next patch.
      */
     private static final class Recursion {
         final int n, m, dim, points;
@@ -87,14 +126,14 @@ public final class PatchSplitter {
         final int maxDepth;
         final double flatness;
         final double minSize;
+        final Workspace w;
         final Builder out;
         final TrimCurves trim;
         final PatchDomain domain;
-        final double[][] lo, hi;
         final double[] box = new double[6];
         final double[] euclid, weights, trimScratch;
 
-        Recursion(int n, int m, int dim, SplitOptions options, double minSize, Builder out, TrimCurves trim,
+        Recursion(int n, int m, int dim, SplitOptions options, double minSize, Workspace w, TrimCurves trim,
                   PatchDomain domain) {
             this.n = n;
             this.m = m;
@@ -104,14 +143,15 @@ public final class PatchSplitter {
             this.maxDepth = options.maxDepthFor(n, m);
             this.flatness = options.flatnessFor(n, m);
             this.minSize = minSize;
-            this.out = out;
+            this.w = w;
+            this.out = w.out;
             this.trim = trim;
             this.domain = domain;
-            int levels = options.enabled() ? maxDepth + 1 : 1;
-            lo = new double[levels][];
-            hi = new double[levels][];
-            euclid = new double[3 * points];
-            weights = new double[points];
+            if (dim == 4) {
+                w.ensureRational(points);
+            }
+            euclid = w.euclid;
+            weights = w.weights;
             trimScratch = trim == null ? null : new double[TrimCurves.SCRATCH_LENGTH];
         }
 
@@ -131,11 +171,8 @@ public final class PatchSplitter {
                 out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
                 return;
             }
-            if (lo[depth + 1] == null) {
-                lo[depth + 1] = new double[points * dim];
-                hi[depth + 1] = new double[points * dim];
-            }
-            double[] a = lo[depth + 1], b = hi[depth + 1];
+            w.ensureLevel(depth + 1, points * dim);
+            double[] a = w.lo[depth + 1], b = w.hi[depth + 1];
             if (polygonLength(xyz, n, m, true) >= polygonLength(xyz, n, m, false)) {
                 double um = 0.5 * (u0 + u1);
                 DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
@@ -233,33 +270,33 @@ public final class PatchSplitter {
         return longest;
     }
 
+    /** The pieces of one patch as they are made, in arrays kept for the next patch. */
     private static final class Builder {
-        final int points;
-        final boolean rational, trimmed;
-        double[] nets, weights;
-        double[] boxes = new double[8];
-        boolean[] trimTest;
+        int points;
+        boolean rational, trimmed;
+        double[] nets = new double[0], weights = new double[0], boxes = new double[0];
+        boolean[] trimTest = new boolean[0];
         int count;
 
-        Builder(int points, boolean rational, boolean trimmed) {
+        /** Empty, for a patch of {@code points} control points. */
+        void reset(int points, boolean rational, boolean trimmed) {
             this.points = points;
             this.rational = rational;
             this.trimmed = trimmed;
-            // room for two pieces: most patches of a big model stay whole or split once
-            this.nets = new double[2 * 3 * points];
-            this.weights = rational ? new double[2 * points] : null;
-            this.trimTest = trimmed ? new boolean[2] : null;
+            this.count = 0;
         }
 
         void add(double[] net, double[] w, double u0, double u1, double v0, double v1, boolean test) {
             int len = 3 * points;
             if ((count + 1) * len > nets.length) {
-                nets = Arrays.copyOf(nets, nets.length * 2);
-                weights = rational ? Arrays.copyOf(weights, weights.length * 2) : null;
-                trimTest = trimmed ? Arrays.copyOf(trimTest, trimTest.length * 2) : null;
+                nets = Arrays.copyOf(nets, Math.max(2 * nets.length, 2 * len));
+            }
+            if (rational && (count + 1) * points > weights.length) {
+                weights = Arrays.copyOf(weights, Math.max(2 * weights.length, 2 * points));
             }
             if ((count + 1) * 4 > boxes.length) {
-                boxes = Arrays.copyOf(boxes, boxes.length * 2);
+                boxes = Arrays.copyOf(boxes, Math.max(2 * boxes.length, 8));
+                trimTest = Arrays.copyOf(trimTest, boxes.length / 4);
             }
             System.arraycopy(net, 0, nets, count * len, len);
             if (rational) {

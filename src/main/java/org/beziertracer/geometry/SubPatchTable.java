@@ -55,6 +55,8 @@ public final class SubPatchTable {
 
     /** Scenes with at least this many patches are split in parallel. */
     static final int PARALLEL_PATCHES = 64;
+    /** Patches split one after another in one working memory ({@link PatchSplitter.Workspace}). */
+    static final int SPLIT_RUN = 32;
     /**
      * Leaves' worth of surface a scene gets: pieces smaller than {@code τ}, with
      * {@code τ² = Σ (patch control-box diagonal)² / LEAF_BUDGET}, are not split.
@@ -162,9 +164,14 @@ public final class SubPatchTable {
         // itself, so a model of a million small patches holds no second copy of its nets while built
         PatchPieces[] pieces = new PatchPieces[patches.size()];
         boolean parallel = pieces.length >= PARALLEL_PATCHES;
-        IntStream range = IntStream.range(0, pieces.length);
-        (parallel ? range.parallel() : range).forEach(k -> pieces[k] = kept(
-                PatchSplitter.split(patches.get(k), options, trims[k], minSize)));
+        // In runs of patches, each with one working memory of the splitter
+        IntStream runs = IntStream.range(0, (pieces.length + SPLIT_RUN - 1) / SPLIT_RUN);
+        (parallel ? runs.parallel() : runs).forEach(r -> {
+            PatchSplitter.Workspace w = new PatchSplitter.Workspace();
+            for (int k = r * SPLIT_RUN, end = Math.min(pieces.length, k + SPLIT_RUN); k < end; k++) {
+                pieces[k] = kept(PatchSplitter.split(patches.get(k), options, trims[k], minSize, w));
+            }
+        });
         return assemble(patches, options, minSize, trims, pieces, parallel);
     }
 
@@ -348,9 +355,10 @@ public final class SubPatchTable {
         int[] dLeaves = new int[edited.length];
         long[] dNets = new long[edited.length];
         long leaves = count, doubles = nets.length;
+        PatchSplitter.Workspace w = new PatchSplitter.Workspace();
         for (int e = 0; e < edited.length; e++) {
             int k = edited[e];
-            pieces[e] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize));
+            pieces[e] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize, w));
             dLeaves[e] = leafCount(pieces[e]) - (firstOf[k + 1] - firstOf[k]);
             dNets[e] = regionLength(list.get(k), pieces[e]) - (regionEnd(k) - patchNetOffset[k]);
             leaves += dLeaves[e];
@@ -367,8 +375,9 @@ public final class SubPatchTable {
     /** A table built afresh from {@code list} with this table's stop (an edit that made the first rational or trimmed patch). */
     private SubPatchTable rebuilt(List<BezierPatch> list, TrimCurves[] trims) {
         PatchPieces[] pieces = new PatchPieces[list.size()];
+        PatchSplitter.Workspace w = new PatchSplitter.Workspace();
         for (int k = 0; k < pieces.length; k++) {
-            pieces[k] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize));
+            pieces[k] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize, w));
         }
         return assemble(list, options, minSize, trims, pieces, false);
     }

@@ -6,9 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import java.util.List;
 import java.util.Random;
 
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
+import org.beziertracer.model.TrimRegion;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -195,6 +198,36 @@ class PatchSplitterTest {
             assertEquals(1, pieces.count(), options.toString());
             assertArrayEquals(new double[] {0, 1, 0, 1}, pieces.boxes(), 0, options.toString());
             assertArrayEquals(patch.copyNet(), pieces.nets(), 0, options.toString());
+        }
+    }
+
+    @Test
+    void oneWorkspaceSplitsPatchAfterPatchAsFreshMemoryWould() {
+        Random rnd = new Random(2018);
+        TrimRegion region = new TrimRegion(List.of(TrimShapes.circle(0.5, 0.5, 0.35, true)), List.of());
+        PatchSplitter.Workspace w = new PatchSplitter.Workspace();
+        for (int trial = 0; trial < 60; trial++) {
+            // degrees up and down, so the kept nets are sometimes longer than the patch needs
+            int n = 1 + rnd.nextInt(trial % 3 == 0 ? 9 : 4), m = 1 + rnd.nextInt(4);
+            double[] weights = null;
+            if (rnd.nextInt(3) == 0) {
+                weights = new double[(n + 1) * (m + 1)];
+                for (int k = 0; k < weights.length; k++) {
+                    weights[k] = 0.3 + 3 * rnd.nextDouble();
+                }
+            }
+            PatchDomain domain = rnd.nextInt(4) == 0 ? new PatchDomain(0, 1, 0, 1, region) : null;
+            BezierPatch p = new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 5), weights, domain, null);
+            TrimCurves trim = p.trim() == null ? null : TrimCurves.of(p.trim());
+            double minSize = rnd.nextInt(4) == 0 ? 2 : 0;
+            PatchPieces fresh = PatchSplitter.split(p, SplitOptions.defaults(), trim, minSize);
+            PatchPieces reused = PatchSplitter.split(p, SplitOptions.defaults(), trim, minSize, w);
+            String in = "trial " + trial + ": " + p + (domain != null ? " trimmed" : "");
+            assertEquals(fresh.count(), reused.count(), in);
+            assertArrayEquals(fresh.nets(), reused.nets(), 0, in);
+            assertArrayEquals(fresh.boxes(), reused.boxes(), 0, in);
+            assertArrayEquals(fresh.weights(), reused.weights(), 0, in);
+            assertArrayEquals(fresh.trimTest(), reused.trimTest(), in);
         }
     }
 }
