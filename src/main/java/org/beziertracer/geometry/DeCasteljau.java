@@ -226,7 +226,9 @@ public final class DeCasteljau {
                            double[] lo, int loOff, double[] hi, int hiOff) {
         double s = 1 - t;
         boolean hiIsSrc = hi == src && hiOff == srcOff;
-        if (hi != null && !hiIsSrc) {
+        if (dim == 3 && hi != null && hi != src) {
+            splitCurve3(src, srcOff, stride, deg, s, t, lo, loOff, hi, hiOff);
+        } else if (hi != null && !hiIsSrc) {
             // Work in hi: after level r, point 0 is lo_r; at the end point k is hi_k
             copyCurve(src, srcOff, hi, hiOff, stride, deg, dim);
             for (int r = 1; r <= deg; r++) {
@@ -274,6 +276,39 @@ public final class DeCasteljau {
         // hi is src and lo is null: hi = [t,1] computed in place
         else if (hi != null) {
             reduceForward(hi, hiOff, stride, deg, dim, t, deg);
+        }
+    }
+
+    /**
+     * {@link #splitCurve} of a 3-D curve into another array {@code hi} (the pre-split's case):
+     * the same arithmetic, unrolled, without the copy helpers' calls.
+     */
+    private static void splitCurve3(double[] src, int srcOff, int stride, int deg, double s, double t,
+                                    double[] lo, int loOff, double[] hi, int hiOff) {
+        for (int k = 0, a = srcOff, b = hiOff; k <= deg; k++, a += stride, b += stride) {
+            hi[b] = src[a];
+            hi[b + 1] = src[a + 1];
+            hi[b + 2] = src[a + 2];
+        }
+        for (int r = 1; r <= deg; r++) {
+            if (lo != null) {
+                int l = loOff + (r - 1) * stride;
+                lo[l] = hi[hiOff];
+                lo[l + 1] = hi[hiOff + 1];
+                lo[l + 2] = hi[hiOff + 2];
+            }
+            for (int k = 0, a = hiOff; k <= deg - r; k++, a += stride) {
+                int b = a + stride;
+                hi[a] = s * hi[a] + t * hi[b];
+                hi[a + 1] = s * hi[a + 1] + t * hi[b + 1];
+                hi[a + 2] = s * hi[a + 2] + t * hi[b + 2];
+            }
+        }
+        if (lo != null) {
+            int l = loOff + deg * stride;
+            lo[l] = hi[hiOff];
+            lo[l + 1] = hi[hiOff + 1];
+            lo[l + 2] = hi[hiOff + 2];
         }
     }
 

@@ -53,6 +53,41 @@ public final class NetMeasures {
         return flatness(net, off, n, m, 3);
     }
 
+    /** Scratch doubles {@link #flatness(double[], int, int, int, double[])} needs at degree {@code n} in u. */
+    public static int flatnessScratch(int n) {
+        return 6 * (n + 1);
+    }
+
+    /**
+     * {@link #flatness(double[], int, int, int)}, the same value to the last bit, with the
+     * bilinear patch's two terms of each column {@code i} ({@code (1−u)·P_00 + u·P_n0} and
+     * {@code (1−u)·P_0m + u·P_nm}) computed once instead of once a row: the pre-split calls it at
+     * every node. {@code scratch}: at least {@link #flatnessScratch} doubles.
+     */
+    public static double flatness(double[] net, int off, int n, int m, double[] scratch) {
+        int row = 3 * (n + 1);
+        int c00 = off, cn0 = off + 3 * n, c0m = off + m * row, cnm = c0m + 3 * n;
+        for (int i = 0; i <= n; i++) {
+            double u = (double) i / n, su = 1 - u;
+            for (int c = 0; c < 3; c++) {
+                scratch[6 * i + c] = su * net[c00 + c] + u * net[cn0 + c];
+                scratch[6 * i + 3 + c] = su * net[c0m + c] + u * net[cnm + c];
+            }
+        }
+        double maxSq = 0;
+        for (int j = 0; j <= m; j++) {
+            double v = (double) j / m, sv = 1 - v;
+            for (int i = 0, p = off + j * row, q = 0; i <= n; i++, p += 3, q += 6) {
+                double dx = net[p] - (sv * scratch[q] + v * scratch[q + 3]);
+                double dy = net[p + 1] - (sv * scratch[q + 1] + v * scratch[q + 4]);
+                double dz = net[p + 2] - (sv * scratch[q + 2] + v * scratch[q + 5]);
+                double dSq = dx * dx + dy * dy + dz * dz;
+                if (dSq > maxSq) maxSq = dSq;
+            }
+        }
+        return Math.sqrt(maxSq);
+    }
+
     /** {@link #flatness(double[], int, int, int)} for any {@code dim}. */
     public static double flatness(double[] net, int off, int n, int m, int dim) {
         int row = (n + 1) * dim;

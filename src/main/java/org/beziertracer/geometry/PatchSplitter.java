@@ -131,7 +131,7 @@ public final class PatchSplitter {
         final TrimCurves trim;
         final PatchDomain domain;
         final double[] box = new double[6];
-        final double[] euclid, weights, trimScratch;
+        final double[] euclid, weights, trimScratch, flatnessScratch;
 
         Recursion(int n, int m, int dim, SplitOptions options, double minSize, Workspace w, TrimCurves trim,
                   PatchDomain domain) {
@@ -153,6 +153,7 @@ public final class PatchSplitter {
             euclid = w.euclid;
             weights = w.weights;
             trimScratch = trim == null ? null : new double[TrimCurves.SCRATCH_LENGTH];
+            flatnessScratch = new double[NetMeasures.flatnessScratch(n)];
         }
 
         void visit(double[] net, double u0, double u1, double v0, double v1, int depth, int trimState) {
@@ -216,7 +217,7 @@ public final class PatchSplitter {
             if (size < minSize) {
                 return true;
             }
-            double f = flatness(xyz, 0, n, m);
+            double f = flatness(xyz, 0, n, m, flatnessScratch);
             if (pastBaseCap) {
                 return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
             }
@@ -249,7 +250,12 @@ public final class PatchSplitter {
      * corners' plane parallelogram (see {@link #split}'s leaf rule).
      */
     static double flatness(double[] net, int off, int n, int m) {
-        double f = NetMeasures.flatness(net, off, n, m);
+        return flatness(net, off, n, m, new double[NetMeasures.flatnessScratch(n)]);
+    }
+
+    /** As {@link #flatness(double[], int, int, int)}, with {@link NetMeasures#flatnessScratch} doubles of scratch. */
+    static double flatness(double[] net, int off, int n, int m, double[] scratch) {
+        double f = NetMeasures.flatness(net, off, n, m, scratch);
         return Math.max(n, m) <= 2 ? f + 0.25 * NetMeasures.twist(net, off, n, m) : f;
     }
 

@@ -191,6 +191,39 @@ class DeCasteljauTest {
     }
 
     @Test
+    void theUnrolledThreeDimensionalSplitGivesTheGenericSplitsNumbersToTheLastBit() {
+        // The same net with a fourth coordinate goes through the generic loop; x, y, z must agree
+        Random rnd = new Random(88);
+        for (int trial = 0; trial < 200; trial++) {
+            int n = randomDegree(rnd), m = randomDegree(rnd), points = (n + 1) * (m + 1);
+            double[] net3 = randomNet(rnd, n, m, 3, 1 + 100 * rnd.nextDouble());
+            double[] net4 = new double[4 * points];
+            for (int k = 0; k < points; k++) {
+                System.arraycopy(net3, 3 * k, net4, 4 * k, 3);
+                net4[4 * k + 3] = rnd.nextDouble();
+            }
+            double t = trial % 2 == 0 ? 0.5 : rnd.nextDouble();
+            boolean alongU = rnd.nextBoolean();
+            double[] lo3 = new double[3 * points], hi3 = new double[3 * points];
+            double[] lo4 = new double[4 * points], hi4 = new double[4 * points];
+            if (alongU) {
+                DeCasteljau.splitU(net3, 0, n, m, 3, t, lo3, 0, hi3, 0);
+                DeCasteljau.splitU(net4, 0, n, m, 4, t, lo4, 0, hi4, 0);
+            } else {
+                DeCasteljau.splitV(net3, 0, n, m, 3, t, lo3, 0, hi3, 0);
+                DeCasteljau.splitV(net4, 0, n, m, 4, t, lo4, 0, hi4, 0);
+            }
+            for (int k = 0; k < points; k++) {
+                for (int c = 0; c < 3; c++) {
+                    String in = "trial " + trial + " point " + k + " coordinate " + c;
+                    org.junit.jupiter.api.Assertions.assertEquals(lo4[4 * k + c], lo3[3 * k + c], 0, in + " (low half)");
+                    org.junit.jupiter.api.Assertions.assertEquals(hi4[4 * k + c], hi3[3 * k + c], 0, in + " (high half)");
+                }
+            }
+        }
+    }
+
+    @Test
     void restrictionMatchesTheParentAtMappedParameters() {
         Random rnd = new Random(6);
         double[][] special = {{0, 1}, {0, 1e-9}, {1 - 1e-9, 1}, {0.3, 0.3}, {0, 0}, {1, 1}, {0.25, 0.75}};

@@ -167,4 +167,24 @@ class NetMeasuresTest {
         double[] bilinear = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0.5};
         assertEquals(0.5, NetMeasures.secondDerivativeBound(bilinear, 0, 1, 1), 1e-9);
     }
+
+    @Test
+    void flatnessWithColumnTermsIsTheSameNumberAsThePlainOne() {
+        Random rnd = new Random(515);
+        for (int trial = 0; trial < 300; trial++) {
+            int n = TestNets.randomDegree(rnd), m = TestNets.randomDegree(rnd);
+            double[] net = TestNets.randomNet(rnd, n, m, 3, Math.pow(10, -3 + 6 * rnd.nextDouble()));
+            if (trial % 3 == 0) {
+                // nearly flat: a plane plus a tiny bump, where the value is small and rounding matters
+                for (int k = 2; k < net.length; k += 3) {
+                    net[k] = 0.3 * net[k - 2] - 0.2 * net[k - 1] + 1e-9 * rnd.nextDouble();
+                }
+            }
+            double[] padded = new double[net.length + 7];
+            System.arraycopy(net, 0, padded, 7, net.length);
+            double[] scratch = new double[NetMeasures.flatnessScratch(n)];
+            assertEquals(NetMeasures.flatness(net, 0, n, m), NetMeasures.flatness(padded, 7, n, m, scratch), 0,
+                    "trial " + trial + ", degree " + n + "x" + m);
+        }
+    }
 }
