@@ -75,6 +75,9 @@ abstract class PatchLeaves implements Leaves {
     @Override
     public final boolean occludes(TraceContext ctx, int s, double tMax) {
         ctx.solverCalls++;
+        if (s == ctx.originLeaf && OriginLeaf.cannotMeet(ctx, table, s)) {
+            return false; // the shadow ray's own leaf, which it provably leaves behind
+        }
         return solve(ctx, s, ctx.tMin, tMax);
     }
 

@@ -197,6 +197,33 @@ public final class SceneIntersector {
     }
 
     /**
+     * {@link #occluded}, for a ray that leaves the surface at the patch hit {@code from}, whose
+     * point is {@code at} and whose unit normal on the ray's side is {@code (nx, ny, nz)}: a
+     * shadow ray. The answer is the same; the leaf that found the hit is skipped where {@link
+     * OriginLeaf} proves that the ray cannot meet it, instead of searched.
+     */
+    public boolean occludedLeaving(TraceContext ctx, Hit from, SurfacePoint at, double nx, double ny, double nz,
+                                   double ox, double oy, double oz, double dx, double dy, double dz,
+                                   double tMin, double tMax) {
+        if (from.kind == Hit.PATCH) {
+            ctx.originLeaf = from.subPatch;
+            ctx.originU = from.u;
+            ctx.originV = from.v;
+            ctx.originPx = at.px;
+            ctx.originPy = at.py;
+            ctx.originPz = at.pz;
+            ctx.originNx = nx;
+            ctx.originNy = ny;
+            ctx.originNz = nz;
+        }
+        try {
+            return occluded(ctx, ox, oy, oz, dx, dy, dz, tMin, tMax);
+        } finally {
+            ctx.originLeaf = -1;
+        }
+    }
+
+    /**
      * Evaluates the surface at a hit (position, dp/du, dp/dv, unit normal): for patch hits by the
      * leaves that found it ({@link Leaves#surfacePoint}: on the parent patch, or on the triangle
      * in tessellated mode). Call right after {@link #closestHit} with the same context (it uses

@@ -101,6 +101,17 @@ public final class TraceContext {
     /** Newton: the residuals (distances to the ray's two planes) at the last evaluated iterate. */
     double residual1, residual2;
 
+    /**
+     * The surface point an any-hit query leaves ({@link SceneIntersector#occludedLeaving}): the
+     * leaf whose solve found it ({@code -1}: none), the surface's (u, v) there, the point and the
+     * unit normal on the ray's side ({@link OriginLeaf}); and that test's scratch.
+     */
+    int originLeaf = -1;
+    double originU, originV, originPx, originPy, originPz, originNx, originNy, originNz;
+    final double[] originScratch = new double[OriginLeaf.SCRATCH];
+    /** Per slot {@code s & (MEMORY-1)}: {@code s + 1} when leaf s's last {@link OriginLeaf} test failed, and rays since. */
+    final int[] originFailed = new int[OriginLeaf.MEMORY], originSkipped = new int[OriginLeaf.MEMORY];
+
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
 

@@ -199,8 +199,8 @@ public final class WhittedTracer {
         double[] lights = s.lights;
         double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
         shadowRays++;
-        boolean blocked = si.occluded(ctx, px, py, pz, lights[lo] - px, lights[lo + 1] - py,
-                lights[lo + 2] - pz, 0, 1 - 1e-9);
+        boolean blocked = si.occludedLeaving(ctx, hit, sp, nx, ny, nz, px, py, pz, lights[lo] - px,
+                lights[lo + 1] - py, lights[lo + 2] - pz, 0, 1 - 1e-9);
         events.shadowRay(depth, k, blocked);
         return blocked;
     }
