@@ -116,19 +116,7 @@ final class BinnedSahBuilder extends BvhBuild {
 
     /** Exchanges positions {@code i} and {@code j} of the leaf order (index, box, centroid). */
     void swap(int i, int j) {
-        int p = prims[i];
-        prims[i] = prims[j];
-        prims[j] = p;
-        for (int k = 0; k < 6; k++) {
-            float t = boxes[6 * i + k];
-            boxes[6 * i + k] = boxes[6 * j + k];
-            boxes[6 * j + k] = t;
-        }
-        for (int k = 0; k < 3; k++) {
-            float t = centroids[3 * i + k];
-            centroids[3 * i + k] = centroids[3 * j + k];
-            centroids[3 * j + k] = t;
-        }
+        swap(prims, boxes, centroids, i, j);
     }
 
     /** One subtree, built iteratively; its big children become tasks of their own. */

@@ -139,6 +139,26 @@ abstract class BvhBuild {
         b[o + 3] = b[o + 4] = b[o + 5] = Float.NEGATIVE_INFINITY;
     }
 
+    /**
+     * Exchanges positions {@code i} and {@code j} of a leaf order: the indices {@code prims}, the
+     * boxes (6 floats each) and the centres (3 floats each) that move with them.
+     */
+    static void swap(int[] prims, float[] boxes, float[] centres, int i, int j) {
+        int p = prims[i];
+        prims[i] = prims[j];
+        prims[j] = p;
+        for (int k = 0; k < 6; k++) {
+            float t = boxes[6 * i + k];
+            boxes[6 * i + k] = boxes[6 * j + k];
+            boxes[6 * j + k] = t;
+        }
+        for (int k = 0; k < 3; k++) {
+            float t = centres[3 * i + k];
+            centres[3 * i + k] = centres[3 * j + k];
+            centres[3 * j + k] = t;
+        }
+    }
+
     /** Grows box {@code dst[d..d+5]} to contain box {@code src[s..s+5]}. */
     static void grow(float[] dst, int d, float[] src, int s) {
         for (int k = 0; k < 3; k++) {

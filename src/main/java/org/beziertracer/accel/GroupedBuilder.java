@@ -5,25 +5,26 @@ import java.util.stream.IntStream;
 
 /**
  * Two-level build of a {@link Bvh} over primitives that come in contiguous groups (the
- * sub-patches of one patch): each group gets its own binned-SAH hierarchy ({@link
- * BinnedSahBuilder}, the groups in parallel), then a hierarchy over the groups' boxes (one group a
- * leaf) is built, and each of its leaves is replaced by the root of its group's hierarchy. The
- * result is one ordinary {@link Bvh}: same layout, same traversal, same {@link Bvh#refit}.
+ * sub-patches of one patch): a binned-SAH hierarchy over the groups' boxes, one group a leaf
+ * ({@link BinnedSahBuilder}, or {@link MortonBuilder} for very many groups), whose leaves are then
+ * replaced by the roots of the groups' own small trees (median splits of the centres along their
+ * widest axis down to one primitive a leaf, the groups in parallel). The result is one ordinary
+ * {@link Bvh}: same layout, same traversal, same {@link Bvh#refit}.
  *
  * <p>Method: the two-level (top-level / bottom-level) hierarchy of instanced ray tracers, I. Wald,
  * C. Benthin and P. Slusallek, "A Simple and Practical Method for Interactive Ray Tracing of
  * Dynamic Scenes", Saarland University technical report, 2002; here the two levels are merged into
- * one tree, since the groups are not instances. Binning a group's few tens of primitives and then
- * a few thousand group boxes visits each primitive on a handful of levels instead of on every
- * level of one tree over all of them: the 100-teapot scene's 93,400 sub-patches build in
- * about a third of the time (docs/performance.md, "Fifth pass"). A tree cannot mix the
- * sub-patches of neighbouring patches, so it is used only for big scenes ({@link
- * BvhOptions#groupsPay}).
+ * one tree, since the groups are not instances. A group's few tens of sub-patches lie side by side
+ * on one patch, where a median split costs a fraction of a binned SAH's sweep per node and loses
+ * little: on the 100-teapot scene (93,400 sub-patches) the build takes 8–11 instead of 42–54 ms for
+ * trees 5 % dearer by the SAH that traced its frame faster (docs/performance.md, "Fifth pass"). A
+ * tree cannot mix the sub-patches of neighbouring patches, so it is used only for big scenes
+ * ({@link BvhOptions#groupsPay}).
  *
  * <p>Layout: the top tree's nodes first (its leaves hold the groups' roots), then each group's
- * other nodes in group order, so children still follow their parent; a group's primitives keep
- * their positions {@code groupFirst[j] ..} of the leaf order. Deterministic like the other
- * builders.
+ * other nodes in group order, each group's subtree in the slot layout of {@link BvhBuild}, so
+ * children still follow their parent; a group's primitives keep their positions
+ * {@code groupFirst[j] ..} of the leaf order. Deterministic like the other builders.
  */
 final class GroupedBuilder {
     private GroupedBuilder() {}
@@ -143,7 +144,7 @@ final class GroupedBuilder {
                         j--;
                     }
                     if (i <= j) {
-                        swap(i++, j--);
+                        BvhBuild.swap(prims, boxes, centres, i++, j--);
                     }
                 }
                 if (k <= j) {
@@ -156,21 +157,6 @@ final class GroupedBuilder {
             }
         }
 
-        private void swap(int i, int j) {
-            int p = prims[i];
-            prims[i] = prims[j];
-            prims[j] = p;
-            for (int c = 0; c < 6; c++) {
-                float t = boxes[6 * i + c];
-                boxes[6 * i + c] = boxes[6 * j + c];
-                boxes[6 * j + c] = t;
-            }
-            for (int c = 0; c < 3; c++) {
-                float t = centres[3 * i + c];
-                centres[3 * i + c] = centres[3 * j + c];
-                centres[3 * j + c] = t;
-            }
-        }
     }
 
     /** Levels of the tree (the root is level 1); children follow their parent. */

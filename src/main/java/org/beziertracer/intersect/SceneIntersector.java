@@ -206,15 +206,7 @@ public final class SceneIntersector {
                                    double ox, double oy, double oz, double dx, double dy, double dz,
                                    double tMin, double tMax) {
         if (from.kind == Hit.PATCH) {
-            ctx.originLeaf = from.subPatch;
-            ctx.originU = from.u;
-            ctx.originV = from.v;
-            ctx.originPx = at.px;
-            ctx.originPy = at.py;
-            ctx.originPz = at.pz;
-            ctx.originNx = nx;
-            ctx.originNy = ny;
-            ctx.originNz = nz;
+            ctx.leaving(from.subPatch, from.u, from.v, at.px, at.py, at.pz, nx, ny, nz);
         }
         try {
             return occluded(ctx, ox, oy, oz, dx, dy, dz, tMin, tMax);

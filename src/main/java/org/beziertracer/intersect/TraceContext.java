@@ -159,6 +159,23 @@ public final class TraceContext {
         n2z = n3x * n1y - n3y * n1x;
     }
 
+    /**
+     * The next any-hit query leaves the surface point {@code (px, py, pz)} found in leaf
+     * {@code leaf} at the surface's {@code (u, v)}, on the side of the unit normal {@code n}
+     * ({@link OriginLeaf}); {@code leaf = -1}: it leaves none.
+     */
+    void leaving(int leaf, double u, double v, double px, double py, double pz, double nx, double ny, double nz) {
+        originLeaf = leaf;
+        originU = u;
+        originV = v;
+        originPx = px;
+        originPy = py;
+        originPz = pz;
+        originNx = nx;
+        originNy = ny;
+        originNz = nz;
+    }
+
     /** Grows the traversal stack to at least {@code size} (a deeper BVH than any before). */
     void ensureStack(int size) {
         if (stack.length < size) {

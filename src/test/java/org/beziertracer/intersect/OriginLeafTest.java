@@ -92,15 +92,7 @@ class OriginLeafTest {
             fresh.setRay(ox, oy, oz, lx, ly, lz);
             fresh.tMin = 0;
             fresh.anyHit = false;
-            fresh.originLeaf = from.subPatch;
-            fresh.originU = from.u;
-            fresh.originV = from.v;
-            fresh.originPx = sp.px;
-            fresh.originPy = sp.py;
-            fresh.originPz = sp.pz;
-            fresh.originNx = nx;
-            fresh.originNy = ny;
-            fresh.originNz = nz;
+            fresh.leaving(from.subPatch, from.u, from.v, sp.px, sp.py, sp.pz, nx, ny, nz);
             boolean skip = OriginLeaf.cannotMeet(fresh, leaves.table, from.subPatch);
             boolean meets = leaves.solve(fresh, from.subPatch, 0, far);
             assertFalse(skip && meets, () -> ray + ": the proof skips a leaf the ray meets at t = " + fresh.rootT);
@@ -179,15 +171,7 @@ class OriginLeafTest {
             double tx = rnd.nextGaussian(), ty = rnd.nextGaussian();
             ctx.setRay(e[0] + h0 * nx, e[1] + h0 * ny, e[2] + h0 * nz, nx + tx, ny + ty, nz + 1e-3);
             ctx.tMin = 0;
-            ctx.originLeaf = 0;
-            ctx.originU = u;
-            ctx.originV = v;
-            ctx.originPx = e[0];
-            ctx.originPy = e[1];
-            ctx.originPz = e[2];
-            ctx.originNx = nx;
-            ctx.originNy = ny;
-            ctx.originNz = nz;
+            ctx.leaving(0, u, v, e[0], e[1], e[2], nx, ny, nz);
             if (!(nx * ctx.dx + ny * ctx.dy + nz * ctx.dz > 0)) {
                 continue;
             }
