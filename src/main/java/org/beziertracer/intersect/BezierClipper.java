@@ -102,7 +102,9 @@ final class BezierClipper {
         // they prove a single root, the table's own test need not run
         boolean unique = kind == NewtonSolver.SINGLE_ROOT && tab.patchDim[tab.parent[s]] == 3
                 || RootUniqueness.atMostOneRoot(ctx, tab, s);
-        if (unique && quadratics != null) {
+        if (unique && s == ctx.originLeaf) {
+            OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
+        } else if (unique && quadratics != null) {
             LeafQuadratics.start(ctx, quadratics, s); // a nearer start, when the model's lies in the leaf
         }
         double su = ctx.clip[0], sv = ctx.clip[1];

@@ -56,6 +56,24 @@ final class OriginLeaf {
         return proven;
     }
 
+    /**
+     * Newton's start on the leaf the ray leaves, when the leaf is proven single-root for the ray:
+     * the origin's own point (a root lies within about the offset of it, behind the origin), in
+     * leaf parameters into {@code ctx.clip}, clamped to the leaf. The answer is Newton's on the
+     * patch, whatever the start; this one saves the evaluations of the way there.
+     */
+    static void startAtOrigin(TraceContext ctx, SubPatchTable tab, int s) {
+        int k = tab.parent[s];
+        double[] domain = tab.patchDomain;
+        boolean plain = SurfaceParameters.unit(domain, k);
+        double u = plain ? ctx.originU : SurfaceParameters.s(domain, k, ctx.originU);
+        double v = plain ? ctx.originV : SurfaceParameters.t(domain, k, ctx.originV);
+        float[] box = tab.boxes;
+        double a = (u - box[4 * s]) / (box[4 * s + 1] - box[4 * s]), b = (v - box[4 * s + 2]) / (box[4 * s + 3] - box[4 * s + 2]);
+        ctx.clip[0] = Math.min(1, Math.max(0, a));
+        ctx.clip[1] = Math.min(1, Math.max(0, b));
+    }
+
     /** The test itself. */
     private static boolean proven(TraceContext ctx, SubPatchTable tab, int s) {
         int k = tab.parent[s];

@@ -194,6 +194,35 @@ class OriginLeafTest {
     }
 
     @Test
+    void newtonStartsOnItsOwnLeafAtTheOriginsPoint() {
+        // The start maps back to the hit's own (u, v) on its leaf, for plain and re-parametrised patches
+        SceneIntersector si = SceneIntersector.build(Models.teapot(), IntersectOptions.defaults());
+        org.beziertracer.geometry.SubPatchTable table = ((PatchLeaves) si.leaves).table;
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        Random rnd = new Random(75);
+        int checked = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+            if (!si.closestHit(ctx, -300 * dx, -300 * dy, 40 - 300 * dz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
+                continue;
+            }
+            int s = hit.subPatch;
+            ctx.leaving(s, hit.u, hit.v, 0, 0, 0, 0, 0, 1);
+            OriginLeaf.startAtOrigin(ctx, table, s);
+            float[] box = table.boxes;
+            double u = box[4 * s] + ctx.clip[0] * (box[4 * s + 1] - box[4 * s]);
+            double v = box[4 * s + 2] + ctx.clip[1] * (box[4 * s + 3] - box[4 * s + 2]);
+            double expectU = Math.min(box[4 * s + 1], Math.max(box[4 * s], hit.u));
+            double expectV = Math.min(box[4 * s + 3], Math.max(box[4 * s + 2], hit.v));
+            assertEquals(expectU, u, 1e-12, "trial " + trial);
+            assertEquals(expectV, v, 1e-12, "trial " + trial);
+            checked++;
+        }
+        assertTrue(checked > 100, "hits: " + checked);
+    }
+
+    @Test
     void thePiecesTestIsTheLargestCoefficientOfTheFourPiecesAgainstTheLimit() {
         // Against the four pieces made by the generic de Casteljau split (a scalar net as dim 1)
         Random rnd = new Random(74);
