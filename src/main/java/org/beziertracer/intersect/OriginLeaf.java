@@ -27,7 +27,12 @@ import org.beziertracer.geometry.SubPatchTable;
 final class OriginLeaf {
     private OriginLeaf() {}
 
-    /** The offset must exceed this fraction of the leaf's size: far above the coefficients' rounding. */
+    /**
+     * The offset must exceed this fraction of the leaf's size plus the point's distance from the
+     * coordinates' origin. The heights and the split round by about 10⁻¹⁴ of that (differences of
+     * coordinates of that size, and fewer than 32 de Casteljau levels), so the margin of half the
+     * offset stays five orders above it.
+     */
     static final double ROUNDING = 1e-9;
 
     /** Leaves whose last test failed, remembered per thread (a power of two). */
@@ -92,7 +97,8 @@ final class OriginLeaf {
         double nx = ctx.originNx, ny = ctx.originNy, nz = ctx.originNz;
         double px = ctx.originPx, py = ctx.originPy, pz = ctx.originPz;
         double h0 = nx * (ctx.ox - px) + ny * (ctx.oy - py) + nz * (ctx.oz - pz);
-        if (!(nx * ctx.dx + ny * ctx.dy + nz * ctx.dz > 0) || !(h0 > ROUNDING * tab.diagonal[s])) {
+        double magnitude = tab.diagonal[s] + Math.abs(px) + Math.abs(py) + Math.abs(pz);
+        if (!(nx * ctx.dx + ny * ctx.dy + nz * ctx.dz > 0) || !(h0 > ROUNDING * magnitude)) {
             return false;
         }
         int n = tab.degreeU[s], m = tab.degreeV[s], points = (n + 1) * (m + 1);
