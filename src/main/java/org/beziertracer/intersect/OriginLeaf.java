@@ -68,15 +68,19 @@ final class OriginLeaf {
      * patch, whatever the start; this one saves the evaluations of the way there.
      */
     static void startAtOrigin(TraceContext ctx, SubPatchTable tab, int s) {
+        ctx.clip[0] = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, true)));
+        ctx.clip[1] = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, false)));
+    }
+
+    /** The origin's u ({@code alongU}) or v in leaf {@code s}'s own parameters (0..1 inside the leaf). */
+    private static double leafParameter(TraceContext ctx, SubPatchTable tab, int s, boolean alongU) {
         int k = tab.parent[s];
         double[] domain = tab.patchDomain;
         boolean plain = SurfaceParameters.unit(domain, k);
-        double u = plain ? ctx.originU : SurfaceParameters.s(domain, k, ctx.originU);
-        double v = plain ? ctx.originV : SurfaceParameters.t(domain, k, ctx.originV);
-        float[] box = tab.boxes;
-        double a = (u - box[4 * s]) / (box[4 * s + 1] - box[4 * s]), b = (v - box[4 * s + 2]) / (box[4 * s + 3] - box[4 * s + 2]);
-        ctx.clip[0] = Math.min(1, Math.max(0, a));
-        ctx.clip[1] = Math.min(1, Math.max(0, b));
+        double x = alongU ? (plain ? ctx.originU : SurfaceParameters.s(domain, k, ctx.originU))
+                : (plain ? ctx.originV : SurfaceParameters.t(domain, k, ctx.originV));
+        int o = 4 * s + (alongU ? 0 : 2);
+        return (x - tab.boxes[o]) / (tab.boxes[o + 1] - tab.boxes[o]);
     }
 
     /** The test itself. */
@@ -85,13 +89,8 @@ final class OriginLeaf {
         if (tab.patchDim[k] != 3 || !(ctx.tMin >= 0)) {
             return false;
         }
-        double[] domain = tab.patchDomain;
-        boolean plain = SurfaceParameters.unit(domain, k);
-        double u = plain ? ctx.originU : SurfaceParameters.s(domain, k, ctx.originU);
-        double v = plain ? ctx.originV : SurfaceParameters.t(domain, k, ctx.originV);
-        float[] box = tab.boxes;
-        double u0 = box[4 * s], u1 = box[4 * s + 1], v0 = box[4 * s + 2], v1 = box[4 * s + 3];
-        if (!(u >= u0 && u <= u1 && v >= v0 && v <= v1)) {
+        double a = leafParameter(ctx, tab, s, true), b = leafParameter(ctx, tab, s, false);
+        if (!(a >= 0 && a <= 1 && b >= 0 && b <= 1)) {
             return false;
         }
         double nx = ctx.originNx, ny = ctx.originNy, nz = ctx.originNz;
@@ -125,7 +124,7 @@ final class OriginLeaf {
         if (sum / points < corners / 4) {
             return false;
         }
-        return piecesBelow(w, n, m, (u - u0) / (u1 - u0), (v - v0) / (v1 - v0), limit);
+        return piecesBelow(w, n, m, a, b, limit);
     }
 
     /**
