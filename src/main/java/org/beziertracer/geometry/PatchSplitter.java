@@ -126,6 +126,8 @@ public final class PatchSplitter {
         final int maxDepth;
         final double flatness;
         final double minSize;
+        /** Degree at most 3: past the base cap only the fine split's tolerance ({@link SplitOptions#fine}). */
+        final boolean upToBicubic;
         final Workspace w;
         final Builder out;
         final TrimCurves trim;
@@ -143,6 +145,7 @@ public final class PatchSplitter {
             this.maxDepth = options.maxDepthFor(n, m);
             this.flatness = options.flatnessFor(n, m);
             this.minSize = minSize;
+            this.upToBicubic = Math.max(n, m) <= 3;
             this.w = w;
             this.out = w.out;
             this.trim = trim;
@@ -190,7 +193,8 @@ public final class PatchSplitter {
         /**
          * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
          * trim curve crosses is split on to the (base) depth cap, so that most hits fall in pieces
-         * wholly inside (no trim test) and the pieces that need the test are small. Above bicubic
+         * wholly inside (no trim test) and the pieces that need the test are small. Up to bicubic
+         * the {@link SplitOptions#fine} split lowers the tolerance and raises the cap. Above bicubic
          * the tolerance and the cap are the degree-aware ones ({@link SplitOptions#flatnessFor},
          * {@link SplitOptions#maxDepthFor}); past the base cap {@link SplitOptions#maxDepth} only a
          * piece within {@value #PAST_CAP_FLATNESS} times the base tolerance of flat is refined on,
@@ -218,7 +222,7 @@ public final class PatchSplitter {
                 return true;
             }
             double f = flatness(xyz, 0, n, m, flatnessScratch);
-            if (pastBaseCap) {
+            if (pastBaseCap && !upToBicubic) {
                 return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
             }
             if (f > flatness * size) {

@@ -156,8 +156,12 @@ public final class SubPatchTable {
         return false;
     }
 
-    /** Splits every patch (the trim curves of each distinct trim region are built once). */
-    public static SubPatchTable build(List<BezierPatch> patches, SplitOptions options) {
+    /**
+     * Splits every patch (the trim curves of each distinct trim region are built once), as
+     * {@code requested} says for a scene of this many patches ({@link SplitOptions#forPatches}).
+     */
+    public static SubPatchTable build(List<BezierPatch> patches, SplitOptions requested) {
+        SplitOptions options = requested.forPatches(patches.size());
         double minSize = minSize(patches, options);
         TrimCurves[] trims = TrimCurves.forPatches(patches);
         // The pieces that are not the patch itself only: a patch that stays whole is copied from
@@ -473,8 +477,9 @@ public final class SubPatchTable {
     public record Estimate(long leaves, long bytes) {}
 
     /** {@link Estimate} of {@link #build}{@code (patches, options)}; splits at most {@value #ESTIMATE_SAMPLE} patches. */
-    public static Estimate estimate(List<BezierPatch> patches, SplitOptions options) {
+    public static Estimate estimate(List<BezierPatch> patches, SplitOptions requested) {
         int n = patches.size();
+        SplitOptions options = requested.forPatches(n);
         if (n == 0) {
             return new Estimate(0, 0);
         }

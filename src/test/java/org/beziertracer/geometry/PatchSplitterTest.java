@@ -185,7 +185,7 @@ class PatchSplitterTest {
                 net[k + 2] = i == 1 ? 3 : 0;
             }
         }
-        PatchPieces pieces = PatchSplitter.split(new BezierPatch(2, 2, net), new SplitOptions(true, 0.01, 1));
+        PatchPieces pieces = PatchSplitter.split(new BezierPatch(2, 2, net), new SplitOptions(true, 0.01, 1).forPatches(Integer.MAX_VALUE));
         assertEquals(2, pieces.count());
         assertArrayEquals(new double[] {0, 0.5, 0, 1, 0.5, 1, 0, 1}, Arrays.copyOf(pieces.boxes(), 8), 0);
     }
@@ -229,5 +229,72 @@ class PatchSplitterTest {
             assertArrayEquals(fresh.weights(), reused.weights(), 0, in);
             assertArrayEquals(fresh.trimTest(), reused.trimTest(), in);
         }
+    }
+
+    /**
+     * Up to bicubic the fine split ({@link SplitOptions#fine}) goes on to its own tolerance and
+     * cap, with no past-the-cap rule of the higher degrees; without it (a big scene,
+     * {@link SplitOptions#forPatches}) a piece stops at the base tolerance and cap.
+     */
+    @Test
+    void upToBicubicTheFineSplitGoesOnToItsToleranceAndCap() {
+        Random rnd = new Random(2020);
+        SplitOptions fine = SplitOptions.defaults();
+        SplitOptions coarse = fine.forPatches(SplitOptions.FINE_PATCHES + 1);
+        assertTrue(fine.fine() && !coarse.fine() && fine.forPatches(SplitOptions.FINE_PATCHES) == fine);
+        double[] box = new double[6];
+        int fineCount = 0, coarseCount = 0;
+        for (int trial = 0; trial < 200; trial++) {
+            int n = 1 + rnd.nextInt(3), m = 1 + rnd.nextInt(3);
+            BezierPatch patch = new BezierPatch(n, m, TestNets.randomNet(rnd, n, m, 3, 1));
+            for (SplitOptions options : new SplitOptions[] {fine, coarse}) {
+                double tolerance = options.fine() ? SplitOptions.FINE_FLATNESS * options.flatnessTolerance()
+                        : options.flatnessTolerance();
+                int cap = options.maxDepth() + (options.fine() ? SplitOptions.FINE_DEPTH : 0);
+                PatchPieces pieces = PatchSplitter.split(patch, options);
+                for (int p = 0; p < pieces.count(); p++) {
+                    int off = p * pieces.netLength();
+                    double width = pieces.boxes()[4 * p + 1] - pieces.boxes()[4 * p];
+                    double height = pieces.boxes()[4 * p + 3] - pieces.boxes()[4 * p + 2];
+                    int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
+                    NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
+                    double size = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+                    String where = "trial " + trial + " " + n + "x" + m + " piece " + p + " depth " + depth
+                            + " fine " + options.fine();
+                    assertTrue(depth <= cap, where);
+                    assertTrue(PatchSplitter.flatness(pieces.nets(), off, n, m) <= tolerance * size || depth == cap,
+                            "a piece neither flat nor at the cap: " + where);
+                }
+                if (options.fine()) {
+                    fineCount += pieces.count();
+                } else {
+                    coarseCount += pieces.count();
+                }
+            }
+        }
+        assertTrue(fineCount > 2 * coarseCount, fineCount + " fine pieces, " + coarseCount + " coarse");
+    }
+
+    /**
+     * The strongly curved arch: alone in a scene it gets the fine split, with several times the
+     * base split's leaves; in a scene of more than {@link SplitOptions#FINE_PATCHES} patches (far
+     * apart, so the scene-relative stop stays below its pieces) the base split's leaves exactly.
+     */
+    @Test
+    void aStronglyCurvedBicubicIsSplitFinelyAloneAndAsBeforeInABigScene() {
+        BezierPatch arch = org.beziertracer.model.io.GeneratedModels.curvedPatch();
+        SplitOptions options = SplitOptions.defaults();
+        PatchPieces coarse = PatchSplitter.split(arch, options.forPatches(SplitOptions.FINE_PATCHES + 1));
+        PatchPieces fine = PatchSplitter.split(arch, options);
+        assertTrue(fine.count() >= 3 * coarse.count(), fine.count() + " leaves fine, " + coarse.count() + " coarse");
+        assertEquals(fine.count(), SubPatchTable.build(List.of(arch), options).countOf(0));
+        List<BezierPatch> many = new java.util.ArrayList<>();
+        for (int k = 0; k <= SplitOptions.FINE_PATCHES; k++) {
+            many.add(arch);
+        }
+        SubPatchTable big = SubPatchTable.build(many, options);
+        assertEquals(coarse.count(), big.countOf(0));
+        assertEquals(coarse.count(), big.countOf(SplitOptions.FINE_PATCHES));
+        assertEquals(false, big.options().fine());
     }
 }

@@ -21,16 +21,21 @@ class SplitOptionsTest {
     }
 
     @Test
-    void higherDegreesGetAFinerToleranceAndADeeperCapBicubicsDoNot() {
+    void higherDegreesGetAFinerToleranceAndADeeperCapBicubicsTheFineSplitsOnly() {
         SplitOptions d = SplitOptions.defaults();
+        SplitOptions big = d.forPatches(SplitOptions.FINE_PATCHES + 1);
         for (int n = 1; n <= 3; n++) {
-            assertEquals(0.05, d.flatnessFor(n, 3 - n + 1));
-            assertEquals(6, d.maxDepthFor(n, 3));
+            assertEquals(0.05 * SplitOptions.FINE_FLATNESS, d.flatnessFor(n, 3 - n + 1));
+            assertEquals(6 + SplitOptions.FINE_DEPTH, d.maxDepthFor(n, 3));
+            assertEquals(0.05, big.flatnessFor(n, 3 - n + 1));
+            assertEquals(6, big.maxDepthFor(n, 3));
         }
+        assertEquals(0, new SplitOptions(true, 0.05, 0).maxDepthFor(3, 3), "no split stays no split");
         assertEquals(0.05 * 3 / 9, d.flatnessFor(9, 9), 1e-15);
         assertEquals(0.05 * 3 / 5, d.flatnessFor(2, 5), 1e-15);
         int[] extra = {0, 0, 0, 0, 2, 2, 2, 4, 4, 4, 4, 4, 4, 6, 6, 6}; // by max(n, m) = 0..15
-        for (int deg = 1; deg <= 15; deg++) {
+        for (int deg = 4; deg <= 15; deg++) {
+            assertEquals(big.maxDepthFor(deg, 1), d.maxDepthFor(deg, 1), "the fine split is for bicubics only");
             assertEquals(6 + extra[deg], d.maxDepthFor(deg, 1), "degree " + deg);
             assertEquals(6 + extra[deg], d.maxDepthFor(1, deg), "degree " + deg);
         }
