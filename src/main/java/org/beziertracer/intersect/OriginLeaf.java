@@ -3,9 +3,9 @@ package org.beziertracer.intersect;
 import org.beziertracer.geometry.SubPatchTable;
 
 /**
- * A shadow ray cannot meet the sub-patch it leaves when the sub-patch lies below the plane through
- * the ray's origin parallel to the surface's tangent plane there: a proof that skips the clipping
- * search a shadow ray otherwise runs on its own leaf.
+ * A shadow ray cannot meet a sub-patch of the patch it leaves when the sub-patch lies below the
+ * plane through the ray's origin parallel to the surface's tangent plane there: a proof that skips
+ * the clipping search a shadow ray otherwise runs on its own leaf and on its neighbours.
  *
  * <p>The ray leaves the point {@code P = S(u0, v0)} from {@code O = P + h0·n} ({@code n} the unit
  * normal on the light's side, {@code h0 > 0} the renderer's offset), in a direction {@code d}
@@ -14,7 +14,9 @@ import org.beziertracer.geometry.SubPatchTable;
  * coefficients over the leaf are {@code n·(P_ij − P)}; split at {@code (u0, v0)} into four pieces
  * (de Casteljau), each piece has P as a corner, where {@code h} and its first derivatives vanish,
  * so on a surface that curves away from the light (the outside of a teapot) every coefficient of
- * every piece is at most about zero. When they are all at most {@code h0/2}, the convex-hull
+ * every piece is at most about zero. Another leaf of the same patch is split at its point nearest
+ * to {@code (u0, v0)} in parameters instead (on a shared edge, where {@code h} is about zero and
+ * falls into the leaf). When they are all at most {@code h0/2}, the convex-hull
  * property puts the whole leaf at {@code n·(X − O) ≤ −h0/2 < 0}, and the ray cannot meet it. The
  * margin {@code h0/2} is many orders above the rounding of the coefficients, which the test also
  * requires ({@link #ROUNDING}). Nothing is proven on a surface that curves toward the light (a
@@ -46,8 +48,8 @@ final class OriginLeaf {
     /**
      * True when leaf {@code s} provably does not meet the context's any-hit ray, which leaves the
      * surface point its {@code origin*} fields describe (a point of this leaf's patch); false when that
-     * is not proven (not a polynomial leaf, the point not on this leaf, a ray that does not leave
-     * on the normal's side, a surface that curves toward it).
+     * is not proven (not a polynomial leaf, a ray that does not leave on the normal's side, a
+     * surface that curves toward it).
      */
     static boolean cannotMeet(TraceContext ctx, SubPatchTable tab, int s) {
         // A leaf this thread could not prove lately (a saddle, a bowl) is searched without trying
@@ -89,9 +91,13 @@ final class OriginLeaf {
         if (tab.patchDim[k] != 3 || !(ctx.tMin >= 0)) {
             return false;
         }
-        double a = leafParameter(ctx, tab, s, true), b = leafParameter(ctx, tab, s, false);
-        if (!(a >= 0 && a <= 1 && b >= 0 && b <= 1)) {
-            return false;
+        // The split at the origin's point, clamped to the leaf: on another leaf of the same patch,
+        // the leaf's point nearest to it in parameters (any split point makes the proof; a near
+        // one makes it tight)
+        double a = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, true)));
+        double b = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, false)));
+        if (!(a >= 0 && b >= 0)) {
+            return false; // NaN
         }
         double nx = ctx.originNx, ny = ctx.originNy, nz = ctx.originNz;
         double px = ctx.originPx, py = ctx.originPy, pz = ctx.originPz;

@@ -75,8 +75,12 @@ abstract class PatchLeaves implements Leaves {
     @Override
     public final boolean occludes(TraceContext ctx, int s, double tMax) {
         ctx.solverCalls++;
-        if (s == ctx.originLeaf && OriginLeaf.cannotMeet(ctx, table, s)) {
-            return false; // the shadow ray's own leaf, which it provably leaves behind
+        int origin = ctx.originLeaf;
+        // A leaf of the patch a shadow ray leaves, provably behind it, is skipped; but one proven
+        // single-root costs less to solve (Newton, from the origin's point on its own leaf)
+        if (origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
+                && OriginLeaf.cannotMeet(ctx, table, s)) {
+            return false;
         }
         return solve(ctx, s, ctx.tMin, tMax);
     }

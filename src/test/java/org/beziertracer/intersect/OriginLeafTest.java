@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 class OriginLeafTest {
 
     /** What one scene's trials saw. */
-    record Tally(int rays, int proven, int ownLeafHits) {}
+    record Tally(int rays, int proven, int ownLeafHits, int neighboursProven) {}
 
     /**
      * Rays at random points of {@code scene} from random directions; at each hit a shadow ray
@@ -42,7 +42,7 @@ class OriginLeafTest {
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
-        int rays = 0, proven = 0, own = 0;
+        int rays = 0, proven = 0, own = 0, neighbours = 0;
         for (int trial = 0; trial < trials; trial++) {
             // A camera-like ray from outside toward a random point of the scene's box
             double[] o = new double[3], d = new double[3];
@@ -98,8 +98,24 @@ class OriginLeafTest {
             assertFalse(skip && meets, () -> ray + ": the proof skips a leaf the ray meets at t = " + fresh.rootT);
             proven += skip ? 1 : 0;
             own += meets ? 1 : 0;
+            // The other leaves of the same patch: the proof splits them at the point nearest the
+            // origin's (u, v); whenever it holds, the search finds no root there either
+            int k = leaves.table.parent[from.subPatch];
+            for (int s = leaves.table.firstOf[k]; s < leaves.table.firstOf[k + 1]; s++) {
+                if (s == from.subPatch) {
+                    continue;
+                }
+                fresh.setRay(ox, oy, oz, lx, ly, lz);
+                boolean skipOther = OriginLeaf.cannotMeet(fresh, leaves.table, s);
+                if (skipOther) {
+                    int leaf = s;
+                    assertFalse(leaves.solve(fresh, s, 0, far),
+                            () -> ray + ": the proof skips leaf " + leaf + ", which the ray meets at t = " + fresh.rootT);
+                    neighbours++;
+                }
+            }
         }
-        return new Tally(rays, proven, own);
+        return new Tally(rays, proven, own, neighbours);
     }
 
     @Test
@@ -107,6 +123,7 @@ class OriginLeafTest {
         Tally t = check(Models.teapot(), new Random(70), 1500, "teapot");
         assertTrue(t.rays() > 500, "too few hits: " + t);
         assertTrue(t.proven() > t.rays() / 2, "the convex teapot should mostly be proven: " + t);
+        assertTrue(t.neighboursProven() > t.rays(), "the neighbouring leaves of the same patch too: " + t);
     }
 
     @Test
