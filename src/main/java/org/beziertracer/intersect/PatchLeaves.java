@@ -59,6 +59,7 @@ abstract class PatchLeaves implements Leaves {
     @Override
     public final double intersect(TraceContext ctx, int s, double tMax) {
         ctx.solverCalls++;
+        ctx.ensurePlanes();
         if (!solve(ctx, s, ctx.tMin, tMax)) {
             return tMax;
         }
@@ -75,6 +76,7 @@ abstract class PatchLeaves implements Leaves {
     @Override
     public final boolean occludes(TraceContext ctx, int s, double tMax) {
         ctx.solverCalls++;
+        ctx.ensurePlanes();
         int origin = ctx.originLeaf;
         // A leaf of the patch a shadow ray leaves, provably behind it, is skipped; but one proven
         // single-root costs less to solve (Newton, from the origin's point on its own leaf)

@@ -127,7 +127,7 @@ public final class SceneIntersector {
     public boolean closestHit(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                               double tMin, double tMax, Hit hit) {
         ctx.ensureStack(accel.stackSize());
-        ctx.setRay(ox, oy, oz, dx, dy, dz);
+        ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.beginClosestHit(tMin);
         leaves.beginRay(ctx);
         double best = tMax;
@@ -177,7 +177,7 @@ public final class SceneIntersector {
     public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMin, double tMax) {
         ctx.ensureStack(accel.stackSize());
-        ctx.setRay(ox, oy, oz, dx, dy, dz);
+        ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
         ctx.anyHit = true;
         for (int k = 0; k < shapes.sphereCount; k++) {

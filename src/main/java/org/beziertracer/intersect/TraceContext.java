@@ -31,6 +31,8 @@ public final class TraceContext {
     double n1x, n1y, n1z, n2x, n2y, n2z, n3x, n3y, n3z;
     /** 1/|d|: converts the third ray-space coordinate (a distance) into the ray parameter t. */
     double invLength;
+    /** True when {@code n1, n2, n3} and {@link #invLength} are the current ray's ({@link #setTraversal}). */
+    boolean planesSet;
 
     // Tessellated mode: the watertight triangle test's per-ray permutation and shear (TriangleMesh.setRay)
     int kx, ky, kz;
@@ -125,9 +127,33 @@ public final class TraceContext {
      * length may be anything from about 1e-300 to 1e300.
      */
     void setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
+        setTraversal(ox, oy, oz, dx, dy, dz);
+        planes();
+    }
+
+    /**
+     * The ray {@code o + t·d} for a traversal: origin, direction and reciprocals only. Its frame
+     * ({@code n1, n2, n3}, {@link #invLength}) is made by {@link #ensurePlanes} when a patch leaf
+     * first needs it: most rays (those that miss every leaf box, every ray of the tessellated mode)
+     * never do, and the frame costs two square roots and two divisions.
+     */
+    void setTraversal(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
         invDx = 1.0 / dx; invDy = 1.0 / dy; invDz = 1.0 / dz;
+        planesSet = false;
+    }
+
+    /** Makes the current ray's frame unless it is made already (see {@link #setTraversal}). */
+    void ensurePlanes() {
+        if (!planesSet) {
+            planes();
+        }
+    }
+
+    /** The ray's frame: {@code n3} along d, {@code n1}, {@code n2} across it, and {@link #invLength}. */
+    private void planes() {
+        planesSet = true;
         double squared = dx * dx + dy * dy + dz * dz;
         if (squared > SQUARES_FROM && squared < SQUARES_TO) {
             // the usual direction: its squared length neither underflows nor overflows, so one

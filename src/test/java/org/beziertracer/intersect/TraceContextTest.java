@@ -148,4 +148,46 @@ class TraceContextTest {
         assertNotSame(first, c.stack);
         assertTrue(c.stack.length >= first.length + 1);
     }
+
+    /**
+     * A traversal's ray has no frame until a leaf asks for it, and then the frame {@code setRay}
+     * makes, to the bit; the next ray's traversal drops it again. Queries through the scene answer
+     * every ray with its own frame (two rays in turn, the second a different direction).
+     */
+    @Test
+    void aTraversalsFrameIsMadeOnDemandAndIsTheRaysOwn() {
+        Random rnd = new Random(96);
+        TraceContext lazy = new TraceContext(), eager = new TraceContext();
+        for (int trial = 0; trial < 200; trial++) {
+            double ox = rnd.nextGaussian(), oy = rnd.nextGaussian(), oz = rnd.nextGaussian();
+            double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+            lazy.setTraversal(ox, oy, oz, dx, dy, dz);
+            assertTrue(!lazy.planesSet, "a traversal starts without a frame");
+            assertEquals(1 / dx, lazy.invDx);
+            lazy.ensurePlanes();
+            eager.setRay(ox, oy, oz, dx, dy, dz);
+            assertTrue(lazy.planesSet && eager.planesSet);
+            double[] a = {lazy.n1x, lazy.n1y, lazy.n1z, lazy.n2x, lazy.n2y, lazy.n2z, lazy.n3x, lazy.n3y, lazy.n3z,
+                    lazy.invLength};
+            double[] b = {eager.n1x, eager.n1y, eager.n1z, eager.n2x, eager.n2y, eager.n2z, eager.n3x, eager.n3y,
+                    eager.n3z, eager.invLength};
+            org.junit.jupiter.api.Assertions.assertArrayEquals(b, a, 0, "trial " + trial);
+        }
+        // Through the scene: the teapot hit from two sides in turn, each against a fresh context
+        SceneIntersector si = SceneIntersector.build(org.beziertracer.model.io.Models.teapot(),
+                IntersectOptions.defaults());
+        TraceContext shared = si.newContext();
+        Hit hit = new Hit();
+        double[][] rays = {{0, -300, 40, 0, 1, 0}, {-300, 0, 40, 1, 0, 0}, {0, 0, 300, 0.01, 0.02, -1}};
+        for (int round = 0; round < 2; round++) {
+            for (double[] r : rays) {
+                TraceContext fresh = si.newContext();
+                Hit expected = new Hit();
+                assertTrue(si.closestHit(fresh, r[0], r[1], r[2], r[3], r[4], r[5], 0, Double.POSITIVE_INFINITY, expected));
+                assertTrue(si.closestHit(shared, r[0], r[1], r[2], r[3], r[4], r[5], 0, Double.POSITIVE_INFINITY, hit));
+                assertEquals(expected.t, hit.t, 0);
+                assertEquals(expected.u, hit.u, 0);
+            }
+        }
+    }
 }
