@@ -86,11 +86,8 @@ class PatchSplitterTest {
             PatchPieces pieces = PatchSplitter.split(patch, options);
             for (int p = 0; p < pieces.count(); p++) {
                 int off = p * pieces.netLength();
-                double width = pieces.boxes()[4 * p + 1] - pieces.boxes()[4 * p];
-                double height = pieces.boxes()[4 * p + 3] - pieces.boxes()[4 * p + 2];
-                int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
-                NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
-                double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+                int depth = depth(pieces, p);
+                double diagonal = diagonal(pieces, p, n, m);
                 boolean flat = PatchSplitter.flatness(pieces.nets(), off, n, m) <= options.flatnessFor(n, m) * diagonal;
                 String where = "trial " + trial + " piece " + p + " depth " + depth + " " + options;
                 // past the base cap, only pieces near flat by the base tolerance are split on
@@ -147,17 +144,27 @@ class PatchSplitterTest {
 
     private static double sq(double x) { return x * x; }
 
+    /** The number of halvings that made piece {@code p} (its parameter box's area is 2^-depth). */
+    private static int depth(PatchPieces pieces, int p) {
+        double width = pieces.boxes()[4 * p + 1] - pieces.boxes()[4 * p];
+        double height = pieces.boxes()[4 * p + 3] - pieces.boxes()[4 * p + 2];
+        return (int) Math.round(-Math.log(width * height) / Math.log(2));
+    }
+
+    /** The diagonal of piece {@code p}'s control box. */
+    private static double diagonal(PatchPieces pieces, int p, int n, int m) {
+        double[] box = new double[6];
+        NetMeasures.controlBounds(pieces.nets(), p * pieces.netLength(), n, m, box);
+        return Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+    }
+
     /**
      * True when piece {@code p} is within {@link PatchSplitter#PAST_CAP_FLATNESS} times the base
      * tolerance {@link SplitOptions#flatnessTolerance} of flat.
      */
     private static boolean flatByBase(PatchPieces pieces, int p, int n, int m, SplitOptions options) {
-        double[] box = new double[6];
-        int off = p * pieces.netLength();
-        NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
-        double diagonal = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
-        return PatchSplitter.flatness(pieces.nets(), off, n, m)
-                <= PatchSplitter.PAST_CAP_FLATNESS * options.flatnessTolerance() * diagonal;
+        return PatchSplitter.flatness(pieces.nets(), p * pieces.netLength(), n, m)
+                <= PatchSplitter.PAST_CAP_FLATNESS * options.flatnessTolerance() * diagonal(pieces, p, n, m);
     }
 
     @Test
@@ -242,7 +249,6 @@ class PatchSplitterTest {
         SplitOptions fine = SplitOptions.defaults();
         SplitOptions coarse = fine.forPatches(SplitOptions.FINE_PATCHES + 1);
         assertTrue(fine.fine() && !coarse.fine() && fine.forPatches(SplitOptions.FINE_PATCHES) == fine);
-        double[] box = new double[6];
         int fineCount = 0, coarseCount = 0;
         for (int trial = 0; trial < 200; trial++) {
             int n = 1 + rnd.nextInt(3), m = 1 + rnd.nextInt(3);
@@ -254,11 +260,8 @@ class PatchSplitterTest {
                 PatchPieces pieces = PatchSplitter.split(patch, options);
                 for (int p = 0; p < pieces.count(); p++) {
                     int off = p * pieces.netLength();
-                    double width = pieces.boxes()[4 * p + 1] - pieces.boxes()[4 * p];
-                    double height = pieces.boxes()[4 * p + 3] - pieces.boxes()[4 * p + 2];
-                    int depth = (int) Math.round(-Math.log(width * height) / Math.log(2));
-                    NetMeasures.controlBounds(pieces.nets(), off, n, m, box);
-                    double size = Math.sqrt(sq(box[3] - box[0]) + sq(box[4] - box[1]) + sq(box[5] - box[2]));
+                    int depth = depth(pieces, p);
+                    double size = diagonal(pieces, p, n, m);
                     String where = "trial " + trial + " " + n + "x" + m + " piece " + p + " depth " + depth
                             + " fine " + options.fine();
                     assertTrue(depth <= cap, where);
@@ -277,8 +280,8 @@ class PatchSplitterTest {
 
     /**
      * The strongly curved arch: alone in a scene it gets the fine split, with several times the
-     * base split's leaves; in a scene of more than {@link SplitOptions#FINE_PATCHES} patches (far
-     * apart, so the scene-relative stop stays below its pieces) the base split's leaves exactly.
+     * base split's leaves; in a scene of more than {@link SplitOptions#FINE_PATCHES} copies of it
+     * (whose scene-relative stop stays below its pieces) the base split's leaves exactly.
      */
     @Test
     void aStronglyCurvedBicubicIsSplitFinelyAloneAndAsBeforeInABigScene() {
