@@ -71,8 +71,8 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
      * docs/performance.md, "Sub-patch tuning"): flatness 0.05 of the box diagonal, at most 6
      * halvings, and the {@link #fine} split up to bicubic in scenes of at most
      * {@link #FINE_PATCHES} patches (the figures below are without it). Against the former
-     * 0.05 / 8 it makes 1,566 instead of 3,856 teapot sub-patches for the same work per ray (1.18 vs 1.16 solver calls, 2.29 vs 2.21 clip iterations) and no
-     * measurable change in rays/s, with a smaller BVH and a faster split. Coarser settings
+     * 0.05 / 8 it makes 1,566 instead of 3,856 teapot sub-patches for the same work per ray (1.18
+     * vs 1.16 solver calls, 2.29 vs 2.21 clip iterations) and no measurable change in rays/s, with a smaller BVH and a faster split. Coarser settings
      * (0.1 / 5) are as fast for clipping but make Newton's one-root-per-leaf start miss nearer
      * roots on wavy degree-9 patches ({@code BezierClipperTest}), so 6 is the floor for now.
      */
@@ -81,8 +81,8 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
     /**
      * The flatness tolerance for a degree {@code n}×{@code m} net: {@link #flatnessTolerance} up to
      * bicubic, scaled by {@value #FINE_FLATNESS} for the {@link #fine} split, and scaled by
-     * {@code 3 / max(n, m)} above bicubic, so higher-degree
-     * leaves end closer to their corners' bilinear patch. The work on a leaf grows with its degree
+     * {@code 3 / max(n, m)} above bicubic, so higher-degree leaves end closer to their corners'
+     * bilinear patch. The work on a leaf grows with its degree
      * (a clip iteration projects and restricts {@code (n+1)(m+1)} points, a Newton step evaluates
      * them), while a flatter leaf is more often proved single-root and solved by Newton from its
      * corners without clipping: on the 10×10-point wavy grid (degree 9) this cut the exact frame by
@@ -108,8 +108,8 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
 
     /**
      * The depth cap for a degree {@code n}×{@code m} net: {@link #maxDepth} up to bicubic, plus
-     * {@value #FINE_DEPTH} for the {@link #fine} split (no split when {@link #maxDepth} is 0), and above bicubic two halvings (one per direction) for each doubling
-     * of {@code max(n, m)} beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15
+     * {@value #FINE_DEPTH} for the {@link #fine} split (no split when {@link #maxDepth} is 0), and
+     * above bicubic two halvings (one per direction) for each doubling of {@code max(n, m)} beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15
      * +6. Past {@link #maxDepth} the splitter refines a net above bicubic only where it is near flat
      * by {@link #flatnessTolerance} (see {@link PatchSplitter}), so a net far from flat stays near
      * {@code 2^maxDepth} pieces. A split with a solver's own {@link #criterion} keeps its cap.
