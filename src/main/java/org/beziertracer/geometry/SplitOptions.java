@@ -109,8 +109,8 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
     /**
      * The depth cap for a degree {@code n}×{@code m} net: {@link #maxDepth} up to bicubic, plus
      * {@value #FINE_DEPTH} for the {@link #fine} split (no split when {@link #maxDepth} is 0), and
-     * above bicubic two halvings (one per direction) for each doubling of {@code max(n, m)} beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15
-     * +6. Past {@link #maxDepth} the splitter refines a net above bicubic only where it is near flat
+     * above bicubic two halvings (one per direction) for each doubling of {@code max(n, m)}
+     * beyond 3, rounded up, at most 16: degree 4..6 gets +2, 7..12 +4, 13..15 +6. Past {@link #maxDepth} the splitter refines a net above bicubic only where it is near flat
      * by {@link #flatnessTolerance} (see {@link PatchSplitter}), so a net far from flat stays near
      * {@code 2^maxDepth} pieces. A split with a solver's own {@link #criterion} keeps its cap.
      */
