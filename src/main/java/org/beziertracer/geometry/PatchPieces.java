@@ -20,4 +20,22 @@ public record PatchPieces(int degreeU, int degreeV, int count, double[] nets, do
                           boolean[] trimTest) {
     /** Doubles per control net. */
     public int netLength() { return (degreeU + 1) * (degreeV + 1) * 3; }
+
+    /** The pieces of {@code a} then those of {@code b} (two parts of one patch, same degree and kind). */
+    static PatchPieces concat(PatchPieces a, PatchPieces b) {
+        return new PatchPieces(a.degreeU, a.degreeV, a.count + b.count, join(a.nets, b.nets), join(a.boxes, b.boxes),
+                a.weights == null ? null : join(a.weights, b.weights), a.trimTest == null ? null : join(a.trimTest, b.trimTest));
+    }
+
+    private static double[] join(double[] a, double[] b) {
+        double[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+
+    private static boolean[] join(boolean[] a, boolean[] b) {
+        boolean[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
 }

@@ -1,6 +1,7 @@
 package org.beziertracer.geometry;
 
 import java.util.Arrays;
+import java.util.concurrent.ForkJoinTask;
 
 import org.beziertracer.math.Bounds;
 import org.beziertracer.model.BezierPatch;
@@ -73,6 +74,71 @@ public final class PatchSplitter {
         Recursion r = new Recursion(n, m, dim, options, minSize, w, trim, patch.domain());
         r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED);
         return w.out.pieces(n, m);
+    }
+
+    /**
+     * A kept leaf of {@link #resplit} may be this many times as far from flat (relative to its size)
+     * as a fresh split allows before it is halved on: a drag that bends a leaf a little keeps the
+     * leaf count, so the BVH is refitted, not rebuilt.
+     */
+    static final double KEPT_SLACK = 2;
+
+    /**
+     * {@code patch} (an edit of an untrimmed patch of the same degree) split along the halvings of an
+     * earlier split, whose leaves' parameter boxes are {@code boxes[4·from .. 4·to)} in the order it
+     * made them ({@link SubPatchTable#boxes}): each old leaf whose new net is still within
+     * {@link #KEPT_SLACK} times the tolerance of flat (the depth cap and the scene's stop as in
+     * {@link #split}) stays a leaf, any other is split on afresh below it. Internal nodes are halved
+     * as before without a test, so a drag re-splits its patch without deciding every halving again,
+     * and usually makes the same leaves (same count). Returns null for a trimmed patch or when the
+     * boxes are not such a split (then {@link #split} is the way).
+     */
+    public static PatchPieces resplit(BezierPatch patch, SplitOptions options, double minSize, Workspace w,
+                                      float[] boxes, int from, int to) {
+        if (patch.trim() != null || to <= from) {
+            return null;
+        }
+        double[] net = Patches.workingNet(patch);
+        SplitGuide guide = new SplitGuide(boxes, from, to);
+        if (to - from < PARALLEL_LEAVES || guide.takeLeaf(0, 1, 0, 1)) {
+            return follow(patch, options, minSize, w, net, 0, 1, 0, 1, new SplitGuide(boxes, from, to));
+        }
+        // Many leaves (a degree-9 patch has hundreds): the two halves of the root on two threads
+        boolean inU = guide.halvedInU(0, 1, 0, 1);
+        int mid = inU ? guide.runEnd(0, 0.5, 0, 1) : guide.runEnd(0, 1, 0, 0.5);
+        if (guide.failed() || mid == from) {
+            return null;
+        }
+        int n = patch.degreeU(), m = patch.degreeV(), length = net.length;
+        double[] a = new double[length], b = new double[length];
+        int dim = Patches.dim(patch);
+        if (inU) {
+            DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+        } else {
+            DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+        }
+        double bu0 = inU ? 0.5 : 0, bv0 = inU ? 0 : 0.5;
+        ForkJoinTask<PatchPieces> upper = ForkJoinTask.adapt(() -> follow(patch, options, minSize, new Workspace(), b,
+                bu0, 1, bv0, 1, new SplitGuide(boxes, mid, to))).fork();
+        PatchPieces lower = follow(patch, options, minSize, w, a, 0, inU ? 0.5 : 1, 0, inU ? 1 : 0.5,
+                new SplitGuide(boxes, from, mid));
+        PatchPieces higher = upper.join();
+        return lower == null || higher == null ? null : PatchPieces.concat(lower, higher);
+    }
+
+    /** Old leaves from which {@link #resplit} halves the root on two threads. */
+    static final int PARALLEL_LEAVES = 256;
+
+    /** The node {@code [u0,u1]×[v0,v1]} of {@code patch}, net {@code net}, re-split along {@code guide}; null when it fails. */
+    private static PatchPieces follow(BezierPatch patch, SplitOptions options, double minSize, Workspace w,
+                                      double[] net, double u0, double u1, double v0, double v1, SplitGuide guide) {
+        int n = patch.degreeU(), m = patch.degreeV();
+        int dim = Patches.dim(patch);
+        w.out.reset((n + 1) * (m + 1), dim == 4, false);
+        Recursion r = new Recursion(n, m, dim, options, minSize, w, null, patch.domain());
+        int depth = u1 - u0 < 1 || v1 - v0 < 1 ? 1 : 0;
+        r.follow(net, u0, u1, v0, v1, depth, guide);
+        return guide.failed() || !guide.finished() ? null : w.out.pieces(n, m);
     }
 
     /**
@@ -191,6 +257,54 @@ public final class PatchSplitter {
         }
 
         /**
+         * As {@link #visit}, halving as the old split {@code guide} did down to its leaves, where a
+         * leaf is kept when {@link #done} allows it with {@link #KEPT_SLACK}, else split on afresh.
+         */
+        void follow(double[] net, double u0, double u1, double v0, double v1, int depth, SplitGuide guide) {
+            if (guide.failed()) {
+                return;
+            }
+            if (guide.takeLeaf(u0, u1, v0, v1)) {
+                double[] xyz = net;
+                if (dim == 4) {
+                    RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
+                    xyz = euclid;
+                }
+                if (done(xyz, depth, TrimCurves.INSIDE, KEPT_SLACK)) {
+                    out.add(xyz, weights, u0, u1, v0, v1, false);
+                } else {
+                    visit(net, u0, u1, v0, v1, depth, TrimCurves.INSIDE);
+                }
+                return;
+            }
+            if (depth >= maxDepth) {
+                guide.fail(); // deeper than this split goes: not a split of these options
+                return;
+            }
+            boolean inU = guide.halvedInU(u0, u1, v0, v1);
+            if (guide.failed()) {
+                return;
+            }
+            w.ensureLevel(depth + 1, points * dim);
+            double[] a = w.lo[depth + 1], b = w.hi[depth + 1];
+            if (inU) {
+                double um = 0.5 * (u0 + u1);
+                DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+                follow(a, u0, um, v0, v1, depth + 1, guide);
+                follow(b, um, u1, v0, v1, depth + 1, guide);
+            } else {
+                double vm = 0.5 * (v0 + v1);
+                DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
+                follow(a, u0, u1, v0, vm, depth + 1, guide);
+                follow(b, u0, u1, vm, v1, depth + 1, guide);
+            }
+        }
+
+        private boolean done(double[] xyz, int depth, int trimState) {
+            return done(xyz, depth, trimState, 1);
+        }
+
+        /**
          * True when the piece is a leaf: no splitting, the depth cap, or flat — but a piece that a
          * trim curve crosses is split on to the (base) depth cap, so that most hits fall in pieces
          * wholly inside (no trim test) and the pieces that need the test are small. Up to bicubic
@@ -207,7 +321,7 @@ public final class PatchSplitter {
          * 60–66 or, in 3 runs of 7, 127–139; at degree 3 and above the twist split the tuned leaves
          * further and cost 11–12 % on the curved and wavy10 frames, so there it is left out).
          */
-        private boolean done(double[] xyz, int depth, int trimState) {
+        private boolean done(double[] xyz, int depth, int trimState, double slack) {
             if (!options.enabled() || depth >= maxDepth) {
                 return true;
             }
@@ -223,9 +337,9 @@ public final class PatchSplitter {
             }
             double f = flatness(xyz, 0, n, m, flatnessScratch);
             if (pastBaseCap && !upToBicubic) {
-                return f <= flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
+                return f <= slack * flatness * size || f > PAST_CAP_FLATNESS * options.flatnessTolerance() * size;
             }
-            if (f > flatness * size) {
+            if (f > slack * flatness * size) {
                 return false;
             }
             if (dim == 4) {

@@ -200,7 +200,7 @@ public final class SubPatchTable {
         }
         t.firstOf[pieces.length] = s;
         IntStream fill = IntStream.range(0, pieces.length);
-        (parallel ? fill.parallel() : fill).forEach(k -> t.fill(k, pieces[k]));
+        (parallel ? fill.parallel() : fill).forEach(k -> t.fill(k, pieces[k], !parallel));
         return t;
     }
 
@@ -239,11 +239,15 @@ public final class SubPatchTable {
     /** The parameter box of a whole patch. */
     private static final double[] WHOLE = {0, 1, 0, 1};
 
-    /** Writes patch {@code k}'s region (its offsets already set) from its pieces (null: whole). */
-    private void fill(int k, PatchPieces p) {
+    /**
+     * Writes patch {@code k}'s region (its offsets already set) from its pieces (null: whole); with
+     * {@code parallelLeaves} (an edit, which fills one patch or a few, or a build of a few patches)
+     * its leaves in chunks on the common pool (a bigger build fills patches in parallel instead).
+     */
+    private void fill(int k, PatchPieces p, boolean parallelLeaves) {
         BezierPatch patch = patches.get(k);
         int n = patch.degreeU(), m = patch.degreeV(), points = patch.pointCount(), len = 3 * points;
-        int off = patchNetOffset[k], s0 = firstOf[k], leaves = leafCount(p), dim = Patches.dim(patch);
+        int off = patchNetOffset[k], leaves = leafCount(p), dim = Patches.dim(patch);
         if (dim == 3) {
             patch.copyNetInto(nets, off);
         } else {
@@ -265,9 +269,25 @@ public final class SubPatchTable {
         if (p != null) {
             System.arraycopy(p.nets(), 0, nets, leafBase, leaves * len);
         }
+        if (!parallelLeaves || leaves <= LEAF_CHUNK) {
+            fillLeaves(k, p, 0, leaves);
+        } else {
+            java.util.stream.IntStream.range(0, (leaves + LEAF_CHUNK - 1) / LEAF_CHUNK).parallel()
+                    .forEach(c -> fillLeaves(k, p, c * LEAF_CHUNK, Math.min(leaves, (c + 1) * LEAF_CHUNK)));
+        }
+    }
+
+    /** Leaves of one patch that a task of {@link #fill} handles (a degree-9 patch has hundreds). */
+    private static final int LEAF_CHUNK = 128;
+
+    /** The leaves {@code from .. to-1} of patch {@code k} (its region written) from its pieces (null: whole). */
+    private void fillLeaves(int k, PatchPieces p, int from, int to) {
+        int n = patchDegreeU[k], m = patchDegreeV[k], points = (n + 1) * (m + 1), len = 3 * points;
+        int off = patchNetOffset[k], s0 = firstOf[k];
+        int leafBase = off + (int) patchLength(patches.get(k));
         double[] pieceBoxes = p == null ? WHOLE : p.boxes();
         double[] box = new double[6];
-        for (int i = 0; i < leaves; i++) {
+        for (int i = from; i < to; i++) {
             int s = s0 + i, o = p == null ? off : leafBase + i * len;
             parent[s] = k;
             degreeU[s] = (byte) n;
@@ -336,6 +356,17 @@ public final class SubPatchTable {
      * changed (an edit that moves a point shared by several patches).
      */
     public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements) {
+        return withPatches(indices, replacements, false);
+    }
+
+    /**
+     * As {@link #withPatches(int[], List)}; with {@code keepSplit}, an edited patch of unchanged
+     * degree, untrimmed before and after, is re-split along its old halvings
+     * ({@link PatchSplitter#resplit}): its leaves stay where they are still near flat, so a drag
+     * usually keeps the leaf count (and the BVH is refitted). Such a table may have more leaves than
+     * a fresh split of the same patches (a leaf the edit made flatter is not merged back).
+     */
+    public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements, boolean keepSplit) {
         var list = new java.util.ArrayList<>(patches);
         TrimCurves[] trims = patchTrim.clone();
         boolean rational = weights != null;
@@ -362,7 +393,11 @@ public final class SubPatchTable {
         PatchSplitter.Workspace w = new PatchSplitter.Workspace();
         for (int e = 0; e < edited.length; e++) {
             int k = edited[e];
-            pieces[e] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize, w));
+            BezierPatch was = patches.get(k), now = list.get(k);
+            PatchPieces p = keepSplit && was.trim() == null && was.degreeU() == now.degreeU()
+                    && was.degreeV() == now.degreeV() && was.isRational() == now.isRational()
+                    ? PatchSplitter.resplit(now, options, minSize, w, boxes, firstOf[k], firstOf[k + 1]) : null;
+            pieces[e] = kept(p != null ? p : PatchSplitter.split(now, options, trims[k], minSize, w));
             dLeaves[e] = leafCount(pieces[e]) - (firstOf[k + 1] - firstOf[k]);
             dNets[e] = regionLength(list.get(k), pieces[e]) - (regionEnd(k) - patchNetOffset[k]);
             leaves += dLeaves[e];
@@ -371,7 +406,7 @@ public final class SubPatchTable {
         SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims);
         copyAround(t, edited, dLeaves, dNets);
         for (int e = 0; e < edited.length; e++) {
-            t.fill(edited[e], pieces[e]);
+            t.fill(edited[e], pieces[e], true);
         }
         return t;
     }

@@ -26,6 +26,12 @@ final class ClippingLeaves extends PatchLeaves {
         this.quadratics = records != null ? LeafQuadratics.build(table) : null;
     }
 
+    private ClippingLeaves(SubPatchTable table, double tolerance, float[] records, float[] quadratics) {
+        super(table, tolerance);
+        this.records = records;
+        this.quadratics = quadratics;
+    }
+
     /** True when a table of {@code leaves} leaves gets records. */
     static boolean hasRecords(long leaves) {
         return leaves <= RECORD_LEAVES;
@@ -39,6 +45,17 @@ final class ClippingLeaves extends PatchLeaves {
     @Override
     ClippingLeaves with(SubPatchTable edited, double editedTolerance) {
         return new ClippingLeaves(edited, editedTolerance);
+    }
+
+    /** The records and models of the patches not edited are copied, not recomputed. */
+    @Override
+    ClippingLeaves with(SubPatchTable edited, double editedTolerance, int[] editedPatches) {
+        if (records == null || !hasRecords(edited.count)) {
+            return with(edited, editedTolerance);
+        }
+        return new ClippingLeaves(edited, editedTolerance,
+                NewtonLeafRecords.edited(records, table, edited, editedPatches),
+                LeafQuadratics.edited(quadratics, table, edited, editedPatches));
     }
 
     @Override

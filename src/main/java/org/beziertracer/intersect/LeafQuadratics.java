@@ -50,11 +50,7 @@ final class LeafQuadratics {
      * one (every patch bicubic or smaller, or rational).
      */
     static float[] build(SubPatchTable table) {
-        boolean any = false;
-        for (int k = 0; k < table.patchCount() && !any; k++) {
-            any = table.patchDim[k] == 3 && worthIt(table.patchDegreeU[k], table.patchDegreeV[k]);
-        }
-        if (!any) {
+        if (!needed(table)) {
             return null;
         }
         float[] out = new float[STRIDE * table.count];
@@ -63,6 +59,28 @@ final class LeafQuadratics {
         (chunks > 1 ? range.parallel() : range).forEach(c -> fill(table, out, c * CHUNK,
                 Math.min(table.count, (c + 1) * CHUNK)));
         return out;
+    }
+
+    /** True when some leaf of {@code table} gets a model. */
+    static boolean needed(SubPatchTable table) {
+        for (int k = 0; k < table.patchCount(); k++) {
+            if (table.patchDim[k] == 3 && worthIt(table.patchDegreeU[k], table.patchDegreeV[k])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The models of {@code after}, an edit of {@code before} in the patches {@code edited}, given
+     * {@code before}'s models {@code old}: only the edited patches' leaves are computed
+     * ({@link EditedLeafData}); null when no leaf gets one.
+     */
+    static float[] edited(float[] old, SubPatchTable before, SubPatchTable after, int[] edited) {
+        if (!needed(after)) {
+            return null;
+        }
+        return old == null ? build(after) : EditedLeafData.of(old, before, after, edited, STRIDE, LeafQuadratics::fill);
     }
 
     private static void fill(SubPatchTable tab, float[] out, int from, int to) {

@@ -63,6 +63,14 @@ final class NewtonLeafRecords {
     /** Leaves a task of the parallel {@link #build} fills. */
     private static final int CHUNK = 4096;
 
+    /**
+     * The records of {@code after}, an edit of {@code before} (whose records are {@code old}) in the
+     * patches {@code edited}: only those patches' leaves are computed ({@link EditedLeafData}).
+     */
+    static float[] edited(float[] old, SubPatchTable before, SubPatchTable after, int[] edited) {
+        return EditedLeafData.of(old, before, after, edited, STRIDE, NewtonLeafRecords::fill);
+    }
+
     /** The records of leaves {@code from .. to-1}. */
     private static void fill(SubPatchTable table, float[] rec, int from, int to) {
         double[] frame = new double[STRIDE];

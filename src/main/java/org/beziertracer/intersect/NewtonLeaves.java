@@ -13,8 +13,12 @@ final class NewtonLeaves extends PatchLeaves {
     private final float[] records;
 
     NewtonLeaves(SubPatchTable table, double tolerance) {
+        this(table, tolerance, NewtonLeafRecords.build(table));
+    }
+
+    private NewtonLeaves(SubPatchTable table, double tolerance, float[] records) {
         super(table, tolerance);
-        this.records = NewtonLeafRecords.build(table);
+        this.records = records;
     }
 
     @Override
@@ -25,6 +29,12 @@ final class NewtonLeaves extends PatchLeaves {
     @Override
     NewtonLeaves with(SubPatchTable edited, double editedTolerance) {
         return new NewtonLeaves(edited, editedTolerance);
+    }
+
+    /** The records of the patches not edited are copied, not recomputed. */
+    @Override
+    NewtonLeaves with(SubPatchTable edited, double editedTolerance, int[] editedPatches) {
+        return new NewtonLeaves(edited, editedTolerance, NewtonLeafRecords.edited(records, table, edited, editedPatches));
     }
 
     @Override

@@ -126,21 +126,35 @@ abstract class PatchLeaves implements Leaves {
         sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
     }
 
-    /** Re-splits only the edited patch ({@link SubPatchTable#withPatch}). */
+    /** Re-splits only the edited patch, as {@link #withPatches}. */
     @Override
     public final PatchLeaves withPatch(Scene edited, int index, double sceneSize) {
-        return TrimmedLeaves.ifTrimmed(with(table.withPatch(index, edited.patches().get(index)),
-                RELATIVE_TOLERANCE * sceneSize));
+        return withPatches(edited, new int[] {index}, sceneSize);
     }
 
-    /** Re-splits only the edited patches, in one new table ({@link SubPatchTable#withPatches}). */
+    /**
+     * Re-splits only the edited patches, in one new table, each along its old halvings where they
+     * still fit ({@link SubPatchTable#withPatches(int[], java.util.List, boolean)}: a drag usually
+     * keeps the leaf count, and the BVH is refitted); the solver's per-leaf data of the other
+     * patches is copied ({@link #with(SubPatchTable, double, int[])}).
+     */
     @Override
     public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
         java.util.List<org.beziertracer.model.BezierPatch> replacements = new java.util.ArrayList<>(indices.length);
         for (int index : indices) {
             replacements.add(edited.patches().get(index));
         }
-        return TrimmedLeaves.ifTrimmed(with(table.withPatches(indices, replacements), RELATIVE_TOLERANCE * sceneSize));
+        SubPatchTable after = table.withPatches(indices, replacements, true);
+        return TrimmedLeaves.ifTrimmed(with(after, RELATIVE_TOLERANCE * sceneSize, indices));
+    }
+
+    /**
+     * {@link #with(SubPatchTable, double)} for {@code edited}, this table edited in the patches
+     * {@code editedPatches} only: a solver with per-leaf data computes it for those patches' leaves
+     * and copies the rest ({@link EditedLeafData}).
+     */
+    PatchLeaves with(SubPatchTable edited, double editedTolerance, int[] editedPatches) {
+        return with(edited, editedTolerance);
     }
 
     @Override

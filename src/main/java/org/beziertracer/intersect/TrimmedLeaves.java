@@ -74,4 +74,9 @@ final class TrimmedLeaves extends PatchLeaves {
     PatchLeaves with(SubPatchTable edited, double editedTolerance) {
         return ifTrimmed(inner.with(edited, editedTolerance));
     }
+
+    @Override
+    PatchLeaves with(SubPatchTable edited, double editedTolerance, int[] editedPatches) {
+        return ifTrimmed(inner.with(edited, editedTolerance, editedPatches));
+    }
 }
