@@ -134,8 +134,9 @@ class PatchLeavesTest {
 
     /**
      * Editing through the leaves themselves (one patch, or several) gives the same solver over the
-     * table re-split for that patch (which keeps its scene-relative split size, so it need not
-     * match a fresh build's leaves), with the tolerance of the edited scene's size.
+     * table re-split for that patch along its old halvings (which keeps its scene-relative split
+     * size and its leaves where they still fit, so it need not match a fresh build's leaves), with
+     * the tolerance of the edited scene's size.
      */
     @Test
     void anEditRemakesTheLeavesOfTheSameSolverAsAFreshBuild() {
@@ -147,7 +148,7 @@ class PatchLeavesTest {
             PatchLeaves leaves = (PatchLeaves) si.leaves;
             Scene edited = scene.withPatch(2, scene.patches().get(2).withPoint(1, 1, 9, 9, 9));
             double size = SceneIntersector.build(edited, io).sceneSize();
-            PatchLeaves fresh = method.leaves.create(leaves.table.withPatch(2, edited.patches().get(2)),
+            PatchLeaves fresh = method.leaves.create(leaves.table.withPatches(new int[] {2}, List.of(edited.patches().get(2)), true),
                     PatchLeaves.RELATIVE_TOLERANCE * size);
             for (Leaves remade : List.of(leaves.withPatch(edited, 2, size), leaves.withPatches(edited, new int[] {2}, size))) {
                 assertSame(leaves.getClass(), remade.getClass(), method.label());
