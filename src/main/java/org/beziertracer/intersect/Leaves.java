@@ -86,9 +86,12 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
 
     /**
      * {@link #withPatch} for several patches at once ({@code edited} differs from the old scene in
-     * patches {@code indices} only): the data is remade once, not once per patch.
+     * patches {@code indices} only): the data is remade once, not once per patch. With
+     * {@code keepSplit}, leaves that subdivide a patch may keep its old subdivision where it still
+     * fits (a drag then usually keeps {@link #count()}); without, the edited patches are made as a
+     * fresh build makes them.
      */
-    Leaves withPatches(Scene edited, int[] indices, double sceneSize);
+    Leaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit);
 
     /** Heap held by these leaves' data (not the model's patches), in bytes. */
     long bytes();

@@ -126,25 +126,25 @@ abstract class PatchLeaves implements Leaves {
         sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
     }
 
-    /** Re-splits only the edited patch, as {@link #withPatches}. */
+    /** Re-splits only the edited patch, as {@link #withPatches} keeping its split. */
     @Override
     public final PatchLeaves withPatch(Scene edited, int index, double sceneSize) {
-        return withPatches(edited, new int[] {index}, sceneSize);
+        return withPatches(edited, new int[] {index}, sceneSize, true);
     }
 
     /**
-     * Re-splits only the edited patches, in one new table, each along its old halvings where they
-     * still fit ({@link SubPatchTable#withPatches(int[], java.util.List, boolean)}: a drag usually
+     * Re-splits only the edited patches, in one new table, with {@code keepSplit} each along its old
+     * halvings where they still fit ({@link SubPatchTable#withPatches(int[], java.util.List, boolean)}: a drag usually
      * keeps the leaf count, and the BVH is refitted); the solver's per-leaf data of the other
      * patches is copied ({@link #with(SubPatchTable, double, int[])}).
      */
     @Override
-    public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
+    public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit) {
         java.util.List<org.beziertracer.model.BezierPatch> replacements = new java.util.ArrayList<>(indices.length);
         for (int index : indices) {
             replacements.add(edited.patches().get(index));
         }
-        SubPatchTable after = table.withPatches(indices, replacements, true);
+        SubPatchTable after = table.withPatches(indices, replacements, keepSplit);
         return TrimmedLeaves.ifTrimmed(with(after, RELATIVE_TOLERANCE * sceneSize, indices));
     }
 

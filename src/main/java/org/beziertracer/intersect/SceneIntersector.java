@@ -31,9 +31,11 @@ public final class SceneIntersector {
     final AnalyticShapes shapes;
     final double sceneSize;
     final double buildMillis;
+    /** Edits since the leaves were last made afresh ({@link #withPatches}); 0 after a build. */
+    final int keptEdits;
 
     private SceneIntersector(Scene scene, Leaves leaves, Accelerator accel, IntersectOptions options,
-                             double sceneSize, double buildMillis) {
+                             double sceneSize, double buildMillis, int keptEdits) {
         this.scene = scene;
         this.leaves = leaves;
         this.accel = accel;
@@ -41,6 +43,7 @@ public final class SceneIntersector {
         this.shapes = new AnalyticShapes(scene.planes(), scene.spheres());
         this.sceneSize = sceneSize;
         this.buildMillis = buildMillis;
+        this.keptEdits = keptEdits;
     }
 
     /**
@@ -54,7 +57,7 @@ public final class SceneIntersector {
         double size = sizeOf(scene);
         Leaves leaves = Leaves.of(scene, options, size);
         Accelerator accel = buildAccel(leaves, scene.patches().size(), options);
-        return new SceneIntersector(scene, leaves, accel, options, size, (System.nanoTime() - t0) / 1e6);
+        return new SceneIntersector(scene, leaves, accel, options, size, (System.nanoTime() - t0) / 1e6, 0);
     }
 
     /** The scene's size: the diagonal of its patches' control box, 1 when there is none. */
@@ -81,9 +84,18 @@ public final class SceneIntersector {
     }
 
     /**
+     * Edits in a row that keep the edited patches' old halvings ({@link Leaves#withPatches} with
+     * {@code keepSplit}) and so, usually, refit the BVH; the next one splits them afresh and
+     * rebuilds the BVH, so a long drag does not keep leaves or a tree fitted to the patch as it was
+     * (at 15 pictures a second, one rebuild every two seconds of dragging).
+     */
+    static final int KEPT_EDITS = 32;
+
+    /**
      * A new snapshot with patch {@code index} replaced: the leaves are remade for that patch only
-     * where their kind allows it (sub-patches: only that patch is re-split); the BVH is refitted
-     * when the number of leaves is unchanged, else rebuilt.
+     * where their kind allows it (sub-patches: only that patch is re-split, along its old halvings
+     * where they still fit); the BVH is refitted when the number of leaves is unchanged, else
+     * rebuilt.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
         return withPatches(scene.withPatch(index, patch), new int[] {index});
@@ -99,9 +111,10 @@ public final class SceneIntersector {
     public SceneIntersector withPatches(Scene edited, int[] indices) {
         long t0 = System.nanoTime();
         double size = sizeOf(edited);
-        Leaves newLeaves = leaves.withPatches(edited, indices, size);
+        boolean keep = keptEdits < KEPT_EDITS;
+        Leaves newLeaves = leaves.withPatches(edited, indices, size, keep);
         Accelerator newAccel;
-        if (newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
+        if (keep && newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
             // Same number of leaves: only the edited patches' moved; refit the range that covers
             // their leaves (and the ancestors)
             int first = Integer.MAX_VALUE, end = 0;
@@ -114,7 +127,8 @@ public final class SceneIntersector {
         } else {
             newAccel = buildAccel(newLeaves, edited.patches().size(), options);
         }
-        return new SceneIntersector(edited, newLeaves, newAccel, options, size, (System.nanoTime() - t0) / 1e6);
+        return new SceneIntersector(edited, newLeaves, newAccel, options, size, (System.nanoTime() - t0) / 1e6,
+                keep ? keptEdits + 1 : 0);
     }
 
     /** A fresh per-thread context. */

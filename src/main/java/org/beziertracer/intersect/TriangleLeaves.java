@@ -92,7 +92,7 @@ final class TriangleLeaves implements Leaves {
 
     /** The whole mesh is tessellated again, once. */
     @Override
-    public TriangleLeaves withPatches(Scene edited, int[] indices, double sceneSize) {
+    public TriangleLeaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit) {
         return build(edited, mesh.segments);
     }
 

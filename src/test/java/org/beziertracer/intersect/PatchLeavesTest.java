@@ -150,7 +150,7 @@ class PatchLeavesTest {
             double size = SceneIntersector.build(edited, io).sceneSize();
             PatchLeaves fresh = method.leaves.create(leaves.table.withPatches(new int[] {2}, List.of(edited.patches().get(2)), true),
                     PatchLeaves.RELATIVE_TOLERANCE * size);
-            for (Leaves remade : List.of(leaves.withPatch(edited, 2, size), leaves.withPatches(edited, new int[] {2}, size))) {
+            for (Leaves remade : List.of(leaves.withPatch(edited, 2, size), leaves.withPatches(edited, new int[] {2}, size, true))) {
                 assertSame(leaves.getClass(), remade.getClass(), method.label());
                 assertEquals(fresh.count(), remade.count(), method.label());
                 assertArrayEquals(fresh.bounds(0, fresh.count()), remade.bounds(0, remade.count()), method.label());

@@ -299,6 +299,43 @@ class SceneIntersectorTest {
         }
     }
 
+    /**
+     * A drag keeps the patch's old halvings (the leaf count, and a refit) for
+     * {@link SceneIntersector#KEPT_EDITS} edits in a row; the next edit splits afresh and rebuilds.
+     * The wavy degree-5 patch flattens step by step: its kept leaves stay, a fresh split makes fewer.
+     */
+    @Test
+    void aLongDragKeepsTheSplitForAWhileThenSplitsAfresh() {
+        SceneIntersector si = SceneIntersector.build(new Scene(List.of(wavy(6, 1))), IntersectOptions.defaults());
+        int leaves = si.subPatchCount();
+        for (int edit = 1; edit <= SceneIntersector.KEPT_EDITS; edit++) {
+            si = si.withPatch(0, wavy(6, 1 - 0.03 * edit));
+            assertEquals(leaves, si.subPatchCount(), "edit " + edit + " keeps the leaves");
+            assertEquals(edit, si.keptEdits);
+        }
+        Scene flatter = si.scene().withPatch(0, wavy(6, 0.02));
+        SceneIntersector fresh = SceneIntersector.build(flatter, IntersectOptions.defaults());
+        assertTrue(fresh.subPatchCount() < leaves, fresh.subPatchCount() + " of " + leaves);
+        si = si.withPatches(flatter, new int[] {0});
+        assertEquals(0, si.keptEdits, "split afresh");
+        assertEquals(fresh.subPatchCount(), si.subPatchCount());
+        assertEquals(fresh.nodeCount(), si.nodeCount(), "the BVH rebuilt");
+        Random rnd = new Random(61);
+        sameAnswers(si, fresh, rnd);
+        assertEquals(1, si.withPatch(0, wavy(6, 0.5)).keptEdits, "and the count starts again");
+    }
+
+    /** The wavy height field of issue [1 of 5] on the toolbox's {@code points}² grid, heights times {@code amplitude}. */
+    static BezierPatch wavy(int points, double amplitude) {
+        double[] net = org.beziertracer.model.io.Models.flatGrid(points, points).copyNet();
+        for (int k = 0; k < net.length; k += 3) {
+            double x = net[k], y = net[k + 1];
+            net[k + 2] = amplitude * (0.5 * Math.sin(2.6 * x + 1.2 * y) * Math.cos(1.7 * y - 0.9 * x)
+                    + 0.25 * Math.sin(2.0 * x * y));
+        }
+        return new BezierPatch(points - 1, points - 1, net);
+    }
+
     @Test
     void tinyAndHugeDirectionsGiveTheSameHitScaled() {
         Scene scene = org.beziertracer.model.io.Models.teapot();
