@@ -4,6 +4,7 @@ import static org.beziertracer.Tolerances.ROOT_T;
 import static org.beziertracer.Tolerances.ROUNDING;
 import static org.beziertracer.Tolerances.SAME_ROOT_UV;
 import static org.beziertracer.Tolerances.SUBDIVISION_T;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -323,6 +324,41 @@ class SceneIntersectorTest {
         Random rnd = new Random(61);
         sameAnswers(si, fresh, rnd);
         assertEquals(1, si.withPatch(0, wavy(6, 0.5)).keptEdits, "and the count starts again");
+    }
+
+    /**
+     * The BVH of a long drag: refitted (its leaf order kept) for {@link SceneIntersector#KEPT_EDITS}
+     * edits, then rebuilt as a fresh build makes it, even though the leaf count never changes (a
+     * flat patch carried across a row of others).
+     */
+    @Test
+    void aLongDragRebuildsTheBvhAfterItsKeptEdits() {
+        List<BezierPatch> row = new ArrayList<>();
+        for (int k = 0; k < 12; k++) {
+            row.add(new BezierPatch(1, 1, new double[] {k, 0, 0, k + 0.8, 0, 0, k, 0.8, 0, k + 0.8, 0.8, 0}));
+        }
+        SceneIntersector si = SceneIntersector.build(new Scene(row), IntersectOptions.defaults());
+        int[] order = ((org.beziertracer.accel.Bvh) si.accel).primIndices().clone();
+        BezierPatch moving = row.get(0);
+        for (int edit = 1; edit <= SceneIntersector.KEPT_EDITS + 1; edit++) {
+            double x = 11.0 * edit / (SceneIntersector.KEPT_EDITS + 1);
+            double[] net = moving.copyNet();
+            for (int i = 0; i < net.length; i += 3) {
+                net[i] += x;
+                net[i + 2] = 0.5;
+            }
+            SceneIntersector next = si.withPatch(0, moving.withNet(net));
+            int[] now = ((org.beziertracer.accel.Bvh) next.accel).primIndices();
+            assertEquals(12, next.subPatchCount());
+            if (edit <= SceneIntersector.KEPT_EDITS) {
+                assertArrayEquals(order, now, "edit " + edit + " refits");
+            } else {
+                SceneIntersector fresh = SceneIntersector.build(next.scene(), IntersectOptions.defaults());
+                assertArrayEquals(((org.beziertracer.accel.Bvh) fresh.accel).primIndices(), now, "rebuilt");
+                assertTrue(!java.util.Arrays.equals(order, now), "the patch moved across: another order");
+            }
+            si = next;
+        }
     }
 
     /** The wavy height field of issue [1 of 5] on the toolbox's {@code points}² grid, heights times {@code amplitude}. */
