@@ -89,7 +89,7 @@ final class BoundaryWinding {
             if (d >= MAX_DEPTH) {
                 return UNSETTLED;
             }
-            // Halve: the right half goes on top of the left one (both in place of the piece)
+            // Halve: both halves in place of the piece, one above the other
             halve(st, base, base + len, deg);
             depth[sp - 1] = d + 1;
             depth[sp] = d + 1;
@@ -134,34 +134,22 @@ final class BoundaryWinding {
     }
 
     /**
-     * de Casteljau at ½: the left half of the 2-D curve at {@code st[base..]} stays there, the
-     * right half goes to {@code st[right..]}.
+     * de Casteljau at ½ in one pass over the triangle: the right half of the 2-D curve at
+     * {@code st[base..]} stays there, the left half goes to {@code st[other..]} (the order of the
+     * two pieces on the stack does not matter: their crossings are summed).
      */
-    private static void halve(double[] st, int base, int right, int deg) {
-        // right half first from the original points (it is filled from the last point back)
-        System.arraycopy(st, base, st, right, 2 * (deg + 1));
-        for (int level = 1; level <= deg; level++) {
-            for (int i = deg; i >= level; i--) {
-                int p = right + 2 * i, q = p - 2;
-                st[p] = 0.5 * (st[q] + st[p]);
-                st[p + 1] = 0.5 * (st[q + 1] + st[p + 1]);
-            }
-        }
-        // now st[right + 2i] holds the left half's point i (b_0^i); the right half's point i is
-        // b_i^(deg-i): recompute it from the original points kept at st[base..]
+    private static void halve(double[] st, int base, int other, int deg) {
+        st[other] = st[base];
+        st[other + 1] = st[base + 1];
         for (int level = 1; level <= deg; level++) {
             for (int i = 0; i <= deg - level; i++) {
                 int p = base + 2 * i;
                 st[p] = 0.5 * (st[p] + st[p + 2]);
                 st[p + 1] = 0.5 * (st[p + 1] + st[p + 3]);
             }
-        }
-        // st[base + 2i] holds b_i^(deg-i) ... after the loop, entry i = point i of the right half;
-        // swap the two halves so that the left half is at base and the right at right
-        for (int k = 0; k < 2 * (deg + 1); k++) {
-            double t = st[base + k];
-            st[base + k] = st[right + k];
-            st[right + k] = t;
+            // b_0^level: the left half's point number level; the right half's point i is b_i^(deg-i)
+            st[other + 2 * level] = st[base];
+            st[other + 2 * level + 1] = st[base + 1];
         }
     }
 }
