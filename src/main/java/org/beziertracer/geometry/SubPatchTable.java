@@ -200,7 +200,7 @@ public final class SubPatchTable {
         }
         t.firstOf[pieces.length] = s;
         IntStream fill = IntStream.range(0, pieces.length);
-        (parallel ? fill.parallel() : fill).forEach(k -> t.fill(k, pieces[k], !parallel));
+        (parallel ? fill.parallel() : fill).forEach(k -> t.fill(k, pieces[k], false));
         return t;
     }
 
@@ -241,8 +241,8 @@ public final class SubPatchTable {
 
     /**
      * Writes patch {@code k}'s region (its offsets already set) from its pieces (null: whole); with
-     * {@code parallelLeaves} (an edit, which fills one patch or a few, or a build of a few patches)
-     * its leaves in chunks on the common pool (a bigger build fills patches in parallel instead).
+     * {@code parallelLeaves} (an edit, which fills one patch or a few) its leaves in chunks on the
+     * common pool (a build fills patches in parallel instead, when it has many).
      */
     private void fill(int k, PatchPieces p, boolean parallelLeaves) {
         BezierPatch patch = patches.get(k);
