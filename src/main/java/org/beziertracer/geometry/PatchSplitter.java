@@ -72,7 +72,7 @@ public final class PatchSplitter {
         int dim = Patches.dim(patch);
         w.out.reset((n + 1) * (m + 1), dim == 4, trim != null);
         Recursion r = new Recursion(n, m, dim, options, minSize, w, trim, patch.domain());
-        r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED);
+        r.visit(Patches.workingNet(patch), 0, 1, 0, 1, 0, trim == null ? TrimCurves.INSIDE : TrimCurves.MIXED, null);
         return w.out.pieces(n, m);
     }
 
@@ -101,7 +101,7 @@ public final class PatchSplitter {
         double[] net = Patches.workingNet(patch);
         SplitGuide guide = new SplitGuide(boxes, from, to);
         if (to - from < PARALLEL_LEAVES || guide.takeLeaf(0, 1, 0, 1)) {
-            return follow(patch, options, minSize, w, net, 0, 1, 0, 1, new SplitGuide(boxes, from, to));
+            return replay(patch, options, minSize, w, net, 0, 1, 0, 1, new SplitGuide(boxes, from, to));
         }
         // Many leaves (a degree-9 patch has hundreds): the two halves of the root on two threads
         boolean inU = guide.halvedInU(0, 1, 0, 1);
@@ -118,9 +118,9 @@ public final class PatchSplitter {
             DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
         }
         double bu0 = inU ? 0.5 : 0, bv0 = inU ? 0 : 0.5;
-        ForkJoinTask<PatchPieces> upper = ForkJoinTask.adapt(() -> follow(patch, options, minSize, new Workspace(), b,
+        ForkJoinTask<PatchPieces> upper = ForkJoinTask.adapt(() -> replay(patch, options, minSize, new Workspace(), b,
                 bu0, 1, bv0, 1, new SplitGuide(boxes, mid, to))).fork();
-        PatchPieces lower = follow(patch, options, minSize, w, a, 0, inU ? 0.5 : 1, 0, inU ? 1 : 0.5,
+        PatchPieces lower = replay(patch, options, minSize, w, a, 0, inU ? 0.5 : 1, 0, inU ? 1 : 0.5,
                 new SplitGuide(boxes, from, mid));
         PatchPieces higher = upper.join();
         return lower == null || higher == null ? null : PatchPieces.concat(lower, higher);
@@ -130,14 +130,14 @@ public final class PatchSplitter {
     static final int PARALLEL_LEAVES = 256;
 
     /** The node {@code [u0,u1]×[v0,v1]} of {@code patch}, net {@code net}, re-split along {@code guide}; null when it fails. */
-    private static PatchPieces follow(BezierPatch patch, SplitOptions options, double minSize, Workspace w,
+    private static PatchPieces replay(BezierPatch patch, SplitOptions options, double minSize, Workspace w,
                                       double[] net, double u0, double u1, double v0, double v1, SplitGuide guide) {
         int n = patch.degreeU(), m = patch.degreeV();
         int dim = Patches.dim(patch);
         w.out.reset((n + 1) * (m + 1), dim == 4, false);
         Recursion r = new Recursion(n, m, dim, options, minSize, w, null, patch.domain());
         int depth = u1 - u0 < 1 || v1 - v0 < 1 ? 1 : 0;
-        r.follow(net, u0, u1, v0, v1, depth, guide);
+        r.visit(net, u0, u1, v0, v1, depth, TrimCurves.INSIDE, guide);
         return guide.failed() || !guide.finished() ? null : w.out.pieces(n, m);
     }
 
@@ -225,83 +225,73 @@ public final class PatchSplitter {
             flatnessScratch = new double[NetMeasures.flatnessScratch(n)];
         }
 
-        void visit(double[] net, double u0, double u1, double v0, double v1, int depth, int trimState) {
-            if (trimState == TrimCurves.MIXED) {
-                trimState = classify(u0, u1, v0, v1);
-                if (trimState == TrimCurves.OUTSIDE) {
+        /**
+         * Splits the node {@code [u0,u1]×[v0,v1]} (net {@code net}) into leaves. Without a guide
+         * each node is tested ({@link #done}) and halved across its longer control polygon. With
+         * the {@code guide} of an old split ({@link #resplit}) the nodes are halved as it halved
+         * them, down to its leaves, where a leaf is kept when {@link #done} allows it with
+         * {@link #KEPT_SLACK}, else split on afresh.
+         */
+        void visit(double[] net, double u0, double u1, double v0, double v1, int depth, int trimState,
+                   SplitGuide guide) {
+            boolean inU;
+            if (guide == null) {
+                if (trimState == TrimCurves.MIXED) {
+                    trimState = classify(u0, u1, v0, v1);
+                    if (trimState == TrimCurves.OUTSIDE) {
+                        return;
+                    }
+                }
+                double[] xyz = euclidean(net);
+                if (done(xyz, depth, trimState, 1)) {
+                    out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
                     return;
                 }
-            }
-            double[] xyz = net;
-            if (dim == 4) {
-                RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
-                xyz = euclid;
-            }
-            if (done(xyz, depth, trimState)) {
-                out.add(xyz, weights, u0, u1, v0, v1, trimState == TrimCurves.MIXED);
-                return;
-            }
-            w.ensureLevel(depth + 1, points * dim);
-            double[] a = w.lo[depth + 1], b = w.hi[depth + 1];
-            if (polygonLength(xyz, n, m, true) >= polygonLength(xyz, n, m, false)) {
-                double um = 0.5 * (u0 + u1);
-                DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
-                visit(a, u0, um, v0, v1, depth + 1, trimState);
-                visit(b, um, u1, v0, v1, depth + 1, trimState);
+                inU = polygonLength(xyz, n, m, true) >= polygonLength(xyz, n, m, false);
             } else {
-                double vm = 0.5 * (v0 + v1);
-                DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
-                visit(a, u0, u1, v0, vm, depth + 1, trimState);
-                visit(b, u0, u1, vm, v1, depth + 1, trimState);
-            }
-        }
-
-        /**
-         * As {@link #visit}, halving as the old split {@code guide} did down to its leaves, where a
-         * leaf is kept when {@link #done} allows it with {@link #KEPT_SLACK}, else split on afresh.
-         */
-        void follow(double[] net, double u0, double u1, double v0, double v1, int depth, SplitGuide guide) {
-            if (guide.failed()) {
-                return;
-            }
-            if (guide.takeLeaf(u0, u1, v0, v1)) {
-                double[] xyz = net;
-                if (dim == 4) {
-                    RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
-                    xyz = euclid;
+                if (guide.failed()) {
+                    return;
                 }
-                if (done(xyz, depth, TrimCurves.INSIDE, KEPT_SLACK)) {
-                    out.add(xyz, weights, u0, u1, v0, v1, false);
-                } else {
-                    visit(net, u0, u1, v0, v1, depth, TrimCurves.INSIDE);
+                if (guide.takeLeaf(u0, u1, v0, v1)) {
+                    double[] xyz = euclidean(net);
+                    if (done(xyz, depth, TrimCurves.INSIDE, KEPT_SLACK)) {
+                        out.add(xyz, weights, u0, u1, v0, v1, false);
+                    } else {
+                        visit(net, u0, u1, v0, v1, depth, TrimCurves.INSIDE, null);
+                    }
+                    return;
                 }
-                return;
-            }
-            if (depth >= maxDepth) {
-                guide.fail(); // deeper than this split goes: not a split of these options
-                return;
-            }
-            boolean inU = guide.halvedInU(u0, u1, v0, v1);
-            if (guide.failed()) {
-                return;
+                if (depth >= maxDepth) {
+                    guide.fail(); // deeper than this split goes: not a split of these options
+                    return;
+                }
+                inU = guide.halvedInU(u0, u1, v0, v1);
+                if (guide.failed()) {
+                    return;
+                }
             }
             w.ensureLevel(depth + 1, points * dim);
             double[] a = w.lo[depth + 1], b = w.hi[depth + 1];
             if (inU) {
                 double um = 0.5 * (u0 + u1);
                 DeCasteljau.splitU(net, 0, n, m, dim, 0.5, a, 0, b, 0);
-                follow(a, u0, um, v0, v1, depth + 1, guide);
-                follow(b, um, u1, v0, v1, depth + 1, guide);
+                visit(a, u0, um, v0, v1, depth + 1, trimState, guide);
+                visit(b, um, u1, v0, v1, depth + 1, trimState, guide);
             } else {
                 double vm = 0.5 * (v0 + v1);
                 DeCasteljau.splitV(net, 0, n, m, dim, 0.5, a, 0, b, 0);
-                follow(a, u0, u1, v0, vm, depth + 1, guide);
-                follow(b, u0, u1, vm, v1, depth + 1, guide);
+                visit(a, u0, u1, v0, vm, depth + 1, trimState, guide);
+                visit(b, u0, u1, vm, v1, depth + 1, trimState, guide);
             }
         }
 
-        private boolean done(double[] xyz, int depth, int trimState) {
-            return done(xyz, depth, trimState, 1);
+        /** The piece's Euclidean net: {@code net} itself, or a rational net's points (its weights in {@link #weights}). */
+        private double[] euclidean(double[] net) {
+            if (dim == 4) {
+                RationalDeCasteljau.toEuclidean(net, 0, points, euclid, 0, weights, 0);
+                return euclid;
+            }
+            return net;
         }
 
         /**
