@@ -364,7 +364,9 @@ public final class SubPatchTable {
      * degree, untrimmed before and after, is re-split along its old halvings
      * ({@link PatchSplitter#resplit}): its leaves stay where they are still near flat, so a drag
      * usually keeps the leaf count (and the BVH is refitted). Such a table may have more leaves than
-     * a fresh split of the same patches (a leaf the edit made flatter is not merged back).
+     * a fresh split of the same patches (a leaf the edit made flatter is not merged back). A patch
+     * that changes degree, becomes rational or polynomial, or is trimmed is split afresh; an edit
+     * that changes the table's storage splits every patch afresh ({@link #keepsUntouchedLeaves}).
      */
     public SubPatchTable withPatches(int[] indices, List<BezierPatch> replacements, boolean keepSplit) {
         var list = new java.util.ArrayList<>(patches);
@@ -409,6 +411,17 @@ public final class SubPatchTable {
             t.fill(edited[e], pieces[e], true);
         }
         return t;
+    }
+
+    /**
+     * True when {@code edited}, made from this table by {@link #withPatches}, holds this table's
+     * leaves (shifted) for every patch the edit did not touch; false when the edit split every
+     * patch afresh because it made the first rational or trimmed patch or removed the last one
+     * (the table's storage changes then), so that a patch re-split along kept halvings earlier may
+     * now have other leaves.
+     */
+    public boolean keepsUntouchedLeaves(SubPatchTable edited) {
+        return (edited.weights != null) == (weights != null) && (edited.trimTest != null) == (trimTest != null);
     }
 
     /** A table built afresh from {@code list} with this table's stop (an edit that made the first rational or trimmed patch). */

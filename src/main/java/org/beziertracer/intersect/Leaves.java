@@ -93,6 +93,14 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
      */
     Leaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit);
 
+    /**
+     * True when these leaves, made by {@link #withPatches} from {@code before}, are
+     * {@code before}'s leaves for every patch the edit did not touch, in the same order, so that
+     * refitting the edited patches' range of the accelerator suffices (when {@link #count()} is
+     * unchanged).
+     */
+    boolean keepsUntouchedLeaves(Leaves before);
+
     /** Heap held by these leaves' data (not the model's patches), in bytes. */
     long bytes();
 

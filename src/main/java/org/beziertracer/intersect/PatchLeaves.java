@@ -136,7 +136,8 @@ abstract class PatchLeaves implements Leaves {
      * Re-splits only the edited patches, in one new table, with {@code keepSplit} each along its old
      * halvings where they still fit ({@link SubPatchTable#withPatches(int[], java.util.List, boolean)}: a drag usually
      * keeps the leaf count, and the BVH is refitted); the solver's per-leaf data of the other
-     * patches is copied ({@link #with(SubPatchTable, double, int[])}).
+     * patches is copied ({@link #with(SubPatchTable, double, int[])}) unless the edit split every
+     * patch afresh ({@link SubPatchTable#keepsUntouchedLeaves}).
      */
     @Override
     public final PatchLeaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit) {
@@ -145,7 +146,8 @@ abstract class PatchLeaves implements Leaves {
             replacements.add(edited.patches().get(index));
         }
         SubPatchTable after = table.withPatches(indices, replacements, keepSplit);
-        return TrimmedLeaves.ifTrimmed(with(after, RELATIVE_TOLERANCE * sceneSize, indices));
+        double tol = RELATIVE_TOLERANCE * sceneSize;
+        return TrimmedLeaves.ifTrimmed(table.keepsUntouchedLeaves(after) ? with(after, tol, indices) : with(after, tol));
     }
 
     /**
@@ -155,6 +157,12 @@ abstract class PatchLeaves implements Leaves {
      */
     PatchLeaves with(SubPatchTable edited, double editedTolerance, int[] editedPatches) {
         return with(edited, editedTolerance);
+    }
+
+    /** The table's {@link SubPatchTable#keepsUntouchedLeaves}. */
+    @Override
+    public final boolean keepsUntouchedLeaves(Leaves before) {
+        return before instanceof PatchLeaves p && p.table.keepsUntouchedLeaves(table);
     }
 
     @Override

@@ -31,7 +31,13 @@ public final class SceneIntersector {
     final AnalyticShapes shapes;
     final double sceneSize;
     final double buildMillis;
-    /** Edits since the leaves were last made afresh ({@link #withPatches}); 0 after a build. */
+    /**
+     * Edits in a row that kept their patches' old halvings ({@link #withPatches}); 0 after a build
+     * or an edit that split afresh. Scene-wide: the edit that splits afresh re-splits its own
+     * patches only, so a patch dragged earlier keeps its leaves until it is edited again; each of
+     * them is within twice the flatness tolerance (checked at its patch's last edit), it may only be
+     * finer than a fresh split's.
+     */
     final int keptEdits;
 
     private SceneIntersector(Scene scene, Leaves leaves, Accelerator accel, IntersectOptions options,
@@ -85,17 +91,17 @@ public final class SceneIntersector {
 
     /**
      * Edits in a row that keep the edited patches' old halvings ({@link Leaves#withPatches} with
-     * {@code keepSplit}) and so, usually, refit the BVH; the next one splits them afresh and
-     * rebuilds the BVH, so a long drag does not keep leaves or a tree fitted to the patch as it was
-     * (at 15 pictures a second, one rebuild every two seconds of dragging).
+     * {@code keepSplit}) and so, usually, refit the BVH; the next one splits its patches afresh and
+     * rebuilds the whole BVH, so a long drag does not keep a tree fitted to the patches as they were
+     * (at 15 pictures a second, one rebuild every two seconds of dragging) nor leaves finer than the
+     * dragged patch needs.
      */
     static final int KEPT_EDITS = 32;
 
     /**
      * A new snapshot with patch {@code index} replaced: the leaves are remade for that patch only
      * where their kind allows it (sub-patches: only that patch is re-split, along its old halvings
-     * where they still fit); the BVH is refitted when the number of leaves is unchanged, else
-     * rebuilt.
+     * where they still fit), as {@link #withPatches}.
      */
     public SceneIntersector withPatch(int index, BezierPatch patch) {
         return withPatches(scene.withPatch(index, patch), new int[] {index});
@@ -104,8 +110,10 @@ public final class SceneIntersector {
     /**
      * A new snapshot of {@code edited}, a scene that differs from this one's only in the patches
      * {@code indices} (the same number of patches, planes, spheres and materials): those patches'
-     * leaves are remade in one pass and the BVH is refitted once (rebuilt when the number of leaves
-     * changed). An edit that moves a point shared by several patches builds one new scene and
+     * leaves are remade in one pass and the BVH is refitted once; it is rebuilt when the number of
+     * leaves changed, when the edit remade other patches' leaves too
+     * ({@link Leaves#keepsUntouchedLeaves}: the first rational or trimmed patch), and on every
+     * {@link #KEPT_EDITS}-th edit in a row. An edit that moves a point shared by several patches builds one new scene and
      * calls this once, rather than {@link #withPatch} once per copy.
      */
     public SceneIntersector withPatches(Scene edited, int[] indices) {
@@ -114,7 +122,8 @@ public final class SceneIntersector {
         boolean keep = keptEdits < KEPT_EDITS;
         Leaves newLeaves = leaves.withPatches(edited, indices, size, keep);
         Accelerator newAccel;
-        if (keep && newLeaves.count() == leaves.count() && accel instanceof Bvh bvh) {
+        if (keep && newLeaves.count() == leaves.count() && newLeaves.keepsUntouchedLeaves(leaves)
+                && accel instanceof Bvh bvh) {
             // Same number of leaves: only the edited patches' moved; refit the range that covers
             // their leaves (and the ancestors)
             int first = Integer.MAX_VALUE, end = 0;

@@ -96,6 +96,10 @@ final class TriangleLeaves implements Leaves {
         return build(edited, mesh.segments);
     }
 
+    /** Every patch is tessellated alike, so the untouched patches' triangles are the same. */
+    @Override
+    public boolean keepsUntouchedLeaves(Leaves before) { return before instanceof TriangleLeaves; }
+
     @Override
     public long bytes() { return mesh.bytes(); }
 

@@ -327,6 +327,40 @@ class SceneIntersectorTest {
     }
 
     /**
+     * An edit that makes the first rational patch splits every patch afresh (the table's storage
+     * changes), also a patch whose old halvings a drag kept: the solver's data and the BVH are then
+     * made for every patch, not copied or refitted from the patches the edit did not touch.
+     */
+    @Test
+    void anEditThatSplitsEveryPatchAfreshAfterAKeptDragAnswersLikeARebuild() {
+        Random rnd = new Random(404);
+        List<BezierPatch> patches = new ArrayList<>(wildScene(rnd, 8, 4).patches());
+        patches.set(0, shifted(wavy(6, 1), 4));
+        SceneIntersector si = SceneIntersector.build(new Scene(patches), IntersectOptions.defaults());
+        si = si.withPatch(0, shifted(wavy(6, 0.01), 4)); // flattened: its leaves are kept
+        int kept = si.subPatchCount();
+        assertTrue(kept > SceneIntersector.build(si.scene(), IntersectOptions.defaults()).subPatchCount(), "kept leaves");
+        BezierPatch p = si.scene().patches().get(3);
+        double[] weights = new double[p.pointCount()];
+        java.util.Arrays.fill(weights, 1);
+        weights[0] = 2;
+        BezierPatch rational = new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet(), weights, null, null);
+        SceneIntersector edited = si.withPatch(3, rational);
+        SceneIntersector rebuilt = SceneIntersector.build(edited.scene(), IntersectOptions.defaults());
+        assertEquals(rebuilt.subPatchCount(), edited.subPatchCount(), "every patch split afresh");
+        assertTrue(sameAnswers(edited, rebuilt, rnd) > 100);
+    }
+
+    /** {@code p} moved by {@code d} along x, y and z. */
+    private static BezierPatch shifted(BezierPatch p, double d) {
+        double[] net = p.copyNet();
+        for (int i = 0; i < net.length; i++) {
+            net[i] += d;
+        }
+        return p.withNet(net);
+    }
+
+    /**
      * The BVH of a long drag: refitted (its leaf order kept) for {@link SceneIntersector#KEPT_EDITS}
      * edits, then rebuilt as a fresh build makes it, even though the leaf count never changes (a
      * flat patch carried across a row of others).
