@@ -327,12 +327,13 @@ class SceneIntersectorTest {
     }
 
     /**
-     * An edit that makes the first rational patch splits every patch afresh (the table's storage
+     * An edit that makes the first rational (or trimmed) patch splits every patch afresh (the table's storage
      * changes), also a patch whose old halvings a drag kept: the solver's data and the BVH are then
      * made for every patch, not copied or refitted from the patches the edit did not touch.
      */
-    @Test
-    void anEditThatSplitsEveryPatchAfreshAfterAKeptDragAnswersLikeARebuild() {
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(booleans = {false, true})
+    void anEditThatSplitsEveryPatchAfreshAfterAKeptDragAnswersLikeARebuild(boolean trimmed) {
         Random rnd = new Random(404);
         List<BezierPatch> patches = new ArrayList<>(wildScene(rnd, 8, 4).patches());
         patches.set(0, shifted(wavy(6, 1), 4));
@@ -344,8 +345,12 @@ class SceneIntersectorTest {
         double[] weights = new double[p.pointCount()];
         java.util.Arrays.fill(weights, 1);
         weights[0] = 2;
-        BezierPatch rational = new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet(), weights, null, null);
-        SceneIntersector edited = si.withPatch(3, rational);
+        var region = new org.beziertracer.model.TrimRegion(List.of(TrimmedIntersectionTest.circle(0.5, 0.5, 0.4, true)),
+                List.of());
+        BezierPatch first = trimmed
+                ? new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet(), null, new org.beziertracer.model.PatchDomain(0, 1, 0, 1, region), null)
+                : new BezierPatch(p.degreeU(), p.degreeV(), p.copyNet(), weights, null, null);
+        SceneIntersector edited = si.withPatch(3, first);
         SceneIntersector rebuilt = SceneIntersector.build(edited.scene(), IntersectOptions.defaults());
         assertEquals(rebuilt.subPatchCount(), edited.subPatchCount(), "every patch split afresh");
         assertTrue(sameAnswers(edited, rebuilt, rnd) > 100);
