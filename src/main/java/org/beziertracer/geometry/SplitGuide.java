@@ -21,9 +21,6 @@ final class SplitGuide {
     private int cursor;
     private boolean failed;
 
-    /** The index of the next leaf of the old split. */
-    int cursor() { return cursor; }
-
     /** The leaves {@code from .. to-1} of {@code boxes} (4 floats a leaf: u0, u1, v0, v1). */
     SplitGuide(float[] boxes, int from, int to) {
         this.boxes = boxes;
