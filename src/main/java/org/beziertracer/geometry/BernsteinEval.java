@@ -1,5 +1,7 @@
 package org.beziertracer.geometry;
 
+import static org.beziertracer.math.Fma.mad;
+
 /**
  * Evaluation of a 3-D tensor-product Bézier patch with its first derivatives in
  * {@code O(n·m)} operations, for any degree: the Bernstein bases are computed once per direction
@@ -8,8 +10,12 @@ package org.beziertracer.geometry;
  *   r_j = Σ_i B_i^n(u) P_ij,   d_j = Σ_i B_i^{n−1}(u) (P_{i+1,j} − P_ij),
  *   S = Σ_j B_j^m(v) r_j,   S_u = n Σ_j B_j^m(v) d_j,   S_v = m Σ_j B_j^{m−1}(v) (r_{j+1} − r_j)
  * </pre>
- * (the derivatives in hodograph form) — nine flops per control point, where the tensor-product
- * de Casteljau algorithm ({@link DeCasteljau#evaluateWithDerivatives}) needs {@code O(n²·m)}.
+ * (the derivatives in hodograph form) — six multiply-adds and three differences per control
+ * point, where the tensor-product de Casteljau algorithm ({@link DeCasteljau#evaluateWithDerivatives})
+ * needs {@code O(n²·m)}. The rows are summed two at a time, so that two rows' chains of dependent
+ * additions overlap, with {@link org.beziertracer.math.Fma#mad} (fused where the processor has the
+ * instruction): together about a third less time than one row at a time with separate multiplies
+ * and adds at degree 9 ({@code KernelBench}).
  *
  * <p>The basis of degree {@code n − 1} is {@code C(n−1,i) tⁱ (1−t)^{n−1−i}} (powers by repeated
  * multiplication, binomials exact in double up to degree 15), the degree-{@code n} basis follows
@@ -53,34 +59,86 @@ public final class BernsteinEval {
     public static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v,
                                                double[] out, int outOff, double[] scratch, int scratchOff) {
         int bu = scratchOff, lu = bu + ORDER, bv = lu + ORDER, lv = bv + ORDER;
-        basis(n, u, scratch, bu, lu);
-        basis(m, v, scratch, bv, lv);
+        bases(n, u, m, v, scratch, bu, lu, bv, lv);
         double sx = 0, sy = 0, sz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
         double qx = 0, qy = 0, qz = 0; // r_(j-1)
-        for (int j = 0, row = off; j <= m; j++, row += 3 * (n + 1)) {
-            // r_j and d_j along the row
+        double w0 = scratch[bu];
+        int rowStride = 3 * (n + 1);
+        // Rows in pairs (j, k = j+1): two independent sets of sums per pass keep the multiply-add
+        // units busy where one row's sums would wait on each other. An odd last row is read twice
+        // and its twin's sums dropped.
+        for (int j = 0, row = off; j <= m; j += 2, row += 2 * rowStride) {
+            boolean pair = j < m;
+            int rowK = pair ? row + rowStride : row;
             double px = net[row], py = net[row + 1], pz = net[row + 2];
-            double w = scratch[bu];
-            double rx = w * px, ry = w * py, rz = w * pz, dx = 0, dy = 0, dz = 0;
-            for (int i = 1, p = row + 3; i <= n; i++, p += 3) {
+            double ax = net[rowK], ay = net[rowK + 1], az = net[rowK + 2];
+            double rx = w0 * px, ry = w0 * py, rz = w0 * pz, dx = 0, dy = 0, dz = 0;
+            double gx = w0 * ax, gy = w0 * ay, gz = w0 * az, ex = 0, ey = 0, ez = 0;
+            for (int i = 1, p = row + 3, q = rowK + 3; i <= n; i++, p += 3, q += 3) {
                 double nx = net[p], ny = net[p + 1], nz = net[p + 2];
+                double mx = net[q], my = net[q + 1], mz = net[q + 2];
                 double wi = scratch[bu + i], li = scratch[lu + i - 1];
-                rx += wi * nx; ry += wi * ny; rz += wi * nz;
-                dx += li * (nx - px); dy += li * (ny - py); dz += li * (nz - pz);
+                rx = mad(wi, nx, rx); ry = mad(wi, ny, ry); rz = mad(wi, nz, rz);
+                dx = mad(li, nx - px, dx); dy = mad(li, ny - py, dy); dz = mad(li, nz - pz, dz);
+                gx = mad(wi, mx, gx); gy = mad(wi, my, gy); gz = mad(wi, mz, gz);
+                ex = mad(li, mx - ax, ex); ey = mad(li, my - ay, ey); ez = mad(li, mz - az, ez);
                 px = nx; py = ny; pz = nz;
+                ax = mx; ay = my; az = mz;
             }
-            double wj = scratch[bv + j];
-            sx += wj * rx; sy += wj * ry; sz += wj * rz;
-            ux += wj * dx; uy += wj * dy; uz += wj * dz;
+            double wj = scratch[bv + j], wk = pair ? scratch[bv + j + 1] : 0;
+            sx = mad(wj, rx, sx); sy = mad(wj, ry, sy); sz = mad(wj, rz, sz);
+            ux = mad(wj, dx, ux); uy = mad(wj, dy, uy); uz = mad(wj, dz, uz);
             if (j > 0) {
                 double lj = scratch[lv + j - 1];
-                vx += lj * (rx - qx); vy += lj * (ry - qy); vz += lj * (rz - qz);
+                vx = mad(lj, rx - qx, vx); vy = mad(lj, ry - qy, vy); vz = mad(lj, rz - qz, vz);
             }
-            qx = rx; qy = ry; qz = rz;
+            if (pair) {
+                double lk = scratch[lv + j];
+                sx = mad(wk, gx, sx); sy = mad(wk, gy, sy); sz = mad(wk, gz, sz);
+                ux = mad(wk, ex, ux); uy = mad(wk, ey, uy); uz = mad(wk, ez, uz);
+                vx = mad(lk, gx - rx, vx); vy = mad(lk, gy - ry, vy); vz = mad(lk, gz - rz, vz);
+            }
+            qx = gx; qy = gy; qz = gz;
         }
         out[outOff] = sx; out[outOff + 1] = sy; out[outOff + 2] = sz;
         out[outOff + 3] = n * ux; out[outOff + 4] = n * uy; out[outOff + 5] = n * uz;
         out[outOff + 6] = m * vx; out[outOff + 7] = m * vy; out[outOff + 8] = m * vz;
+    }
+
+    /**
+     * {@link #basis} in u (degree {@code n}, into {@code bu}, {@code lu}) and in v (degree
+     * {@code m}, into {@code bv}, {@code lv}) at once, value for value the same: the four chains of
+     * powers run side by side.
+     */
+    static void bases(int n, double u, int m, double v, double[] b, int bu, int lu, int bv, int lv) {
+        double su = 1 - u, sv = 1 - v;
+        int kn = n - 1, km = m - 1;
+        // t^i into the lower basis' slots, s^i into the upper one's (overwritten below)
+        double tu = 1, tv = 1, pu = 1, pv = 1;
+        for (int i = 0, k = Math.max(kn, km); i <= k; i++) {
+            b[lu + i] = tu; b[lv + i] = tv; b[bu + i] = pu; b[bv + i] = pv;
+            tu *= u; tv *= v; pu *= su; pv *= sv;
+        }
+        lower(kn, b, lu, bu);
+        lower(km, b, lv, bv);
+        upper(n, u, su, b, bu, lu);
+        upper(m, v, sv, b, bv, lv);
+    }
+
+    /** {@code L_i = C(k,i)·tⁱ·s^(k−i)} from the powers {@code tⁱ} at {@code lo} and {@code sⁱ} at {@code so}. */
+    private static void lower(int k, double[] b, int lo, int so) {
+        for (int i = 0; i <= k; i++) {
+            b[lo + i] = BINOMIAL[k * ORDER + i] * b[lo + i] * b[so + k - i];
+        }
+    }
+
+    /** {@code B_i = s·L_i + t·L_(i−1)} into {@code bo} from the degree-{@code (deg−1)} basis at {@code lo}. */
+    private static void upper(int deg, double t, double s, double[] b, int bo, int lo) {
+        b[bo] = s * b[lo];
+        for (int i = 1; i < deg; i++) {
+            b[bo + i] = s * b[lo + i] + t * b[lo + i - 1];
+        }
+        b[bo + deg] = t * b[lo + deg - 1];
     }
 
     /**
@@ -89,23 +147,15 @@ public final class BernsteinEval {
      */
     static void basis(int deg, double t, double[] b, int bo, int lo) {
         double s = 1 - t;
-        int k = deg - 1, binom = k * ORDER;
-        // L_i = C(k,i) t^i s^(k-i), i = 0..k: t powers first, then times the s powers
-        double tp = 1;
-        for (int i = 0; i <= k; i++) {
-            b[lo + i] = BINOMIAL[binom + i] * tp;
+        // t^i into the lower basis' slots, s^i into the upper one's (overwritten below)
+        double tp = 1, sp = 1;
+        for (int i = 0; i < deg; i++) {
+            b[lo + i] = tp;
+            b[bo + i] = sp;
             tp *= t;
-        }
-        double sp = 1;
-        for (int i = k; i >= 0; i--) {
-            b[lo + i] *= sp;
             sp *= s;
         }
-        // B_i = s L_i + t L_(i-1)
-        b[bo] = s * b[lo];
-        for (int i = 1; i < deg; i++) {
-            b[bo + i] = s * b[lo + i] + t * b[lo + i - 1];
-        }
-        b[bo + deg] = t * b[lo + k];
+        lower(deg - 1, b, lo, bo);
+        upper(deg, t, s, b, bo, lo);
     }
 }

@@ -72,6 +72,30 @@ class BernsteinEvalTest {
     }
 
     @Test
+    void theBasesOfBothDirectionsAtOnceAreTheBasesOfEach() {
+        Random rnd = new Random(44);
+        double[] both = new double[64], one = new double[64];
+        for (int n = 1; n <= 15; n++) {
+            for (int m = 1; m <= 15; m++) {
+                double u = rnd.nextDouble(), v = rnd.nextDouble();
+                BernsteinEval.bases(n, u, m, v, both, 0, 16, 32, 48);
+                BernsteinEval.basis(n, u, one, 0, 16);
+                BernsteinEval.basis(m, v, one, 32, 48);
+                for (int i = 0; i <= Math.max(n, m); i++) {
+                    if (i <= n) {
+                        assertEquals(one[i], both[i], "B_" + i + "^" + n + "(u)");
+                        assertEquals(i < n ? one[16 + i] : 0, i < n ? both[16 + i] : 0, "lower basis in u");
+                    }
+                    if (i <= m) {
+                        assertEquals(one[32 + i], both[32 + i], "B_" + i + "^" + m + "(v)");
+                        assertEquals(i < m ? one[48 + i] : 0, i < m ? both[48 + i] : 0, "lower basis in v");
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     void aDerivativeAlongACollapsedEdgeIsExactlyZero() {
         Random rnd = new Random(43);
         double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
