@@ -91,6 +91,16 @@ final class BezierClipper {
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics, int s,
                              double tMin, double tMax, double tolerance) {
+        return intersect(ctx, tab, records, quadratics, null, s, tMin, tMax, tolerance);
+    }
+
+    /**
+     * As {@link #intersect(TraceContext, SubPatchTable, float[], float[], int, double, double, double)};
+     * with {@code quarters} (or null) a leaf its record cannot prove single-root is first tried
+     * quarter by quarter ({@link LeafQuarters}) before it is clipped.
+     */
+    static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics,
+                             LeafQuarters quarters, int s, double tMin, double tMax, double tolerance) {
         int kind = NewtonSolver.MAYBE_SEVERAL;
         if (records == null) {
             cornerStart(ctx, tab, s);
@@ -106,6 +116,12 @@ final class BezierClipper {
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
         } else if (unique && quadratics != null) {
             LeafQuadratics.start(ctx, quadratics, s); // a nearer start, when the model's lies in the leaf
+        }
+        if (!unique && quarters != null) {
+            int settled = quarters.solve(ctx, tab, s, tMin, tMax, tolerance);
+            if (settled != LeafQuarters.UNDECIDED) {
+                return settled == LeafQuarters.ROOT;
+            }
         }
         double su = ctx.clip[0], sv = ctx.clip[1];
         if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
@@ -376,9 +392,17 @@ final class BezierClipper {
      * true when it converged (the root in {@code ctx.root*}).
      */
     static boolean newtonFrom(TraceContext ctx, SubPatchTable tab, int s, double su, double sv, double tolerance) {
-        int k = tab.parent[s];
         float[] bx = tab.boxes;
-        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
+        return newtonIn(ctx, tab, tab.parent[s], bx[4 * s], bx[4 * s + 1], bx[4 * s + 2], bx[4 * s + 3], su, sv, tolerance);
+    }
+
+    /**
+     * Newton on patch {@code k} from the point {@code (su, sv)} of the parameter box
+     * {@code [u0,u1]×[v0,v1]} (in the box's own parameters), iterates confined to the box, then
+     * {@link RayPatchNewton#refine}; true when it converged (the root in {@code ctx.root*}).
+     */
+    static boolean newtonIn(TraceContext ctx, SubPatchTable tab, int k, double u0, double u1, double v0, double v1,
+                            double su, double sv, double tolerance) {
         if (RayPatchNewton.solve(ctx, tab, k, u0 + (u1 - u0) * su, v0 + (v1 - v0) * sv, NEWTON_STEPS,
                 u0, u1, v0, v1, tolerance) != RayPatchNewton.CONVERGED) {
             return false;

@@ -19,18 +19,28 @@ final class ClippingLeaves extends PatchLeaves {
     private final float[] records;
     /** {@link LeafQuadratics} of the leaves above bicubic; null without records or without such leaves. */
     private final float[] quadratics;
+    /** {@link LeafQuarters} of the leaves above bicubic, made as rays need them; null without records or such leaves. */
+    private final LeafQuarters quarters;
 
     ClippingLeaves(SubPatchTable table, double tolerance) {
         super(table, tolerance);
         this.records = hasRecords(table.count) ? NewtonLeafRecords.build(table) : null;
         this.quadratics = records != null ? LeafQuadratics.build(table) : null;
+        this.quarters = quarters(table, records);
     }
 
     private ClippingLeaves(SubPatchTable table, double tolerance, float[] records, float[] quadratics) {
         super(table, tolerance);
         this.records = records;
         this.quadratics = quadratics;
+        this.quarters = quarters(table, records);
     }
+
+    private static LeafQuarters quarters(SubPatchTable table, float[] records) {
+        return records != null && QUARTERS ? LeafQuarters.of(table) : null;
+    }
+
+    static final boolean QUARTERS = Boolean.parseBoolean(System.getProperty("quarters", "true"));
 
     /** True when a table of {@code leaves} leaves gets records. */
     static boolean hasRecords(long leaves) {
@@ -39,7 +49,7 @@ final class ClippingLeaves extends PatchLeaves {
 
     @Override
     boolean solve(TraceContext ctx, int s, double tMin, double tMax) {
-        return BezierClipper.intersect(ctx, table, records, quadratics, s, tMin, tMax, tolerance);
+        return BezierClipper.intersect(ctx, table, records, quadratics, quarters, s, tMin, tMax, tolerance);
     }
 
     @Override
@@ -59,5 +69,7 @@ final class ClippingLeaves extends PatchLeaves {
     }
 
     @Override
-    long solverBytes() { return HeapBytes.of(records) + HeapBytes.of(quadratics); }
+    long solverBytes() {
+        return HeapBytes.of(records) + HeapBytes.of(quadratics) + (quarters == null ? 0 : quarters.bytes());
+    }
 }

@@ -90,7 +90,7 @@ final class NewtonLeafRecords {
         return rec;
     }
 
-    private static void store(double[] frame, double u0, double du, double v0, double dv, float[] rec, int o) {
+    static void store(double[] frame, double u0, double du, double v0, double dv, float[] rec, int o) {
         rec[o + U0] = (float) u0;
         rec[o + DU] = (float) du;
         rec[o + V0] = (float) v0;

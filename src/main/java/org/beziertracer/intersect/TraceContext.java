@@ -76,6 +76,8 @@ public final class TraceContext {
     final double[] corners = new double[8];
     /** {@link NewtonSolver}'s attempt limits: the leaf's overlapped domain, the t range, a root to avoid. */
     final double[] newton = new double[NewtonSolver.SCRATCH];
+    /** A leaf quarter's record in the making ({@link LeafQuarters}). */
+    final double[] quarterFrame = new double[NewtonLeafRecords.STRIDE];
 
     // The query in flight (set by SceneIntersector)
     double tMin;
