@@ -1,6 +1,8 @@
 package org.beziertracer.geometry;
 
-import static org.beziertracer.math.Fma.mad;
+import static org.beziertracer.math.Processor.mad;
+
+import org.beziertracer.math.Processor;
 
 /**
  * Evaluation of a 3-D tensor-product Bézier patch with its first derivatives in
@@ -12,10 +14,11 @@ import static org.beziertracer.math.Fma.mad;
  * </pre>
  * (the derivatives in hodograph form) — six multiply-adds and three differences per control
  * point, where the tensor-product de Casteljau algorithm ({@link DeCasteljau#evaluateWithDerivatives})
- * needs {@code O(n²·m)}. The rows are summed two at a time, so that two rows' chains of dependent
- * additions overlap, with {@link org.beziertracer.math.Fma#mad} (fused where the processor has the
- * instruction): together about a third less time than one row at a time with separate multiplies
- * and adds at degree 9 ({@code KernelBench}).
+ * needs {@code O(n²·m)}. The sums use {@link Processor#mad} (fused where the processor has the
+ * instruction), and where it has 32 floating-point registers ({@link Processor#WIDE_REGISTER_FILE})
+ * rows are summed two at a time, so that two rows' chains of dependent additions overlap: at degree 9
+ * about 10 % less time than one row at a time with separate multiplies and adds on 16 registers
+ * (AVX2), about 30 % less on 32 (AVX-512), where two rows at a time would spill on 16.
  *
  * <p>The basis of degree {@code n − 1} is {@code C(n−1,i) tⁱ (1−t)^{n−1−i}} (powers by repeated
  * multiplication, binomials exact in double up to degree 15), the degree-{@code n} basis follows
@@ -58,15 +61,63 @@ public final class BernsteinEval {
      */
     public static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v,
                                                double[] out, int outOff, double[] scratch, int scratchOff) {
+        evaluateWithDerivatives(net, off, n, m, u, v, out, outOff, scratch, scratchOff, Processor.WIDE_REGISTER_FILE);
+    }
+
+    /** {@link #evaluateWithDerivatives}, its rows summed in pairs or one at a time as {@code inPairs} says. */
+    static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v, double[] out,
+                                        int outOff, double[] scratch, int scratchOff, boolean inPairs) {
+        bases(n, u, m, v, scratch, scratchOff, scratchOff + ORDER, scratchOff + 2 * ORDER, scratchOff + 3 * ORDER);
+        if (inPairs) {
+            sumRowsInPairs(net, off, n, m, out, outOff, scratch, scratchOff);
+        } else {
+            sumRows(net, off, n, m, out, outOff, scratch, scratchOff);
+        }
+    }
+
+    /** The sums of {@link #evaluateWithDerivatives} a row at a time, the bases in {@code scratch}. */
+    private static void sumRows(double[] net, int off, int n, int m, double[] out, int outOff, double[] scratch,
+                                int scratchOff) {
         int bu = scratchOff, lu = bu + ORDER, bv = lu + ORDER, lv = bv + ORDER;
-        bases(n, u, m, v, scratch, bu, lu, bv, lv);
+        double sx = 0, sy = 0, sz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        double qx = 0, qy = 0, qz = 0; // r_(j-1)
+        double w0 = scratch[bu];
+        for (int j = 0, row = off; j <= m; j++, row += 3 * (n + 1)) {
+            // r_j and d_j along the row
+            double px = net[row], py = net[row + 1], pz = net[row + 2];
+            double rx = w0 * px, ry = w0 * py, rz = w0 * pz, dx = 0, dy = 0, dz = 0;
+            for (int i = 1, p = row + 3; i <= n; i++, p += 3) {
+                double nx = net[p], ny = net[p + 1], nz = net[p + 2];
+                double wi = scratch[bu + i], li = scratch[lu + i - 1];
+                rx = mad(wi, nx, rx); ry = mad(wi, ny, ry); rz = mad(wi, nz, rz);
+                dx = mad(li, nx - px, dx); dy = mad(li, ny - py, dy); dz = mad(li, nz - pz, dz);
+                px = nx; py = ny; pz = nz;
+            }
+            double wj = scratch[bv + j];
+            sx = mad(wj, rx, sx); sy = mad(wj, ry, sy); sz = mad(wj, rz, sz);
+            ux = mad(wj, dx, ux); uy = mad(wj, dy, uy); uz = mad(wj, dz, uz);
+            if (j > 0) {
+                double lj = scratch[lv + j - 1];
+                vx = mad(lj, rx - qx, vx); vy = mad(lj, ry - qy, vy); vz = mad(lj, rz - qz, vz);
+            }
+            qx = rx; qy = ry; qz = rz;
+        }
+        store(out, outOff, n, m, sx, sy, sz, ux, uy, uz, vx, vy, vz);
+    }
+
+    /**
+     * The sums of {@link #evaluateWithDerivatives} two rows at a time (j and k = j+1): two independent
+     * sets of sums per pass keep the multiply-add units busy where one row's sums would wait on each
+     * other, but they need 26 registers ({@link Processor#WIDE_REGISTER_FILE}). An odd last row is
+     * read twice and its twin's sums dropped.
+     */
+    private static void sumRowsInPairs(double[] net, int off, int n, int m, double[] out, int outOff,
+                                       double[] scratch, int scratchOff) {
+        int bu = scratchOff, lu = bu + ORDER, bv = lu + ORDER, lv = bv + ORDER;
         double sx = 0, sy = 0, sz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
         double qx = 0, qy = 0, qz = 0; // r_(j-1)
         double w0 = scratch[bu];
         int rowStride = 3 * (n + 1);
-        // Rows in pairs (j, k = j+1): two independent sets of sums per pass keep the multiply-add
-        // units busy where one row's sums would wait on each other. An odd last row is read twice
-        // and its twin's sums dropped.
         for (int j = 0, row = off; j <= m; j += 2, row += 2 * rowStride) {
             boolean pair = j < m;
             int rowK = pair ? row + rowStride : row;
@@ -85,7 +136,7 @@ public final class BernsteinEval {
                 px = nx; py = ny; pz = nz;
                 ax = mx; ay = my; az = mz;
             }
-            double wj = scratch[bv + j], wk = pair ? scratch[bv + j + 1] : 0;
+            double wj = scratch[bv + j];
             sx = mad(wj, rx, sx); sy = mad(wj, ry, sy); sz = mad(wj, rz, sz);
             ux = mad(wj, dx, ux); uy = mad(wj, dy, uy); uz = mad(wj, dz, uz);
             if (j > 0) {
@@ -93,13 +144,19 @@ public final class BernsteinEval {
                 vx = mad(lj, rx - qx, vx); vy = mad(lj, ry - qy, vy); vz = mad(lj, rz - qz, vz);
             }
             if (pair) {
-                double lk = scratch[lv + j];
+                double wk = scratch[bv + j + 1], lk = scratch[lv + j];
                 sx = mad(wk, gx, sx); sy = mad(wk, gy, sy); sz = mad(wk, gz, sz);
                 ux = mad(wk, ex, ux); uy = mad(wk, ey, uy); uz = mad(wk, ez, uz);
                 vx = mad(lk, gx - rx, vx); vy = mad(lk, gy - ry, vy); vz = mad(lk, gz - rz, vz);
             }
             qx = gx; qy = gy; qz = gz;
         }
+        store(out, outOff, n, m, sx, sy, sz, ux, uy, uz, vx, vy, vz);
+    }
+
+    /** S, S_u and S_v from the sums (the derivatives times their degrees) into {@code out[outOff..]}. */
+    private static void store(double[] out, int outOff, int n, int m, double sx, double sy, double sz, double ux,
+                              double uy, double uz, double vx, double vy, double vz) {
         out[outOff] = sx; out[outOff + 1] = sy; out[outOff + 2] = sz;
         out[outOff + 3] = n * ux; out[outOff + 4] = n * uy; out[outOff + 5] = n * uz;
         out[outOff + 6] = m * vx; out[outOff + 7] = m * vy; out[outOff + 8] = m * vz;

@@ -8,14 +8,18 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 class BernsteinEvalTest {
 
     /** Allowed difference from de Casteljau, in units of net size × ulp(1) × degree. */
     private static final double ULPS_PER_DEGREE = 4;
 
-    @Test
-    void agreesWithDeCasteljauForEveryDegreePair() {
+    /** Both ways of summing the rows (the processor picks one), against de Casteljau. */
+    @ParameterizedTest(name = "rows in pairs: {0}")
+    @ValueSource(booleans = {false, true})
+    void agreesWithDeCasteljauForEveryDegreePair(boolean inPairs) {
         Random rnd = new Random(41);
         double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
         double[] a = new double[9], b = new double[9];
@@ -32,7 +36,7 @@ class BernsteinEvalTest {
                         double u = trial == 0 ? 0 : trial == 1 ? 1 : rnd.nextDouble();
                         double v = trial == 0 ? 1 : trial == 1 ? 0 : rnd.nextDouble();
                         DeCasteljau.evaluateWithDerivatives(net, 0, n, m, u, v, a, scratch);
-                        BernsteinEval.evaluateWithDerivatives(net, 0, n, m, u, v, b, 0, scratch, 0);
+                        BernsteinEval.evaluateWithDerivatives(net, 0, n, m, u, v, b, 0, scratch, 0, inPairs);
                         for (int c = 0; c < 9; c++) {
                             // derivatives carry the degree as a factor
                             int deg = c < 3 ? 1 : c < 6 ? n : m;
@@ -72,6 +76,26 @@ class BernsteinEvalTest {
     }
 
     @Test
+    void rowsInPairsAndOneAtATimeGiveTheSameSums() {
+        Random rnd = new Random(45);
+        double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH], a = new double[9], b = new double[9];
+        for (int n = 1; n <= 15; n++) {
+            for (int m = 1; m <= 15; m++) {
+                double[] net = randomNet(rnd, n, m, 3, 1);
+                double u = rnd.nextDouble(), v = rnd.nextDouble();
+                BernsteinEval.evaluateWithDerivatives(net, 0, n, m, u, v, a, 0, scratch, 0, false);
+                BernsteinEval.evaluateWithDerivatives(net, 0, n, m, u, v, b, 0, scratch, 0, true);
+                // the same operations on the same values, in the same order within each sum
+                for (int c = 0; c < 9; c++) {
+                    assertEquals(a[c], b[c], 0, "degree " + n + "x" + m + ", component " + c);
+                }
+                BernsteinEval.evaluateWithDerivatives(net, 0, n, m, u, v, b, 0, scratch, 0);
+                assertEquals(a[0], b[0], 0, "the public form is one of the two");
+            }
+        }
+    }
+
+    @Test
     void theBasesOfBothDirectionsAtOnceAreTheBasesOfEach() {
         Random rnd = new Random(44);
         double[] both = new double[64], one = new double[64];
@@ -95,8 +119,9 @@ class BernsteinEvalTest {
         }
     }
 
-    @Test
-    void aDerivativeAlongACollapsedEdgeIsExactlyZero() {
+    @ParameterizedTest(name = "rows in pairs: {0}")
+    @ValueSource(booleans = {false, true})
+    void aDerivativeAlongACollapsedEdgeIsExactlyZero(boolean inPairs) {
         Random rnd = new Random(43);
         double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
         double[] out = new double[9];
@@ -111,11 +136,11 @@ class BernsteinEvalTest {
                 System.arraycopy(new double[] {-5.5, 60.1, 3.3}, 0, columnCollapsed, 3 * j * (n + 1), 3);
             }
             double t = rnd.nextDouble();
-            BernsteinEval.evaluateWithDerivatives(rowCollapsed, 0, n, m, t, 0, out, 0, scratch, 0);
+            BernsteinEval.evaluateWithDerivatives(rowCollapsed, 0, n, m, t, 0, out, 0, scratch, 0, inPairs);
             for (int c = 3; c < 6; c++) {
                 assertEquals(0.0, out[c], "S_u on the collapsed row, degree " + n + "x" + m + " at u=" + t);
             }
-            BernsteinEval.evaluateWithDerivatives(columnCollapsed, 0, n, m, 0, 0.2 + 0.6 * t, out, 0, scratch, 0);
+            BernsteinEval.evaluateWithDerivatives(columnCollapsed, 0, n, m, 0, 0.2 + 0.6 * t, out, 0, scratch, 0, inPairs);
             for (int c = 6; c < 9; c++) {
                 assertEquals(0.0, out[c], "S_v on the collapsed column, degree " + n + "x" + m);
             }

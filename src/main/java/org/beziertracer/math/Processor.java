@@ -1,0 +1,51 @@
+package org.beziertracer.math;
+
+import java.lang.management.ManagementFactory;
+
+import com.sun.management.HotSpotDiagnosticMXBean;
+
+/**
+ * What the evaluation kernels ask of the processor the virtual machine compiles for, read once from
+ * HotSpot's own options when this class is loaded (the JIT then folds the choices away):
+ * <ul>
+ *   <li>{@link #FUSED}: whether {@link Math#fma} is the processor's fused multiply-add
+ *       ({@code UseFMA}: every x86-64 processor since 2013, AArch64). Without the instruction
+ *       {@code Math.fma} is computed in {@link java.math.BigDecimal} arithmetic, about a hundred
+ *       times slower than the multiply and add it replaces, so {@link #mad} is then {@code a·b + c}.
+ *       The two differ by at most one rounding of the product.</li>
+ *   <li>{@link #WIDE_REGISTER_FILE}: whether compiled code has 32 floating-point registers (x86-64
+ *       with AVX-512, {@code UseAVX} ≥ 3; AArch64), not 16. A kernel that keeps two rows' sums in
+ *       registers at once is faster with 32 and slower with 16, where they spill
+ *       ({@code BernsteinEval}).</li>
+ * </ul>
+ * Not HotSpot, or no management module: neither (the plain forms are always correct and fast).
+ */
+public final class Processor {
+    private Processor() {}
+
+    /** True when {@link #mad} is a fused multiply-add. */
+    public static final boolean FUSED = option("UseFMA", 1);
+
+    /** True when compiled code has 32 floating-point registers. */
+    public static final boolean WIDE_REGISTER_FILE = "aarch64".equals(System.getProperty("os.arch"))
+            || option("UseAVX", 3);
+
+    /** {@code a·b + c}, fused where that is fast ({@link #FUSED}). */
+    public static double mad(double a, double b, double c) {
+        return FUSED ? Math.fma(a, b, c) : a * b + c;
+    }
+
+    /** True when HotSpot's option {@code name} (a flag, or a number) is set to at least {@code least}. */
+    static boolean option(String name, int least) {
+        try {
+            HotSpotDiagnosticMXBean vm = ManagementFactory.getPlatformMXBean(HotSpotDiagnosticMXBean.class);
+            String value = vm == null ? null : vm.getVMOption(name).getValue();
+            if (value == null) {
+                return false;
+            }
+            return "true".equals(value) || !"false".equals(value) && Long.parseLong(value) >= least;
+        } catch (RuntimeException | LinkageError e) {
+            return false; // not HotSpot, no management module, no such option on this processor
+        }
+    }
+}
