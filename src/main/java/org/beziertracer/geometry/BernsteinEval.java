@@ -39,7 +39,7 @@ public final class BernsteinEval {
     private static final int ORDER = DeCasteljau.MAX_ORDER;
 
     /** Scratch doubles {@link #evaluateWithDerivatives} uses from its scratch offset. */
-    public static final int SCRATCH = 4 * ORDER;
+    public static final int SCRATCH = 6 * ORDER;
 
     /** {@code C(k, i)} at {@code k * ORDER + i}, exact. */
     private static final double[] BINOMIAL = new double[ORDER * ORDER];
@@ -165,54 +165,54 @@ public final class BernsteinEval {
     /**
      * {@link #basis} in u (degree {@code n}, into {@code bu}, {@code lu}) and in v (degree
      * {@code m}, into {@code bv}, {@code lv}) at once, value for value the same: the four chains of
-     * powers run side by side.
+     * powers run side by side (the powers of {@code 1 − t} at {@code lv + ORDER} and
+     * {@code lv + 2·ORDER}).
      */
     static void bases(int n, double u, int m, double v, double[] b, int bu, int lu, int bv, int lv) {
         double su = 1 - u, sv = 1 - v;
-        int kn = n - 1, km = m - 1;
-        // t^i into the lower basis' slots, s^i into the upper one's (overwritten below)
-        double tu = 1, tv = 1, pu = 1, pv = 1;
+        int kn = n - 1, km = m - 1, pu = lv + ORDER, pv = pu + ORDER;
+        // t^i into the lower bases' slots, (1-t)^i past them
+        double tu = 1, tv = 1, ru = 1, rv = 1;
         for (int i = 0, k = Math.max(kn, km); i <= k; i++) {
-            b[lu + i] = tu; b[lv + i] = tv; b[bu + i] = pu; b[bv + i] = pv;
-            tu *= u; tv *= v; pu *= su; pv *= sv;
+            b[lu + i] = tu; b[lv + i] = tv; b[pu + i] = ru; b[pv + i] = rv;
+            tu *= u; tv *= v; ru *= su; rv *= sv;
         }
-        lower(kn, b, lu, bu);
-        lower(km, b, lv, bv);
-        upper(n, u, su, b, bu, lu);
-        upper(m, v, sv, b, bv, lv);
+        both(n, u, su, b, bu, lu, pu);
+        both(m, v, sv, b, bv, lv, pv);
     }
 
-    /** {@code L_i = C(k,i)·tⁱ·s^(k−i)} from the powers {@code tⁱ} at {@code lo} and {@code sⁱ} at {@code so}. */
-    private static void lower(int k, double[] b, int lo, int so) {
+    /**
+     * The degree-{@code (deg−1)} basis {@code L_i = C(deg−1,i)·tⁱ·s^(deg−1−i)} in place of the
+     * powers {@code tⁱ} at {@code lo} (the powers {@code sⁱ} at {@code po}), and with it the
+     * degree-{@code deg} basis {@code B_i = s·L_i + t·L_(i−1)} into {@code bo}, in one pass.
+     */
+    private static void both(int deg, double t, double s, double[] b, int bo, int lo, int po) {
+        int k = deg - 1, binom = k * ORDER;
+        double previous = 0;
         for (int i = 0; i <= k; i++) {
-            b[lo + i] = BINOMIAL[k * ORDER + i] * b[lo + i] * b[so + k - i];
+            double l = BINOMIAL[binom + i] * b[lo + i] * b[po + k - i];
+            b[lo + i] = l;
+            b[bo + i] = i == 0 ? s * l : s * l + t * previous;
+            previous = l;
         }
-    }
-
-    /** {@code B_i = s·L_i + t·L_(i−1)} into {@code bo} from the degree-{@code (deg−1)} basis at {@code lo}. */
-    private static void upper(int deg, double t, double s, double[] b, int bo, int lo) {
-        b[bo] = s * b[lo];
-        for (int i = 1; i < deg; i++) {
-            b[bo + i] = s * b[lo + i] + t * b[lo + i - 1];
-        }
-        b[bo + deg] = t * b[lo + deg - 1];
+        b[bo + deg] = t * previous;
     }
 
     /**
      * The degree-{@code deg} Bernstein basis at {@code t} into {@code b[bo .. bo+deg]} and the
-     * degree-{@code (deg−1)} basis into {@code b[lo .. lo+deg−1]}; {@code deg ≥ 1}.
+     * degree-{@code (deg−1)} basis into {@code b[lo .. lo+deg−1]}; {@code deg ≥ 1}. Uses
+     * {@code b[lo + ORDER .. lo + 2·ORDER)} for the powers of {@code 1 − t}.
      */
     static void basis(int deg, double t, double[] b, int bo, int lo) {
         double s = 1 - t;
-        // t^i into the lower basis' slots, s^i into the upper one's (overwritten below)
+        int po = lo + ORDER;
         double tp = 1, sp = 1;
         for (int i = 0; i < deg; i++) {
             b[lo + i] = tp;
-            b[bo + i] = sp;
+            b[po + i] = sp;
             tp *= t;
             sp *= s;
         }
-        lower(deg - 1, b, lo, bo);
-        upper(deg, t, s, b, bo, lo);
+        both(deg, t, s, b, bo, lo, po);
     }
 }

@@ -98,7 +98,7 @@ class BernsteinEvalTest {
     @Test
     void theBasesOfBothDirectionsAtOnceAreTheBasesOfEach() {
         Random rnd = new Random(44);
-        double[] both = new double[64], one = new double[64];
+        double[] both = new double[128], one = new double[128];
         for (int n = 1; n <= 15; n++) {
             for (int m = 1; m <= 15; m++) {
                 double u = rnd.nextDouble(), v = rnd.nextDouble();
