@@ -25,9 +25,9 @@ import org.beziertracer.math.HeapBytes;
  * one level ahead with precomputed enclosures (K. Qin, M. Gong, G. Tong, "Fast ray tracing NURBS
  * surfaces", 1996).
  *
- * <p>Only polynomial leaves above bicubic get quarters: on bicubic and lower leaves clipping costs
- * no more than the quarters' Newton solves (the teapot and the degree-5 grid measured the same
- * with and without). A leaf's quarters are made the first time a ray needs them, by the render
+ * <p>Only polynomial leaves above bicubic get quarters, in tables of at most {@link #MOST_LEAVES}
+ * leaves (a record is 64 bytes, so a leaf's quarters take 256): on bicubic leaves, whose clipping
+ * costs far less, the teapot and the curved patch read only about 2 % faster with them. A leaf's quarters are made the first time a ray needs them, by the render
  * thread that needs them, and published with a release store of the leaf's flag (read with an
  * acquire load): two threads may make the same leaf's quarters at once and write the same values,
  * so what any thread reads is the one deterministic result, and an edit (a new table) costs
@@ -54,8 +54,17 @@ final class LeafQuarters {
         this.made = new int[leaves];
     }
 
-    /** Quarters for {@code table}'s leaves, none made yet; null when no leaf has any (no polynomial patch above bicubic). */
+    /** Most leaves a table may have to get quarters: 4 MB of them at most. */
+    static final int MOST_LEAVES = 1 << 14;
+
+    /**
+     * Quarters for {@code table}'s leaves, none made yet; null when no leaf has any (no polynomial
+     * patch above bicubic) or the table has more than {@link #MOST_LEAVES} leaves.
+     */
     static LeafQuarters of(SubPatchTable table) {
+        if (table.count > MOST_LEAVES) {
+            return null;
+        }
         for (int k = 0; k < table.patchCount(); k++) {
             if (has(table, k) && table.countOf(k) > 0) {
                 return new LeafQuarters(table.count);

@@ -16,6 +16,7 @@ import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -126,6 +127,21 @@ class LeafQuartersTest {
                 }
             }
         }
+    }
+
+    @Test
+    void onlyTablesOfAtMostMostLeavesWithLeavesAboveBicubicGetQuarters() {
+        Random rnd = new Random(8);
+        assertNull(LeafQuarters.of(SubPatchTable.build(Models.teapot().patches(), SplitOptions.defaults())), "bicubic");
+        assertNotNull(LeafQuarters.of(SubPatchTable.build(List.of(RandomPatches.wild(rnd, 4, 3, 4)), SplitOptions.defaults())),
+                "degree 4x3");
+        List<BezierPatch> many = new ArrayList<>();
+        for (int k = 0; k < 160; k++) {
+            many.add(RandomPatches.wild(rnd, 4, 4, 4));
+        }
+        SubPatchTable fine = SubPatchTable.build(many, new SplitOptions(true, 1e-9, 7));
+        assertTrue(fine.count > LeafQuarters.MOST_LEAVES, fine.count + " leaves");
+        assertNull(LeafQuarters.of(fine), fine.count + " leaves");
     }
 
     @Test
