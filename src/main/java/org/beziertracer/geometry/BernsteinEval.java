@@ -18,7 +18,7 @@ import org.beziertracer.math.Processor;
  * instruction), and where it has 32 floating-point registers ({@link Processor#WIDE_REGISTER_FILE})
  * rows are summed two at a time, so that two rows' chains of dependent additions overlap: at degree 9
  * about 10 % less time than one row at a time with separate multiplies and adds on 16 registers
- * (AVX2), about 30 % less on 32 (AVX-512), where two rows at a time would spill on 16.
+ * (AVX2), about 30 % less on 32 (AVX-512); two rows at a time would spill on 16.
  *
  * <p>The basis of degree {@code n − 1} is {@code C(n−1,i) tⁱ (1−t)^{n−1−i}} (powers by repeated
  * multiplication, binomials exact in double up to degree 15), the degree-{@code n} basis follows
@@ -64,7 +64,10 @@ public final class BernsteinEval {
         evaluateWithDerivatives(net, off, n, m, u, v, out, outOff, scratch, scratchOff, Processor.WIDE_REGISTER_FILE);
     }
 
-    /** {@link #evaluateWithDerivatives}, its rows summed in pairs or one at a time as {@code inPairs} says. */
+    /**
+     * {@link #evaluateWithDerivatives}, its rows summed two at a time ({@code inPairs}, an odd last
+     * row alone) or one at a time.
+     */
     static void evaluateWithDerivatives(double[] net, int off, int n, int m, double u, double v, double[] out,
                                         int outOff, double[] scratch, int scratchOff, boolean inPairs) {
         bases(n, u, m, v, scratch, scratchOff, scratchOff + ORDER, scratchOff + 2 * ORDER, scratchOff + 3 * ORDER);
@@ -106,10 +109,12 @@ public final class BernsteinEval {
     }
 
     /**
-     * The sums of {@link #evaluateWithDerivatives} two rows at a time (j and k = j+1): two independent
-     * sets of sums per pass keep the multiply-add units busy where one row's sums would wait on each
-     * other, but they need 26 registers ({@link Processor#WIDE_REGISTER_FILE}). An odd last row is
-     * read twice and its twin's sums dropped.
+     * The sums of {@link #evaluateWithDerivatives} two rows at a time (j and k = j+1), an odd last
+     * row alone: two independent sets of sums per pass keep the multiply-add units busy where one
+     * row's sums would wait on each other, but they need 26 registers
+     * ({@link Processor#WIDE_REGISTER_FILE}). (The last row alone, not paired with itself and
+     * dropped, nor folded into one loop with {@link #sumRows}: both compiled to code slower than a
+     * row at a time, KernelBench degree 8.)
      */
     private static void sumRowsInPairs(double[] net, int off, int n, int m, double[] out, int outOff,
                                        double[] scratch, int scratchOff) {
@@ -117,10 +122,9 @@ public final class BernsteinEval {
         double sx = 0, sy = 0, sz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
         double qx = 0, qy = 0, qz = 0; // r_(j-1)
         double w0 = scratch[bu];
-        int rowStride = 3 * (n + 1);
-        for (int j = 0, row = off; j <= m; j += 2, row += 2 * rowStride) {
-            boolean pair = j < m;
-            int rowK = pair ? row + rowStride : row;
+        int rowStride = 3 * (n + 1), j = 0, row = off;
+        for (; j < m; j += 2, row += 2 * rowStride) {
+            int rowK = row + rowStride;
             double px = net[row], py = net[row + 1], pz = net[row + 2];
             double ax = net[rowK], ay = net[rowK + 1], az = net[rowK + 2];
             double rx = w0 * px, ry = w0 * py, rz = w0 * pz, dx = 0, dy = 0, dz = 0;
@@ -136,6 +140,29 @@ public final class BernsteinEval {
                 px = nx; py = ny; pz = nz;
                 ax = mx; ay = my; az = mz;
             }
+            double wj = scratch[bv + j], wk = scratch[bv + j + 1], lk = scratch[lv + j];
+            sx = mad(wj, rx, sx); sy = mad(wj, ry, sy); sz = mad(wj, rz, sz);
+            ux = mad(wj, dx, ux); uy = mad(wj, dy, uy); uz = mad(wj, dz, uz);
+            if (j > 0) {
+                double lj = scratch[lv + j - 1];
+                vx = mad(lj, rx - qx, vx); vy = mad(lj, ry - qy, vy); vz = mad(lj, rz - qz, vz);
+            }
+            sx = mad(wk, gx, sx); sy = mad(wk, gy, sy); sz = mad(wk, gz, sz);
+            ux = mad(wk, ex, ux); uy = mad(wk, ey, uy); uz = mad(wk, ez, uz);
+            vx = mad(lk, gx - rx, vx); vy = mad(lk, gy - ry, vy); vz = mad(lk, gz - rz, vz);
+            qx = gx; qy = gy; qz = gz;
+        }
+        if (j == m) {
+            // r_j and d_j along the row
+            double px = net[row], py = net[row + 1], pz = net[row + 2];
+            double rx = w0 * px, ry = w0 * py, rz = w0 * pz, dx = 0, dy = 0, dz = 0;
+            for (int i = 1, p = row + 3; i <= n; i++, p += 3) {
+                double nx = net[p], ny = net[p + 1], nz = net[p + 2];
+                double wi = scratch[bu + i], li = scratch[lu + i - 1];
+                rx = mad(wi, nx, rx); ry = mad(wi, ny, ry); rz = mad(wi, nz, rz);
+                dx = mad(li, nx - px, dx); dy = mad(li, ny - py, dy); dz = mad(li, nz - pz, dz);
+                px = nx; py = ny; pz = nz;
+            }
             double wj = scratch[bv + j];
             sx = mad(wj, rx, sx); sy = mad(wj, ry, sy); sz = mad(wj, rz, sz);
             ux = mad(wj, dx, ux); uy = mad(wj, dy, uy); uz = mad(wj, dz, uz);
@@ -143,13 +170,6 @@ public final class BernsteinEval {
                 double lj = scratch[lv + j - 1];
                 vx = mad(lj, rx - qx, vx); vy = mad(lj, ry - qy, vy); vz = mad(lj, rz - qz, vz);
             }
-            if (pair) {
-                double wk = scratch[bv + j + 1], lk = scratch[lv + j];
-                sx = mad(wk, gx, sx); sy = mad(wk, gy, sy); sz = mad(wk, gz, sz);
-                ux = mad(wk, ex, ux); uy = mad(wk, ey, uy); uz = mad(wk, ez, uz);
-                vx = mad(lk, gx - rx, vx); vy = mad(lk, gy - ry, vy); vz = mad(lk, gz - rz, vz);
-            }
-            qx = gx; qy = gy; qz = gz;
         }
         store(out, outOff, n, m, sx, sy, sz, ux, uy, uz, vx, vy, vz);
     }

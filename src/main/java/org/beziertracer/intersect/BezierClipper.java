@@ -31,7 +31,10 @@ import org.beziertracer.geometry.SubPatchTable;
  * {@link LeafQuadratics}) and, when it converges inside the leaf, no net is projected or clipped at all; its
  * last step is usually taken without evaluating the patch again ({@link RayPatchNewton#extrapolate}).
  * When Newton fails on such a leaf, the ray usually passes beside it: the winding of the image of
- * the leaf's border around the ray then proves it empty ({@link BoundaryWinding}). Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
+ * the leaf's border around the ray then proves it empty ({@link BoundaryWinding}). A leaf above
+ * bicubic that the precomputed test cannot prove single-root is tried quarter by quarter
+ * ({@link LeafQuarters}: each quarter's own record proves a miss or a single root that Newton in
+ * the quarter finds). Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
  * unique root needs no de Casteljau restriction. An any-hit query (a shadow ray) ends the search
  * at the leaf's first root.
  *

@@ -37,10 +37,8 @@ final class ClippingLeaves extends PatchLeaves {
     }
 
     private static LeafQuarters quarters(SubPatchTable table, float[] records) {
-        return records != null && QUARTERS ? LeafQuarters.of(table) : null;
+        return records != null ? LeafQuarters.of(table) : null;
     }
-
-    static final boolean QUARTERS = Boolean.parseBoolean(System.getProperty("quarters", "true"));
 
     /** True when a table of {@code leaves} leaves gets records. */
     static boolean hasRecords(long leaves) {
