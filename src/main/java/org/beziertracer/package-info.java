@@ -4,11 +4,11 @@
  * <p>Layers, each importing only those before it: {@code math → model (+ model.io) → geometry →
  * accel → intersect → render → ui / cli}. See {@code docs/architecture.md}.
  *
- * <p>The hot path, in reading order (one ray):
+ * <p>The hot path, in reading order (a packet of camera rays, see {@code RayPacket}):
  * {@code RenderWorker.renderTile → PixelSampler.offset → Camera.generateRay →
- * WhittedTracer.trace → SceneIntersector.closestHit → Bvh.closestHit → PatchLeaves.intersect →
- * ClippingLeaves.solve → BezierClipper.intersect → SceneIntersector.surfacePoint →
- * PatchLeaves.surfacePoint → WhittedTracer.shade (→ SceneIntersector.occluded per light) →
- * Film.addSample}
+ * WhittedTracer.tracePacket → SceneIntersector.gather → SceneIntersector.closestHit →
+ * Bvh.closestHitIn → PatchLeaves.intersect → ClippingLeaves.solve → BezierClipper.intersect →
+ * SceneIntersector.surfacePoint → PatchLeaves.surfacePoint → (per light: SceneIntersector.gather,
+ * SceneIntersector.occludedLeaving) → WhittedTracer.shadeHit → Film.addSample}
  */
 package org.beziertracer;

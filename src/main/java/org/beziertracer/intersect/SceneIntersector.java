@@ -4,6 +4,7 @@ import org.beziertracer.accel.Accelerator;
 import org.beziertracer.accel.Bvh;
 import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.accel.FlatList;
+import org.beziertracer.accel.RayPacket;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
 
@@ -149,12 +150,37 @@ public final class SceneIntersector {
      */
     public boolean closestHit(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                               double tMin, double tMax, Hit hit) {
+        return closestHit(ctx, null, ox, oy, oz, dx, dy, dz, tMin, tMax, hit);
+    }
+
+    /**
+     * Lists the leaves the rays added to {@code packet} may meet between {@code tMin} and {@code
+     * tMax}, with one traversal of the hierarchy for them all ({@link Accelerator#gather}); each
+     * ray's own interval must lie within those bounds. Returns false when they
+     * cannot be traversed together; then pass {@code null} as the packet to {@link
+     * #closestHit(TraceContext, RayPacket, double, double, double, double, double, double, double,
+     * double, Hit)}, or call it anyway: it traverses for each ray alone.
+     */
+    public boolean gather(TraceContext ctx, RayPacket packet, double tMin, double tMax) {
+        ctx.ensureStack(accel.stackSize());
+        return accel.primCount() > 0 && accel.gather(packet, tMin, tMax, ctx.stack);
+    }
+
+    /**
+     * {@link #closestHit(TraceContext, double, double, double, double, double, double, double, double,
+     * Hit)} for a ray of {@code packet}, from the packet's leaves where {@link #gather} listed them
+     * for this snapshot (the same answer), else by a traversal of its own.
+     */
+    public boolean closestHit(TraceContext ctx, RayPacket packet, double ox, double oy, double oz,
+                              double dx, double dy, double dz, double tMin, double tMax, Hit hit) {
         ctx.ensureStack(accel.stackSize());
         ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.beginClosestHit(tMin);
         leaves.beginRay(ctx);
         double best = tMax;
-        if (accel.primCount() > 0) {
+        if (packet != null && packet.gatheredBy(accel)) {
+            best = accel.closestHitIn(packet, ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx);
+        } else if (accel.primCount() > 0) {
             best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
         }
         boolean any = ctx.found;
@@ -199,6 +225,16 @@ public final class SceneIntersector {
     /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */
     public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMin, double tMax) {
+        return occluded(ctx, null, ox, oy, oz, dx, dy, dz, tMin, tMax);
+    }
+
+    /**
+     * {@link #occluded(TraceContext, double, double, double, double, double, double, double, double)}
+     * for a ray of {@code packet}: from the packet's leaves where {@link #gather} listed them for
+     * this snapshot (the same answer), else by a traversal of its own.
+     */
+    public boolean occluded(TraceContext ctx, RayPacket packet, double ox, double oy, double oz,
+                            double dx, double dy, double dz, double tMin, double tMax) {
         ctx.ensureStack(accel.stackSize());
         ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
@@ -215,6 +251,9 @@ public final class SceneIntersector {
             }
         }
         leaves.beginRay(ctx);
+        if (packet != null && packet.gatheredBy(accel)) {
+            return accel.occludedIn(packet, ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx);
+        }
         return accel.primCount() > 0
                 && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
     }
@@ -228,11 +267,18 @@ public final class SceneIntersector {
     public boolean occludedLeaving(TraceContext ctx, Hit from, SurfacePoint at, double nx, double ny, double nz,
                                    double ox, double oy, double oz, double dx, double dy, double dz,
                                    double tMin, double tMax) {
+        return occludedLeaving(ctx, null, from, at, nx, ny, nz, ox, oy, oz, dx, dy, dz, tMin, tMax);
+    }
+
+    /** {@link #occludedLeaving} for a shadow ray of {@code packet} (see {@link #occluded(TraceContext, RayPacket, double, double, double, double, double, double, double, double)}). */
+    public boolean occludedLeaving(TraceContext ctx, RayPacket packet, Hit from, SurfacePoint at,
+                                   double nx, double ny, double nz, double ox, double oy, double oz,
+                                   double dx, double dy, double dz, double tMin, double tMax) {
         if (from.kind == Hit.PATCH) {
             ctx.leaving(from.subPatch, from.u, from.v, at.px, at.py, at.pz, nx, ny, nz);
         }
         try {
-            return occluded(ctx, ox, oy, oz, dx, dy, dz, tMin, tMax);
+            return occluded(ctx, packet, ox, oy, oz, dx, dy, dz, tMin, tMax);
         } finally {
             ctx.originLeaf = -1;
         }

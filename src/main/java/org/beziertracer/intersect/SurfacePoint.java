@@ -12,4 +12,14 @@ public final class SurfacePoint {
     public double nx, ny, nz;
     public double u, v;
     public int kind, index;
+
+    /** Copies every field of {@code o}. */
+    public void set(SurfacePoint o) {
+        px = o.px; py = o.py; pz = o.pz;
+        dpdux = o.dpdux; dpduy = o.dpduy; dpduz = o.dpduz;
+        dpdvx = o.dpdvx; dpdvy = o.dpdvy; dpdvz = o.dpdvz;
+        nx = o.nx; ny = o.ny; nz = o.nz;
+        u = o.u; v = o.v;
+        kind = o.kind; index = o.index;
+    }
 }

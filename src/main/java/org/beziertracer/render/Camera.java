@@ -64,20 +64,25 @@ public final class Camera {
      * {@code ray[0..5] = ox, oy, oz, dx, dy, dz}. Allocation-free.
      */
     public void generateRay(double x, double y, int width, int height, double[] ray) {
+        generateRay(x, y, width, height, ray, 0);
+    }
+
+    /** {@link #generateRay(double, double, int, int, double[])} into {@code ray[at..at+5]}. */
+    public void generateRay(double x, double y, int width, int height, double[] ray, int at) {
         // (1 − 2y/height)·halfWidth·height/width, with one division a ray instead of three
         double invWidth = 1.0 / width;
         double sx = (2 * x * invWidth - 1) * halfWidth;
         double sy = (height - 2 * y) * invWidth * halfWidth;
         if (fovDegrees == 0) {
-            ray[0] = eye.x() + sx * rx + sy * ux;
-            ray[1] = eye.y() + sx * ry + sy * uy;
-            ray[2] = eye.z() + sx * rz + sy * uz;
-            ray[3] = fx; ray[4] = fy; ray[5] = fz;
+            ray[at] = eye.x() + sx * rx + sy * ux;
+            ray[at + 1] = eye.y() + sx * ry + sy * uy;
+            ray[at + 2] = eye.z() + sx * rz + sy * uz;
+            ray[at + 3] = fx; ray[at + 4] = fy; ray[at + 5] = fz;
         } else {
-            ray[0] = eye.x(); ray[1] = eye.y(); ray[2] = eye.z();
-            ray[3] = fx + sx * rx + sy * ux;
-            ray[4] = fy + sx * ry + sy * uy;
-            ray[5] = fz + sx * rz + sy * uz;
+            ray[at] = eye.x(); ray[at + 1] = eye.y(); ray[at + 2] = eye.z();
+            ray[at + 3] = fx + sx * rx + sy * ux;
+            ray[at + 4] = fy + sx * ry + sy * uy;
+            ray[at + 5] = fz + sx * rz + sy * uz;
         }
     }
 

@@ -21,7 +21,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * coordinator thread runs the passes of {@link PassPlan}; in each pass the workers take 32-pixel
  * tiles from a shared counter, and after the pass the sink hears {@link FrameSink#passDone}.
  * Starting a new render or {@link #cancel()} bumps the generation; workers check it between tiles
- * and every {@value RenderWorker#CHECK_ROWS} rows, so a stale render stops within one tile's time.
+ * and every {@value RenderWorker#PACKET} rows of its grid, so a stale render stops within one tile's time.
  *
  * <p>The sink and the {@link RenderProgress} listener are called from worker threads.
  * {@link #close()} stops everything.

@@ -1,5 +1,6 @@
 package org.beziertracer.render;
 
+import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.SceneIntersector;
 
 /**
@@ -9,13 +10,20 @@ import org.beziertracer.intersect.SceneIntersector;
  * on a pass ({@link #release}).
  */
 final class RenderWorker {
-    /** Rows between two checks of the generation inside a tile. */
-    static final int CHECK_ROWS = 4;
+    /**
+     * Pixels of a pass's grid a side of a packet of camera rays traced together ({@link
+     * RayPacket}); the generation is checked before each row of packets, so every
+     * {@value} rows of the grid.
+     */
+    static final int PACKET = 4;
 
     private final WhittedTracer tracer;
-    private final double[] ray = new double[6];
-    private final double[] rgb = new double[3];
     private final double[] offset = new double[2];
+    private final RayPacket packet = new RayPacket();
+    /** The packet's rays (origin, direction) and their pixels (x, y); grown, never shrunk. */
+    private double[] rays = new double[6 * PACKET * PACKET];
+    private int[] pixels = new int[2 * PACKET * PACKET];
+    private double[] colours = new double[3 * PACKET * PACKET];
     private int[] argb = new int[0];
     private ShadingScene bound;
 
@@ -34,28 +42,35 @@ final class RenderWorker {
         }
         Film film = st.film;
         Camera camera = st.job.camera();
-        int width = film.width(), height = film.height();
         int block = pass.block(), skip = pass.skipGrid();
         double threshold = st.job.options().adaptiveThreshold();
-        for (int y = y0; y < y0 + h; y++) {
-            if ((y - y0) % CHECK_ROWS == 0 && st.isStale()) {
+        int span = PACKET * block;
+        for (int gy = y0 + Math.floorMod(-y0, block); gy < y0 + h; gy += span) {
+            if (st.isStale()) {
                 return false;
             }
-            if (y % block != 0) {
-                continue;
-            }
-            for (int x = x0; x < x0 + w; x += block) {
-                if (skip > 0 && x % skip == 0 && y % skip == 0) {
-                    continue;
+            int yEnd = Math.min(gy + span, y0 + h);
+            for (int gx = x0; gx < x0 + w; gx += span) {
+                int xEnd = Math.min(gx + span, x0 + w);
+                // The packet: this pass's samples of up to PACKET × PACKET pixels of the pass's grid
+                int n = 0;
+                for (int y = gy; y < yEnd; y += block) {
+                    for (int x = gx; x < xEnd; x += block) {
+                        if (skip > 0 && x % skip == 0 && y % skip == 0) {
+                            continue;
+                        }
+                        if (pass.adaptive() && !differs(film, x, y, threshold)) {
+                            continue;
+                        }
+                        for (int s = pass.sampleFrom(); s < pass.sampleTo(); s++) {
+                            n = addRay(st, camera, x, y, s, n);
+                        }
+                    }
                 }
-                if (pass.adaptive() && !differs(film, x, y, threshold)) {
-                    continue;
-                }
-                for (int s = pass.sampleFrom(); s < pass.sampleTo(); s++) {
-                    st.sampler.offset(x, y, s, offset);
-                    camera.generateRay(x + offset[0], y + offset[1], width, height, ray);
-                    tracer.trace(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], rgb);
-                    film.addSample(x, y, rgb[0], rgb[1], rgb[2]);
+                RayPacket together = n > 1 && tracer.gather(packet.of(rays, n)) ? packet : null;
+                tracer.tracePacket(together, rays, n, colours);
+                for (int i = 0; i < n; i++) {
+                    film.addSample(pixels[2 * i], pixels[2 * i + 1], colours[3 * i], colours[3 * i + 1], colours[3 * i + 2]);
                 }
             }
         }
@@ -73,6 +88,20 @@ final class RenderWorker {
             st.sink.tileDone(st.generation, x0, y0, w, h, argb, w);
         }
         return true;
+    }
+
+    /** Makes the camera ray of sample {@code s} of pixel {@code (x, y)} the packet's ray {@code n}; returns n + 1. */
+    private int addRay(RenderState st, Camera camera, int x, int y, int s, int n) {
+        if (6 * n + 6 > rays.length) {
+            rays = java.util.Arrays.copyOf(rays, 2 * rays.length);
+            pixels = java.util.Arrays.copyOf(pixels, 2 * pixels.length);
+            colours = new double[rays.length / 2];
+        }
+        st.sampler.offset(x, y, s, offset);
+        camera.generateRay(x + offset[0], y + offset[1], st.film.width(), st.film.height(), rays, 6 * n);
+        pixels[2 * n] = x;
+        pixels[2 * n + 1] = y;
+        return n + 1;
     }
 
     /**

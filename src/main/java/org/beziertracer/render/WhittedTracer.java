@@ -1,5 +1,6 @@
 package org.beziertracer.render;
 
+import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.intersect.SurfacePoint;
@@ -38,6 +39,8 @@ import org.beziertracer.model.RenderSettings;
  */
 public final class WhittedTracer {
     private static final int STACK = RenderSettings.MAX_DEPTH + 2;
+    /** A shadow ray runs from its origin to just short of the light. */
+    private static final double SHADOW_T_MAX = 1 - 1e-9;
 
     private final TraceContext ctx;
     private final Hit hit = new Hit();
@@ -47,12 +50,28 @@ public final class WhittedTracer {
     private final double[] stackWeight = new double[STACK];
     private final int[] stackDepth = new int[STACK];
     private final double[] local = new double[3];
+    /** A packet's camera ray's colour while it is shaded. */
+    private final double[] colour = new double[3];
     // The hit being shaded: unit ray direction, unit normal facing the viewer, front or back face
     private double ux, uy, uz, nx, ny, nz;
     private boolean entering;
     private ShadingScene s;
     private SceneIntersector si;
     private ShadingEvents events = ShadingEvents.NONE;
+    // The unit direction to the light, and n·l, of the last towardLight()
+    private double lx, ly, lz, ndl;
+
+    // A packet of camera rays (tracePacket): per ray its first hit, surface point and, per light,
+    // its shadow ray's answer; the shadow rays toward one light (origin, direction, normal) and
+    // the camera ray each belongs to
+    private final RayPacket shadows = new RayPacket();
+    private Hit[] hits = new Hit[0];
+    private SurfacePoint[] points = new SurfacePoint[0];
+    private boolean[] found = new boolean[0], blocked = new boolean[0];
+    private double[] shadowRay = new double[0];
+    private int[] shadowOwner = new int[0];
+    /** The packet's camera ray whose first hit is being shaded, or -1. */
+    private int packetRay = -1;
 
     /** Ray counters, cumulative; the worker reads and resets them. */
     long primaryRays, shadowRays, secondaryRays;
@@ -92,7 +111,11 @@ public final class WhittedTracer {
     public void trace(double ox, double oy, double oz, double dx, double dy, double dz, double[] rgb) {
         rgb[0] = 0; rgb[1] = 0; rgb[2] = 0;
         primaryRays++;
-        int top = push(0, ox, oy, oz, dx, dy, dz, 1, 0);
+        finish(push(0, ox, oy, oz, dx, dy, dz, 1, 0), rgb);
+    }
+
+    /** Shades the pending rays on the stack below {@code top}, and those they spawn. */
+    private void finish(int top, double[] rgb) {
         while (top > 0) {
             top--;
             int o = 6 * top;
@@ -101,6 +124,116 @@ public final class WhittedTracer {
             top = shade(stackRay[o], stackRay[o + 1], stackRay[o + 2], stackRay[o + 3], stackRay[o + 4],
                     stackRay[o + 5], w, depth, top, rgb);
         }
+    }
+
+    /**
+     * Traces the {@code n} camera rays at {@code rays[0 .. 6n-1]} (origin, direction each) as
+     * {@link #trace(double, double, double, double, double, double, double[])} would one by one,
+     * and writes ray i's colour into {@code rgb[3i .. 3i+2]}; the same colours, with the rays'
+     * traversals shared ({@link RayPacket}). First every ray's first hit (from {@code primary}'s
+     * leaves when it was gathered, see {@link #gather}), then per light the shadow rays of those
+     * hits as one packet, then the shading of each hit and the rays it spawns, one at a time.
+     */
+    void tracePacket(RayPacket primary, double[] rays, int n, double[] rgb) {
+        ensurePacket(n);
+        for (int i = 0; i < n; i++) {
+            int o = 6 * i;
+            primaryRays++;
+            found[i] = si.closestHit(ctx, primary, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4],
+                    rays[o + 5], 0, Double.POSITIVE_INFINITY, hits[i]);
+            if (found[i]) {
+                si.surfacePoint(ctx, hits[i], points[i]);
+            }
+        }
+        if (s.mode == ShadingMode.PHONG && s.shadows) {
+            for (int k = 0; k < s.lightCount; k++) {
+                shadowPacket(rays, n, k);
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            int o = 6 * i;
+            double ox = rays[o], oy = rays[o + 1], oz = rays[o + 2], dx = rays[o + 3], dy = rays[o + 4], dz = rays[o + 5];
+            colour[0] = 0; colour[1] = 0; colour[2] = 0;
+            events.ray(0, 1, ox, oy, oz, dx, dy, dz);
+            int top = 0;
+            if (found[i]) {
+                hit.set(hits[i]);
+                sp.set(points[i]);
+                packetRay = i;
+                top = shadeHit(ox, oy, oz, dx, dy, dz, 1, 0, 0, colour);
+                packetRay = -1;
+            } else {
+                background(1, 0, colour);
+            }
+            finish(top, colour);
+            rgb[3 * i] = colour[0]; rgb[3 * i + 1] = colour[1]; rgb[3 * i + 2] = colour[2];
+        }
+    }
+
+    /**
+     * The shadow rays toward light {@code k} of the packet's first hits, traced as one packet; their
+     * answers go to {@link #blocked}. Each is made as {@link #phong} makes it for the ray alone.
+     */
+    private void shadowPacket(double[] rays, int n, int k) {
+        int lo = 6 * k, count = 0;
+        double[] lights = s.lights;
+        shadows.clear();
+        for (int i = 0; i < n; i++) {
+            blocked[s.lightCount * i + k] = false;
+            if (!found[i]) {
+                continue;
+            }
+            int o = 6 * i;
+            sp.set(points[i]);
+            faceViewer(rays[o + 3], rays[o + 4], rays[o + 5]);
+            if (!towardLight(lo) || ndl <= 0 || atEye(lo, 0, rays[o], rays[o + 1], rays[o + 2])) {
+                continue;
+            }
+            double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
+            int q = 9 * count;
+            shadowRay[q] = px; shadowRay[q + 1] = py; shadowRay[q + 2] = pz;
+            shadowRay[q + 3] = lights[lo] - px; shadowRay[q + 4] = lights[lo + 1] - py; shadowRay[q + 5] = lights[lo + 2] - pz;
+            shadowRay[q + 6] = nx; shadowRay[q + 7] = ny; shadowRay[q + 8] = nz;
+            shadowOwner[count++] = i;
+            shadows.add(px, py, pz, shadowRay[q + 3], shadowRay[q + 4], shadowRay[q + 5]);
+        }
+        RayPacket together = count > 1 && si.gather(ctx, shadows, 0, SHADOW_T_MAX) ? shadows : null;
+        for (int j = 0; j < count; j++) {
+            int i = shadowOwner[j], q = 9 * j;
+            shadowRays++;
+            blocked[s.lightCount * i + k] = si.occludedLeaving(ctx, together, hits[i], points[i], shadowRay[q + 6],
+                    shadowRay[q + 7], shadowRay[q + 8], shadowRay[q], shadowRay[q + 1], shadowRay[q + 2],
+                    shadowRay[q + 3], shadowRay[q + 4], shadowRay[q + 5], 0, SHADOW_T_MAX);
+        }
+    }
+
+    /** Room for a packet of {@code n} rays (grown, never shrunk). */
+    private void ensurePacket(int n) {
+        if (hits.length < n) {
+            int size = Math.max(n, 2 * hits.length);
+            hits = java.util.Arrays.copyOf(hits, size);
+            points = java.util.Arrays.copyOf(points, size);
+            for (int i = 0; i < size; i++) {
+                if (hits[i] == null) {
+                    hits[i] = new Hit();
+                    points[i] = new SurfacePoint();
+                }
+            }
+            found = new boolean[size];
+            shadowOwner = new int[size];
+            shadowRay = new double[9 * size];
+        }
+        if (blocked.length < n * s.lightCount) {
+            blocked = new boolean[Math.max(n * s.lightCount, 2 * blocked.length)];
+        }
+    }
+
+    /**
+     * One traversal of the hierarchy for the camera rays added to {@code packet} (see {@link
+     * SceneIntersector#gather}); false when they must go one at a time.
+     */
+    boolean gather(RayPacket packet) {
+        return si.gather(ctx, packet, 0, Double.POSITIVE_INFINITY);
     }
 
     private int push(int top, double ox, double oy, double oz, double dx, double dy, double dz, double w, int depth) {
@@ -117,11 +250,21 @@ public final class WhittedTracer {
                       int top, double[] rgb) {
         events.ray(depth, w, ox, oy, oz, dx, dy, dz);
         if (!si.closestHit(ctx, ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY, hit)) {
-            rgb[0] += w * ShadingScene.BG_R; rgb[1] += w * ShadingScene.BG_G; rgb[2] += w * ShadingScene.BG_B;
-            events.miss(depth);
+            background(w, depth, rgb);
             return top;
         }
         si.surfacePoint(ctx, hit, sp);
+        return shadeHit(ox, oy, oz, dx, dy, dz, w, depth, top, rgb);
+    }
+
+    private void background(double w, int depth, double[] rgb) {
+        rgb[0] += w * ShadingScene.BG_R; rgb[1] += w * ShadingScene.BG_G; rgb[2] += w * ShadingScene.BG_B;
+        events.miss(depth);
+    }
+
+    /** {@link #shade} once {@link #hit} and {@link #sp} hold the ray's hit. */
+    private int shadeHit(double ox, double oy, double oz, double dx, double dy, double dz, double w, int depth,
+                         int top, double[] rgb) {
         faceViewer(dx, dy, dz);
         int m = s.materialOffset(hit.kind, hit.index);
         baseColour(m, local);
@@ -165,20 +308,16 @@ public final class WhittedTracer {
         double sumR = ka * cr, sumG = ka * cg, sumB = ka * cb;
         double[] lights = s.lights;
         for (int k = 0, lo = 0; k < s.lightCount; k++, lo += 6) {
-            double lx = lights[lo] - sp.px, ly = lights[lo + 1] - sp.py, lz = lights[lo + 2] - sp.pz;
-            double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
-            if (!(dist > 0)) {
+            if (!towardLight(lo)) {
                 continue;
             }
-            lx /= dist; ly /= dist; lz /= dist;
-            double ndl = nx * lx + ny * ly + nz * lz;
+            double lx = this.lx, ly = this.ly, lz = this.lz, ndl = this.ndl;
             if (ndl <= 0) {
                 events.lightBehind(depth, k, ndl);
                 continue;
             }
-            // A light at the origin of a camera ray sees everything that ray sees: no shadow ray needed
-            boolean atEye = depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
-            if (s.shadows && !atEye && blocked(lo, k, depth)) {
+            if (s.shadows && !atEye(lo, depth, ox, oy, oz)
+                    && (packetRay >= 0 ? blocked[s.lightCount * packetRay + k] : blocked(lo, k, depth))) {
                 continue;
             }
             // Phong specular: reflect l about n, compare with the view direction v = -u
@@ -194,13 +333,36 @@ public final class WhittedTracer {
         c[0] = sumR; c[1] = sumG; c[2] = sumB;
     }
 
+    /**
+     * The unit direction {@code l} from the hit to the light at {@code lights[lo..]} into {@link
+     * #lx}, {@link #ly}, {@link #lz}, and {@code n·l} into {@link #ndl}; false (nothing set) when
+     * the light is at the point.
+     */
+    private boolean towardLight(int lo) {
+        double[] lights = s.lights;
+        double x = lights[lo] - sp.px, y = lights[lo + 1] - sp.py, z = lights[lo + 2] - sp.pz;
+        double dist = Math.sqrt(x * x + y * y + z * z);
+        if (!(dist > 0)) {
+            return false;
+        }
+        lx = x / dist; ly = y / dist; lz = z / dist;
+        ndl = nx * lx + ny * ly + nz * lz;
+        return true;
+    }
+
+    /** A light at the origin of a camera ray sees everything that ray sees: no shadow ray needed. */
+    private boolean atEye(int lo, int depth, double ox, double oy, double oz) {
+        double[] lights = s.lights;
+        return depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
+    }
+
     /** True when the shadow ray from the hit (offset along n) to the light at {@code lights[lo..]} is blocked. */
     private boolean blocked(int lo, int k, int depth) {
         double[] lights = s.lights;
         double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
         shadowRays++;
         boolean blocked = si.occludedLeaving(ctx, hit, sp, nx, ny, nz, px, py, pz, lights[lo] - px,
-                lights[lo + 1] - py, lights[lo + 2] - pz, 0, 1 - 1e-9);
+                lights[lo + 1] - py, lights[lo + 2] - pz, 0, SHADOW_T_MAX);
         events.shadowRay(depth, k, blocked);
         return blocked;
     }

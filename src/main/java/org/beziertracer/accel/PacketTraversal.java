@@ -1,0 +1,198 @@
+package org.beziertracer.accel;
+
+import static org.beziertracer.accel.RayBox.MISS;
+import static org.beziertracer.accel.RayBox.ROBUST_EXIT;
+
+/**
+ * The two halves of a packet query on a {@link Bvh} ({@link RayPacket}): {@link #gather} traverses
+ * the tree once with the packet's interval bounds and lists the leaves it cannot rule out;
+ * {@link #closestHitIn} answers one ray of the packet from that list. Stateless.
+ */
+final class PacketTraversal {
+
+    private PacketTraversal() {}
+
+    /**
+     * Lists in {@code p} the leaves of {@code bvh} that some ray of the packet may enter at a
+     * distance of at least {@code tMin}, nearest least entry first. Returns false (and the packet
+     * is traced ray by ray) when the rays' directions are not traversable together or the list
+     * would pass {@link RayPacket#MAX_LEAVES}. {@code tMax} must be at least every ray's own.
+     */
+    static boolean gather(Bvh bvh, RayPacket p, double tMin, double tMax, int[] stack) {
+        p.gatheredBy = null;
+        p.leafCount = 0;
+        if (!p.reciprocals()) {
+            return false;
+        }
+        final float[] b = bvh.nodeBounds;
+        final int[] nd = bvh.nodes;
+        // Per axis: the near plane (as one ray picks it, by the sign of invD), and the origin bound
+        // that gives the least entry (resp. the greatest exit): fl(P - o) · invD falls as o grows
+        // when invD > 0, rises when invD < 0.
+        final boolean px = p.invLo[0] > 0, py = p.invLo[1] > 0, pz = p.invLo[2] > 0;
+        final int sx = px ? 0 : 3, sy = py ? 0 : 3, sz = pz ? 0 : 3;
+        final double nox = px ? p.oHi[0] : p.oLo[0], noy = py ? p.oHi[1] : p.oLo[1], noz = pz ? p.oHi[2] : p.oLo[2];
+        final double fox = px ? p.oLo[0] : p.oHi[0], foy = py ? p.oLo[1] : p.oHi[1], foz = pz ? p.oLo[2] : p.oHi[2];
+        final double lx = p.invLo[0], ly = p.invLo[1], lz = p.invLo[2];
+        final double hx = p.invHi[0], hy = p.invHi[1], hz = p.invHi[2];
+        if (bvh.primIndices.length == 0) {
+            p.gatheredBy = bvh;
+            return true;
+        }
+        int node = 0, sp = 0;
+        double entry = enter(b, 0, sx, sy, sz, nox, noy, noz, fox, foy, foz, lx, ly, lz, hx, hy, hz, tMin, tMax);
+        if (entry == MISS) {
+            node = -1;
+        }
+        for (;;) {
+            if (node >= 0) {
+                int n = nd[2 * node + 1];
+                if (n > 0) {
+                    if (!insert(p, node, entry)) {
+                        return false;
+                    }
+                    node = -1;
+                } else {
+                    int near = nd[2 * node], far = near + 1;
+                    double tNear = enter(b, 6 * near, sx, sy, sz, nox, noy, noz, fox, foy, foz,
+                            lx, ly, lz, hx, hy, hz, tMin, tMax);
+                    double tFar = enter(b, 6 * far, sx, sy, sz, nox, noy, noz, fox, foy, foz,
+                            lx, ly, lz, hx, hy, hz, tMin, tMax);
+                    if (tFar < tNear) {
+                        double t = tNear;
+                        tNear = tFar;
+                        tFar = t;
+                        int c = near;
+                        near = far;
+                        far = c;
+                    }
+                    if (tNear == MISS) {
+                        node = -1;
+                    } else {
+                        node = near;
+                        entry = tNear;
+                        if (tFar != MISS) {
+                            stack[sp] = far;
+                            stack[sp + 1] = Float.floatToRawIntBits(RayBox.down(tFar));
+                            sp += 2;
+                        }
+                    }
+                }
+            }
+            if (node < 0) {
+                if (sp == 0) {
+                    p.gatheredBy = bvh;
+                    return true;
+                }
+                sp -= 2;
+                node = stack[sp];
+                entry = Float.intBitsToFloat(stack[sp + 1]);
+            }
+        }
+    }
+
+    /**
+     * The least entry distance (from {@code tMin} to {@code tMax}) of any ray of the packet into the box at
+     * {@code o}, or {@link RayBox#MISS} when the bounds show that no ray meets it: per axis the
+     * least near-plane distance and the greatest (robust) far-plane distance over the corners of
+     * the origin and reciprocal-direction bounds.
+     */
+    private static double enter(float[] b, int o, int sx, int sy, int sz,
+            double nox, double noy, double noz, double fox, double foy, double foz,
+            double lx, double ly, double lz, double hx, double hy, double hz, double tMin, double tMax) {
+        double near = tMin, far = tMax;
+        double a = b[o + sx] - nox;
+        double lo = a * (a >= 0 ? lx : hx);
+        double c = b[o + 3 - sx] - fox;
+        double hi = c * (c >= 0 ? hx : lx) * ROBUST_EXIT;
+        if (lo > near) near = lo;
+        if (hi < far) far = hi;
+        a = b[o + 1 + sy] - noy;
+        lo = a * (a >= 0 ? ly : hy);
+        c = b[o + 4 - sy] - foy;
+        hi = c * (c >= 0 ? hy : ly) * ROBUST_EXIT;
+        if (lo > near) near = lo;
+        if (hi < far) far = hi;
+        a = b[o + 2 + sz] - noz;
+        lo = a * (a >= 0 ? lz : hz);
+        c = b[o + 5 - sz] - foz;
+        hi = c * (c >= 0 ? hz : lz) * ROBUST_EXIT;
+        if (lo > near) near = lo;
+        if (hi < far) far = hi;
+        return near <= far && near < MISS ? near : MISS;
+    }
+
+    /** Inserts leaf {@code node} in entry order (the entry rounded down to a float); false when full. */
+    private static boolean insert(RayPacket p, int node, double entry) {
+        int n = p.leafCount;
+        if (n == RayPacket.MAX_LEAVES) {
+            return false;
+        }
+        float e = RayBox.down(entry);
+        int i = n;
+        while (i > 0 && p.leafEntry[i - 1] > e) {
+            p.leafEntry[i] = p.leafEntry[i - 1];
+            p.leafNodes[i] = p.leafNodes[i - 1];
+            i--;
+        }
+        p.leafEntry[i] = e;
+        p.leafNodes[i] = node;
+        p.leafCount = n + 1;
+        return true;
+    }
+
+    /**
+     * {@link Bvh#closestHit} for one ray of a gathered packet: the ray's own slab test on each
+     * listed leaf whose least entry is not beyond {@code tMax}, in list order, and the leaf's
+     * primitives where it passes.
+     */
+    static <Q> double closestHitIn(Bvh bvh, RayPacket p, double ox, double oy, double oz, double invDx,
+            double invDy, double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query) {
+        final float[] b = bvh.nodeBounds;
+        final int[] nd = bvh.nodes;
+        final int[] prims = bvh.primIndices;
+        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
+                sz = RayBox.nearOffset(invDz);
+        for (int k = 0, count = p.leafCount; k < count; k++) {
+            if (p.leafEntry[k] > tMax) {
+                break;
+            }
+            int node = p.leafNodes[k];
+            if (RayBox.slab(b, 6 * node, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz, tMin, tMax) == MISS) {
+                continue;
+            }
+            for (int i = nd[2 * node], end = i + nd[2 * node + 1]; i < end; i++) {
+                tMax = leaf.intersect(query, prims[i], tMax);
+            }
+        }
+        return tMax;
+    }
+
+    /**
+     * {@link Bvh#occluded} for one ray of a gathered packet: the ray's own slab test on each listed
+     * leaf, and the leaf's primitives where it passes, until one occludes.
+     */
+    static <Q> boolean occludedIn(Bvh bvh, RayPacket p, double ox, double oy, double oz, double invDx,
+            double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {
+        final float[] b = bvh.nodeBounds;
+        final int[] nd = bvh.nodes;
+        final int[] prims = bvh.primIndices;
+        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
+                sz = RayBox.nearOffset(invDz);
+        for (int k = 0, count = p.leafCount; k < count; k++) {
+            if (p.leafEntry[k] > tMax) {
+                return false;
+            }
+            int node = p.leafNodes[k];
+            if (RayBox.slab(b, 6 * node, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz, tMin, tMax) == MISS) {
+                continue;
+            }
+            for (int i = nd[2 * node], end = i + nd[2 * node + 1]; i < end; i++) {
+                if (leaf.occludes(query, prims[i], tMax)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+}

@@ -1,0 +1,193 @@
+package org.beziertracer.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * Packets of rays traversed together ({@link RayPacket}, {@link PacketTraversal}) against the
+ * same rays one at a time, on seeded random boxes: every leaf a ray's own slab test accepts is in
+ * the packet's list, and the answers are the same to the bit.
+ */
+class PacketTraversalTest {
+
+    /** A packet of {@code n} rays about a random direction: one origin, or origins spread over a small box. */
+    private static double[] randomPacket(Random rnd, int n) {
+        double[] o = {-15 + 30 * rnd.nextDouble(), -15 + 30 * rnd.nextDouble(), -15 + 30 * rnd.nextDouble()};
+        // Aim at the middle of the boxes, so most packets meet some
+        double[] d = {rnd.nextGaussian() - o[0] / 15, rnd.nextGaussian() - o[1] / 15, rnd.nextGaussian() - o[2] / 15};
+        double spread = Math.pow(10, -6 + 6 * rnd.nextDouble());
+        double originSpread = rnd.nextBoolean() ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
+        double[] rays = new double[6 * n];
+        for (int i = 0; i < n; i++) {
+            for (int a = 0; a < 3; a++) {
+                rays[6 * i + a] = o[a] + originSpread * (2 * rnd.nextDouble() - 1);
+                rays[6 * i + 3 + a] = d[a] + spread * (2 * rnd.nextDouble() - 1);
+            }
+        }
+        return rays;
+    }
+
+    private static boolean oneSignPerAxis(double[] rays, int n) {
+        for (int a = 0; a < 3; a++) {
+            boolean pos = false, neg = false;
+            for (int i = 0; i < n; i++) {
+                double d = rays[6 * i + 3 + a];
+                pos |= d > 0;
+                neg |= !(d > 0);
+            }
+            if (pos && neg || neg && anyZero(rays, n, a)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean anyZero(double[] rays, int n, int a) {
+        for (int i = 0; i < n; i++) {
+            if (rays[6 * i + 3 + a] == 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Test
+    void everyLeafARayEntersIsListedAndTheAnswersAreTheSame() {
+        int packets = 0, gathered = 0, hits = 0, checkedLeaves = 0;
+        for (long seed = 1; seed <= 40; seed++) {
+            Random rnd = new Random(seed);
+            int count = 50 + rnd.nextInt(400);
+            BoxScene scene = new BoxScene(BoxScene.randomBoxes(rnd, count), count);
+            Bvh bvh = Bvh.build(scene.bounds, count);
+            int[] stack = bvh.newStack();
+            RayPacket packet = new RayPacket();
+            for (int k = 0; k < 60; k++) {
+                int n = 1 + rnd.nextInt(16);
+                double[] rays = randomPacket(rnd, n);
+                double tMin = rnd.nextInt(4) == 0 ? 1.0 : 0.0;
+                double tMax = rnd.nextInt(3) == 0 ? 5 + 20 * rnd.nextDouble() : Double.POSITIVE_INFINITY;
+                packets++;
+                boolean ok = bvh.gather(packet.of(rays, n), tMin, tMax, stack);
+                String where = "seed " + seed + " packet " + k;
+                if (!oneSignPerAxis(rays, n)) {
+                    assertFalse(ok, where + ": a packet whose directions change sign is not gathered");
+                    continue;
+                }
+                if (!ok) {
+                    assertEquals(RayPacket.MAX_LEAVES, packet.leafCount(), where + ": only a full list may fail");
+                    continue;
+                }
+                gathered++;
+                assertTrue(packet.gatheredBy(bvh));
+                for (int j = 1; j < packet.leafCount; j++) {
+                    assertTrue(packet.leafEntry[j - 1] <= packet.leafEntry[j], where + ": entries ascend");
+                }
+                for (int i = 0; i < n; i++) {
+                    int o = 6 * i;
+                    scene.setRay(rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5], tMin);
+                    // Every leaf the ray's own test accepts is listed, no later than the ray enters it
+                    for (int node = 0; node < bvh.nodeCount(); node++) {
+                        if (bvh.leafPrimCount(node) == 0) {
+                            continue;
+                        }
+                        double entry = RayBox.entry(bvh.nodeBounds, 6 * node, scene.ox, scene.oy, scene.oz,
+                                scene.invDx, scene.invDy, scene.invDz, tMin, tMax);
+                        if (entry != RayBox.MISS) {
+                            checkedLeaves++;
+                            int at = indexOf(packet, node);
+                            assertTrue(at >= 0, where + " ray " + i + ": leaf " + node + " entered at " + entry
+                                    + " is not listed; " + scene.ray());
+                            assertTrue(packet.leafEntry[at] <= entry, where + ": listed entry beyond the ray's");
+                        }
+                    }
+                    double alone = bvh.closestHit(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
+                            scene.invDz, tMin, tMax, scene, scene, stack);
+                    scene.resetCalls();
+                    double together = bvh.closestHitIn(packet, scene.ox, scene.oy, scene.oz, scene.invDx,
+                            scene.invDy, scene.invDz, tMin, tMax, scene, scene);
+                    assertEquals(-1, scene.calledTwice, where + ": a primitive called twice");
+                    assertEquals(alone, together, 0, where + " ray " + i + ": closest hit; " + scene.ray());
+                    assertEquals(scene.bruteForce(tMax), together, 0, where + ": brute force");
+                    hits += together < tMax ? 1 : 0;
+                    double shorter = together < tMax ? together * (0.5 + rnd.nextDouble()) : tMax;
+                    assertEquals(bvh.occluded(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
+                                    tMin, shorter, scene, scene, stack),
+                            bvh.occludedIn(packet, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
+                                    scene.invDz, tMin, shorter, scene, scene), where + ": occluded");
+                }
+            }
+        }
+        // The property was exercised, not skipped
+        assertTrue(gathered > packets / 2, gathered + " of " + packets + " packets gathered");
+        assertTrue(hits > 1000, hits + " hits");
+        assertTrue(checkedLeaves > 5000, checkedLeaves + " leaves entered");
+    }
+
+    private static int indexOf(RayPacket p, int node) {
+        for (int j = 0; j < p.leafCount; j++) {
+            if (p.leafNodes[j] == node) {
+                return j;
+            }
+        }
+        return -1;
+    }
+
+    @Test
+    void zeroDirectionsSignChangesAndNaNAreNotGathered() {
+        Random rnd = new Random(7);
+        BoxScene scene = new BoxScene(BoxScene.randomBoxes(rnd, 100), 100);
+        Bvh bvh = Bvh.build(scene.bounds, 100);
+        int[] stack = bvh.newStack();
+        RayPacket p = new RayPacket();
+        double[][] bad = {
+            {0, 0, -20, 0.1, 0.2, 1, 0, 0, -20, 0.0, 0.2, 1},      // a zero component
+            {0, 0, -20, 0.1, 0.2, 1, 0, 0, -20, -0.1, 0.2, 1},     // a sign change
+            {0, 0, -20, 0.1, 0.2, 1, Double.NaN, 0, -20, 0.1, 0.2, 1},
+            {0, 0, -20, 0.1, 0.2, 1, 0, 0, -20, 0.1, Double.NaN, 1},
+            {0, 0, -20, 0.1, 0.2, 1, Double.POSITIVE_INFINITY, 0, -20, 0.1, 0.2, 1},
+        };
+        for (double[] rays : bad) {
+            assertFalse(bvh.gather(p.of(rays, 2), 0, Double.POSITIVE_INFINITY, stack));
+            assertFalse(p.gatheredBy(bvh));
+            assertThrows(IllegalStateException.class, () -> bvh.closestHitIn(p, 0, 0, -20, 10, 5, 1, 0,
+                    Double.POSITIVE_INFINITY, scene, scene));
+        }
+        // A good packet is gathered, and adding a ray afterwards makes it stale
+        double[] good = {0, 0, -20, 0.1, 0.2, 1, 0, 0, -20, 0.11, 0.2, 1};
+        assertTrue(bvh.gather(p.of(good, 2), 0, Double.POSITIVE_INFINITY, stack));
+        assertTrue(p.gatheredBy(bvh));
+        p.add(0, 0, -20, 0.1, 0.21, 1);
+        assertFalse(p.gatheredBy(bvh));
+        // A packet of one hierarchy is refused by another, and by the flat list
+        assertTrue(bvh.gather(p.of(good, 2), 0, Double.POSITIVE_INFINITY, stack));
+        Bvh other = Bvh.build(scene.bounds, 100);
+        assertThrows(IllegalStateException.class, () -> other.occludedIn(p, 0, 0, -20, 10, 5, 1, 0, 1, scene, scene));
+        assertFalse(FlatList.build(scene.bounds, 100).gather(p, 0, Double.POSITIVE_INFINITY, null));
+    }
+
+    @Test
+    void aPacketOverMoreLeavesThanTheListHoldsIsNotGathered() {
+        // A row of tiny boxes along x, and a packet that sweeps the whole row
+        int n = 4 * RayPacket.MAX_LEAVES;
+        double[] b = new double[6 * n];
+        for (int i = 0; i < n; i++) {
+            double x = -10 + 20.0 * i / n;
+            double[] box = {x, -0.01, -0.01, x + 0.001, 0.01, 0.01};
+            System.arraycopy(box, 0, b, 6 * i, 6);
+        }
+        Bvh bvh = Bvh.build(b, n, BvhOptions.defaults());
+        RayPacket p = new RayPacket();
+        double[] wide = {0, -0.001, -5, -0.9, 0.0001, 0.5, 0, -0.001, -5, 0.9, 0.0001, 0.5};
+        double[] wideSameSign = {-11, -0.001, -5, 0.01, 0.0001, 0.5, -11, -0.001, -5, 4, 0.0001, 0.5};
+        assertFalse(bvh.gather(p.of(wide, 2), 0, Double.POSITIVE_INFINITY, bvh.newStack()), "sign change");
+        assertFalse(bvh.gather(p.of(wideSameSign, 2), 0, Double.POSITIVE_INFINITY, bvh.newStack()));
+        assertEquals(RayPacket.MAX_LEAVES, p.leafCount());
+        assertFalse(p.gatheredBy(bvh));
+    }
+}
