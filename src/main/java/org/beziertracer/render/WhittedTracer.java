@@ -179,7 +179,6 @@ public final class WhittedTracer {
         double[] lights = s.lights;
         shadows.clear();
         for (int i = 0; i < n; i++) {
-            blocked[s.lightCount * i + k] = false;
             if (!found[i]) {
                 continue;
             }

@@ -63,7 +63,8 @@ class PacketTraversalTest {
         for (long seed = 1; seed <= 40; seed++) {
             Random rnd = new Random(seed);
             int count = 50 + rnd.nextInt(400);
-            BoxScene scene = new BoxScene(BoxScene.randomBoxes(rnd, count), count);
+            double[] boxes = seed % 2 == 0 ? BoxScene.randomBoxes(rnd, count) : tiles(rnd, count);
+            BoxScene scene = new BoxScene(boxes, count);
             Bvh bvh = Bvh.build(scene.bounds, count);
             int[] stack = bvh.newStack();
             RayPacket packet = new RayPacket();
@@ -127,6 +128,145 @@ class PacketTraversalTest {
         assertTrue(gathered > packets / 2, gathered + " of " + packets + " packets gathered");
         assertTrue(hits > 1000, hits + " hits");
         assertTrue(checkedLeaves > 5000, checkedLeaves + " leaves entered");
+    }
+
+    /**
+     * Boxes that tile a block of space as sub-patch boxes do: cells of a grid sharing their faces,
+     * each face moved by up to 10⁻³ (or not at all), so that rays enter neighbouring boxes at
+     * equal or nearly equal distances.
+     */
+    private static double[] tiles(Random rnd, int n) {
+        double[] b = new double[6 * n];
+        int side = (int) Math.ceil(Math.cbrt(n));
+        double cell = 20.0 / side;
+        for (int p = 0; p < n; p++) {
+            if (p > 0 && rnd.nextInt(3) == 0) {
+                // a near twin of the last box: entries a hair apart
+                for (int a = 0; a < 6; a++) {
+                    b[6 * p + a] = b[6 * p - 6 + a] + (a < 3 ? -1 : 1) * 1e-4 * rnd.nextDouble();
+                }
+                continue;
+            }
+            int[] ijk = {p % side, p / side % side, p / (side * side)};
+            for (int a = 0; a < 3; a++) {
+                double jitter = rnd.nextBoolean() ? 0 : 1e-3 * rnd.nextDouble();
+                b[6 * p + a] = -10 + ijk[a] * cell + jitter;
+                b[6 * p + 3 + a] = -10 + (ijk[a] + 1) * cell - (rnd.nextBoolean() ? 0 : jitter);
+            }
+        }
+        return b;
+    }
+
+    @Test
+    void anySortedListOfLowerBoundsGivesTheClosestHit() {
+        // closestHitIn's contract, apart from gather: a list of every leaf, each with any lower
+        // bound of the ray's entry, ascending, gives the brute-force answer
+        Random rnd = new Random(5);
+        int checked = 0;
+        for (int round = 0; round < 30; round++) {
+            int count = 100 + rnd.nextInt(300);
+            BoxScene scene = new BoxScene(tiles(rnd, count), count);
+            Bvh bvh = Bvh.build(scene.bounds, count);
+            RayPacket p = new RayPacket();
+            for (int r = 0; r < 200; r++) {
+                scene.randomRay(rnd);
+                double tMax = Double.POSITIVE_INFINITY;
+                p.leafCount = 0;
+                for (int node = 0; node < bvh.nodeCount() && p.leafCount < RayPacket.MAX_LEAVES; node++) {
+                    if (bvh.leafPrimCount(node) == 0) {
+                        continue;
+                    }
+                    double e = RayBox.entry(bvh.nodeBounds, 6 * node, scene.ox, scene.oy, scene.oz, scene.invDx,
+                            scene.invDy, scene.invDz, scene.tMin, tMax);
+                    double slack = rnd.nextInt(4) == 0 ? 0 : 2e-4 * rnd.nextDouble();
+                    double bound = e == RayBox.MISS ? scene.tMin + 40 * rnd.nextDouble() : Math.max(scene.tMin, e - slack);
+                    p.leafNodes[p.leafCount] = node;
+                    p.leafEntry[p.leafCount++] = RayBox.down(bound);
+                }
+                if (p.leafCount == RayPacket.MAX_LEAVES) {
+                    continue;
+                }
+                sortByEntry(p);
+                p.gatheredBy = bvh;
+                double together = bvh.closestHitIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
+                        scene.invDz, scene.tMin, tMax, scene, scene);
+                assertEquals(scene.bruteForce(tMax), together, 0, "round " + round + ": " + scene.ray());
+                if (together < tMax) {
+                    checked++;
+                    // A shadow ray that ends just past the nearest box is blocked by it, one that ends at it is not
+                    assertTrue(bvh.occludedIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
+                            scene.tMin, Math.nextUp(together), scene, scene), "round " + round + ": " + scene.ray());
+                    assertFalse(bvh.occludedIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
+                            scene.tMin, together, scene, scene), "round " + round + ": " + scene.ray());
+                }
+            }
+        }
+        assertTrue(checked > 500, checked + " hits");
+    }
+
+    private static void sortByEntry(RayPacket p) {
+        for (int i = 1; i < p.leafCount; i++) {
+            for (int j = i; j > 0 && p.leafEntry[j - 1] > p.leafEntry[j]; j--) {
+                float e = p.leafEntry[j];
+                p.leafEntry[j] = p.leafEntry[j - 1];
+                p.leafEntry[j - 1] = e;
+                int n = p.leafNodes[j];
+                p.leafNodes[j] = p.leafNodes[j - 1];
+                p.leafNodes[j - 1] = n;
+            }
+        }
+    }
+
+    @Test
+    void raysThroughABoxEdgeThatOnlyTheRoundingAllowanceAcceptsAreListed() {
+        // Rays aimed exactly at a point of an edge of the unit box: entry on one axis and exit on
+        // another are the same distance, rounded two ways. Keep those whose own test passes only
+        // because exits are scaled by 1 + 2γ₃, and check that a packet of them lists the box.
+        double[] box = {0, 0, 0, 1, 1, 1};
+        Bvh bvh = Bvh.build(box, 1);
+        RayPacket p = new RayPacket();
+        Random rnd = new Random(11);
+        int found = 0;
+        for (int k = 0; k < 400_000 && found < 60; k++) {
+            // Enter across the plane x_a = 0, leave across x_b = 1 at the same point (then mirror
+            // each axis at random: x -> 1 - x maps the box onto itself)
+            int a = rnd.nextInt(3), b = (a + 1 + rnd.nextInt(2)) % 3, c = 3 - a - b;
+            double[] o = new double[3], at = new double[3];
+            o[a] = -1 - 3 * rnd.nextDouble();
+            o[b] = 1 - 3 * rnd.nextDouble();
+            o[c] = rnd.nextDouble();
+            at[a] = 0;
+            at[b] = 1;
+            at[c] = rnd.nextDouble();
+            for (int m = 0; m < 3; m++) {
+                if (rnd.nextBoolean()) {
+                    o[m] = 1 - o[m];
+                    at[m] = 1 - at[m];
+                }
+            }
+            double[] d = {at[0] - o[0], at[1] - o[1], at[2] - o[2]};
+            if (d[0] == 0 || d[1] == 0 || d[2] == 0) {
+                continue;
+            }
+            double[] inv = {1 / d[0], 1 / d[1], 1 / d[2]};
+            // The slab interval without the allowance
+            double near = 0, far = Double.POSITIVE_INFINITY;
+            for (int m = 0; m < 3; m++) {
+                double lo = ((inv[m] > 0 ? 0 : 1) - o[m]) * inv[m], hi = ((inv[m] > 0 ? 1 : 0) - o[m]) * inv[m];
+                near = Math.max(near, lo);
+                far = Math.min(far, hi);
+            }
+            if (!(near > far)) {
+                continue;   // this one meets the edge even without the allowance
+            }
+            found++;
+            double[] rays = {o[0], o[1], o[2], d[0], d[1], d[2]};
+            assertTrue(RayBox.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], 0, Double.POSITIVE_INFINITY)
+                    != RayBox.MISS, "the ray's own test accepts the box");
+            assertTrue(bvh.gather(p.of(rays, 1), 0, Double.POSITIVE_INFINITY, bvh.newStack()));
+            assertEquals(1, p.leafCount(), "the packet lists the box its ray enters at the edge");
+        }
+        assertTrue(found >= 60, "only " + found + " rays that need the allowance");
     }
 
     private static int indexOf(RayPacket p, int node) {

@@ -7,6 +7,8 @@ import java.util.List;
 
 import org.beziertracer.accel.RayPacket;
 import org.beziertracer.math.Vec3;
+import org.beziertracer.model.Material;
+import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
@@ -81,6 +83,19 @@ class PacketTracingTest {
         RenderJob tessellated = RenderJob.prepare(teapot, settings(),
                 RenderOptions.defaults().withThreads(1).withProgressive(false).withTessellate(8));
         samePictureEitherWay("teapot, tessellated", tessellated.withLights(two));
+    }
+
+    @Test
+    void aShadowCastNearTheLight() {
+        // The bump hangs just below the light: the ground's shadow rays meet it past half-way
+        Scene near = Scene.builder()
+                .addMaterial(Material.DEFAULT)
+                .addMaterial(Material.diffuse(0.7, 0.7, 0.7))
+                .addPatches(List.of(TestScenes.bump(3)), 0)
+                .addPlane(new Plane(new Vec3(0, 0, 0), Vec3.Z, 1, 1))
+                .addLight(new PointLight(new Vec3(0.2, -0.3, 5.6)))
+                .build();
+        samePictureEitherWay("a shadow cast near the light", TestScenes.job(near, settings()));
     }
 
     @Test
