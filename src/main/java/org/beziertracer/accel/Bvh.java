@@ -236,19 +236,21 @@ public final class Bvh implements Accelerator {
     @Override
     public <Q> double closestHitIn(RayPacket packet, double ox, double oy, double oz, double invDx,
             double invDy, double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query) {
-        if (!packet.gatheredBy(this)) {
-            throw new IllegalStateException("the packet was not gathered by this hierarchy");
-        }
+        requireGathered(packet);
         return PacketTraversal.closestHitIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
     }
 
     @Override
     public <Q> boolean occludedIn(RayPacket packet, double ox, double oy, double oz, double invDx,
             double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {
+        requireGathered(packet);
+        return PacketTraversal.occludedIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
+    }
+
+    private void requireGathered(RayPacket packet) {
         if (!packet.gatheredBy(this)) {
             throw new IllegalStateException("the packet was not gathered by this hierarchy");
         }
-        return PacketTraversal.occludedIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
     }
 
     /** {@code 2 * depth()}: at most one pushed (node, entry) pair per level below the root. */
