@@ -315,8 +315,7 @@ public final class WhittedTracer {
                 events.lightBehind(depth, k, ndl);
                 continue;
             }
-            if (s.shadows && !atEye(lo, depth, ox, oy, oz)
-                    && (packetRay >= 0 ? blocked[s.lightCount * packetRay + k] : blocked(lo, k, depth))) {
+            if (s.shadows && !atEye(lo, depth, ox, oy, oz) && shadowed(lo, k, depth)) {
                 continue;
             }
             // Phong specular: reflect l about n, compare with the view direction v = -u
@@ -353,6 +352,19 @@ public final class WhittedTracer {
     private boolean atEye(int lo, int depth, double ox, double oy, double oz) {
         double[] lights = s.lights;
         return depth == 0 && lights[lo] == ox && lights[lo + 1] == oy && lights[lo + 2] == oz;
+    }
+
+    /**
+     * True when the hit's shadow ray toward light {@code k} is blocked: the packet's answer for a
+     * packet's camera ray ({@link #shadowPacket}), else {@link #blocked}.
+     */
+    private boolean shadowed(int lo, int k, int depth) {
+        if (packetRay < 0) {
+            return blocked(lo, k, depth);
+        }
+        boolean answer = blocked[s.lightCount * packetRay + k];
+        events.shadowRay(depth, k, answer);
+        return answer;
     }
 
     /** True when the shadow ray from the hit (offset along n) to the light at {@code lights[lo..]} is blocked. */
