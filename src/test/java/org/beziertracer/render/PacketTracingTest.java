@@ -86,6 +86,29 @@ class PacketTracingTest {
     }
 
     @Test
+    void aLoggedPacketTellsEachRaysStoryAsAlone() {
+        // The shading events (the --pixel trace) come per ray, in the same order and with the
+        // same shadow answers, whether the rays go as a packet or one by one
+        RenderJob job = TestScenes.job(TestScenes.shadows(), settings());
+        List<String> alone = new java.util.ArrayList<>(), together = new java.util.ArrayList<>();
+        WhittedTracer one = WhittedTracer.forJob(job), packed = WhittedTracer.forJob(job);
+        one.setLog(alone::add);
+        packed.setLog(together::add);
+        int n = RenderWorker.PACKET * RenderWorker.PACKET;
+        double[] rays = new double[6 * n], rgb = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            job.camera().generateRay(40 + i % 4 * 0.5, 50 + i / 4 * 0.5, W, H, rays, 6 * i);
+            one.trace(rays[6 * i], rays[6 * i + 1], rays[6 * i + 2], rays[6 * i + 3], rays[6 * i + 4], rays[6 * i + 5],
+                    new double[3]);
+        }
+        RayPacket packet = new RayPacket();
+        assertTrue(packed.gather(packet.of(rays, n)));
+        packed.tracePacket(packet, rays, n, rgb);
+        assertTrue(alone.stream().anyMatch(line -> line.contains("shadow")), "the rays cast shadow rays: " + alone);
+        assertEquals(alone, together);
+    }
+
+    @Test
     void aShadowCastNearTheLight() {
         // The bump hangs just below the light: the ground's shadow rays meet it past half-way
         Scene near = Scene.builder()
