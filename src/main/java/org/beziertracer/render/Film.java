@@ -97,15 +97,21 @@ public final class Film {
     void writeArgb(int x0, int y0, int w, int h, int block, int[] argb, int stride) {
         for (int j = 0; j < h; j++) {
             int y = y0 + j;
+            int last = -1, lastArgb = 0;
             for (int i = 0; i < w; i++) {
                 int x = x0 + i;
                 int p = y * width + x;
                 if (count[p] == 0) {
                     p = (y - y % block) * width + (x - x % block);
                 }
-                int o = 3 * p;
-                float inv = count[p] > 0 ? 1f / count[p] : 0;
-                argb[j * stride + i] = Srgb.argb(sum[o] * inv, sum[o + 1] * inv, sum[o + 2] * inv);
+                if (p != last) {
+                    // A coarse pass's pixels share their anchor's colour: encode it once per run
+                    int o = 3 * p;
+                    float inv = count[p] > 0 ? 1f / count[p] : 0;
+                    lastArgb = Srgb.argb(sum[o] * inv, sum[o + 1] * inv, sum[o + 2] * inv);
+                    last = p;
+                }
+                argb[j * stride + i] = lastArgb;
             }
         }
     }
