@@ -88,6 +88,40 @@ class FilmTest {
     }
 
     @Test
+    void everyPixelOfARandomRectangleShowsItsOwnMeanOrItsAnchors() {
+        java.util.Random rnd = new java.util.Random(3);
+        for (int round = 0; round < 200; round++) {
+            int width = 1 + rnd.nextInt(40), height = 1 + rnd.nextInt(30);
+            Film film = new Film(width, height);
+            for (int k = rnd.nextInt(width * height + 1); k > 0; k--) {
+                film.addSample(rnd.nextInt(width), rnd.nextInt(height), rnd.nextDouble(), rnd.nextDouble(),
+                        rnd.nextDouble() * 1.2);
+            }
+            int block = 1 << rnd.nextInt(4);
+            int x0 = rnd.nextInt(width), y0 = rnd.nextInt(height);
+            int w = 1 + rnd.nextInt(width - x0), h = 1 + rnd.nextInt(height - y0);
+            int[] argb = new int[w * h];
+            film.writeArgb(x0, y0, w, h, block, argb, w);
+            float[] linear = film.linearRgb();
+            int[] whole = film.toArgb();
+            for (int j = 0; j < h; j++) {
+                for (int i = 0; i < w; i++) {
+                    int x = x0 + i, y = y0 + j, p = y * width + x;
+                    if (film.count[p] == 0) {
+                        p = (y - y % block) * width + (x - x % block);
+                    }
+                    int expected = film.count[p] == 0 ? 0xFF000000
+                            : Srgb.argb(linear[3 * p], linear[3 * p + 1], linear[3 * p + 2]);
+                    assertEquals(expected, argb[j * w + i], "round " + round + ", pixel " + x + "," + y);
+                    if (block == 1) {
+                        assertEquals(whole[y * width + x], argb[j * w + i]);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     void writeArgbFillsOnlyItsRectangleWithTheGivenStride() {
         Film film = new Film(4, 4);
         for (int y = 0; y < 4; y++) {
