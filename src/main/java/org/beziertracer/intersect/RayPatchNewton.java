@@ -42,7 +42,9 @@ final class RayPatchNewton {
         double curvature = table.patchCurvature[k];
         ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
         for (int step = 0; step <= maxSteps; step++) {
-            evaluate(ctx, net, off, n, m, dim, u, v);
+            if (step > 0 || !fromOrigin(ctx, table, k, u, v)) {
+                evaluate(ctx, net, off, n, m, dim, u, v);
+            }
             double f1 = ctx.residual1, f2 = ctx.residual2;
             if (Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance && step > 0) {
                 return CONVERGED;
@@ -85,6 +87,27 @@ final class RayPatchNewton {
             }
         }
         return DIVERGED;
+    }
+
+    /**
+     * When {@code (u, v)} of patch {@code k} is the point a shadow ray leaves (its own leaf's start,
+     * {@link OriginLeaf#startAtOrigin}) and the patch's domain is the unit square, that point's
+     * evaluation, made when its hit was shaded, is taken as the first iterate's instead of evaluating
+     * again (the same point and derivatives, or the solver's own extrapolation of them: within the
+     * tolerance's thousandth, {@link #extrapolate}); true when it was.
+     */
+    private static boolean fromOrigin(TraceContext ctx, SubPatchTable table, int k, double u, double v) {
+        int s = ctx.originLeaf;
+        if (s < 0 || !ctx.originDerivatives || u != ctx.originU || v != ctx.originV || table.parent[s] != k
+                || !SurfaceParameters.unit(table.patchDomain, k)) {
+            return false;
+        }
+        double[] e = ctx.eval;
+        e[0] = ctx.originPx; e[1] = ctx.originPy; e[2] = ctx.originPz;
+        e[3] = ctx.originSux; e[4] = ctx.originSuy; e[5] = ctx.originSuz;
+        e[6] = ctx.originSvx; e[7] = ctx.originSvy; e[8] = ctx.originSvz;
+        takeIterate(ctx, u, v);
+        return true;
     }
 
     /**

@@ -275,7 +275,7 @@ public final class SceneIntersector {
                                    double nx, double ny, double nz, double ox, double oy, double oz,
                                    double dx, double dy, double dz, double tMin, double tMax) {
         if (from.kind == Hit.PATCH) {
-            ctx.leaving(from.subPatch, from.u, from.v, at.px, at.py, at.pz, nx, ny, nz);
+            ctx.leaving(from.subPatch, from.u, from.v, at, nx, ny, nz);
         }
         try {
             return occluded(ctx, packet, ox, oy, oz, dx, dy, dz, tMin, tMax);

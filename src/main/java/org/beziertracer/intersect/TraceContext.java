@@ -112,6 +112,14 @@ public final class TraceContext {
      */
     int originLeaf = -1;
     double originU, originV, originPx, originPy, originPz, originNx, originNy, originNz;
+    /**
+     * The surface's derivatives at the origin's point (as {@link SurfacePoint} has them: with
+     * respect to the surface's parameters), which with the point are the patch's own evaluation
+     * there when the patch's domain is the unit square ({@link RayPatchNewton} starts from it).
+     */
+    double originSux, originSuy, originSuz, originSvx, originSvy, originSvz;
+    /** True when the origin* derivatives belong to the current origin. */
+    boolean originDerivatives;
     final double[] originScratch = new double[OriginLeaf.SCRATCH];
     /** Per slot {@code s & (MEMORY-1)}: {@code s + 1} when leaf s's last {@link OriginLeaf} test failed, and rays since. */
     final int[] originFailed = new int[OriginLeaf.MEMORY], originSkipped = new int[OriginLeaf.MEMORY];
@@ -188,12 +196,25 @@ public final class TraceContext {
     }
 
     /**
+     * The next any-hit query leaves the surface point {@code at} found in leaf {@code leaf} at the
+     * surface's {@code (u, v)}, on the side of the unit normal {@code n}: as the other {@code
+     * leaving}, and the point's derivatives are kept too.
+     */
+    void leaving(int leaf, double u, double v, SurfacePoint at, double nx, double ny, double nz) {
+        leaving(leaf, u, v, at.px, at.py, at.pz, nx, ny, nz);
+        originSux = at.dpdux; originSuy = at.dpduy; originSuz = at.dpduz;
+        originSvx = at.dpdvx; originSvy = at.dpdvy; originSvz = at.dpdvz;
+        originDerivatives = true;
+    }
+
+    /**
      * The next any-hit query leaves the surface point {@code (px, py, pz)} found in leaf
      * {@code leaf} at the surface's {@code (u, v)}, on the side of the unit normal {@code n}
      * ({@link OriginLeaf}); {@code leaf = -1}: it leaves none.
      */
     void leaving(int leaf, double u, double v, double px, double py, double pz, double nx, double ny, double nz) {
         originLeaf = leaf;
+        originDerivatives = false;
         originU = u;
         originV = v;
         originPx = px;
