@@ -179,13 +179,13 @@ public final class WhittedTracer {
         double[] lights = s.lights;
         shadows.clear();
         for (int i = 0; i < n; i++) {
-            if (!found[i]) {
-                continue;
-            }
             int o = 6 * i;
+            if (!found[i] || atEye(lo, 0, rays[o], rays[o + 1], rays[o + 2])) {
+                continue;   // the cheap test first: a light at the eye needs no shadow ray
+            }
             sp.set(points[i]);
             faceViewer(rays[o + 3], rays[o + 4], rays[o + 5]);
-            if (!towardLight(lo) || ndl <= 0 || atEye(lo, 0, rays[o], rays[o + 1], rays[o + 2])) {
+            if (!towardLight(lo) || ndl <= 0) {
                 continue;
             }
             double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
