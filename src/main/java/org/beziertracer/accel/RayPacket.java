@@ -122,11 +122,6 @@ public final class RayPacket {
         return true;
     }
 
-    /** Rays added since the last {@link #clear}. */
-    public int rays() {
-        return rays;
-    }
-
     /** True when the last {@link Accelerator#gather} on {@code accel} succeeded for the rays added. */
     public boolean gatheredBy(Accelerator accel) {
         return gatheredBy == accel;

@@ -1,5 +1,7 @@
 package org.beziertracer.render;
 
+import java.util.Arrays;
+
 import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.SceneIntersector;
 
@@ -93,8 +95,8 @@ final class RenderWorker {
     /** Makes the camera ray of sample {@code s} of pixel {@code (x, y)} the packet's ray {@code n}; returns n + 1. */
     private int addRay(RenderState st, Camera camera, int x, int y, int s, int n) {
         if (6 * n + 6 > rays.length) {
-            rays = java.util.Arrays.copyOf(rays, 2 * rays.length);
-            pixels = java.util.Arrays.copyOf(pixels, 2 * pixels.length);
+            rays = Arrays.copyOf(rays, 2 * rays.length);
+            pixels = Arrays.copyOf(pixels, 2 * pixels.length);
             colours = new double[rays.length / 2];
         }
         st.sampler.offset(x, y, s, offset);

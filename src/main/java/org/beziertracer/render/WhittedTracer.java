@@ -1,5 +1,7 @@
 package org.beziertracer.render;
 
+import java.util.Arrays;
+
 import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.SceneIntersector;
@@ -210,8 +212,8 @@ public final class WhittedTracer {
     private void ensurePacket(int n) {
         if (hits.length < n) {
             int size = Math.max(n, 2 * hits.length);
-            hits = java.util.Arrays.copyOf(hits, size);
-            points = java.util.Arrays.copyOf(points, size);
+            hits = Arrays.copyOf(hits, size);
+            points = Arrays.copyOf(points, size);
             for (int i = 0; i < size; i++) {
                 if (hits[i] == null) {
                     hits[i] = new Hit();
