@@ -36,7 +36,9 @@ import org.beziertracer.geometry.SubPatchTable;
  * ({@link LeafQuarters}: each quarter's own record proves a miss or a single root that Newton in
  * the quarter finds). Otherwise, on a leaf's first visit both clips run on the unrestricted net, so a leaf with a
  * unique root needs no de Casteljau restriction. An any-hit query (a shadow ray) ends the search
- * at the leaf's first root.
+ * at the leaf's first root, and on a leaf that may hold several roots first runs Newton from the
+ * leaf's start, confined to the leaf: whatever root it converges to within the ray's interval
+ * answers the query (any root does), and only when it finds none does the clipping search run.
  *
  * <p>Robustness, after Efremov, Havran and Seidel, "Robust and numerically stable Bézier
  * clipping method for ray tracing NURBS surfaces", SCCG 2005: clipped intervals are widened by a
@@ -135,6 +137,13 @@ final class BezierClipper {
                 tolerance + 1e-13 * (Math.abs(ctx.ox) + Math.abs(ctx.oy) + Math.abs(ctx.oz)))) {
             // Newton failed because there is nothing to find: the ray passes beside the leaf
             return false;
+        }
+        if (!unique && ctx.anyHit && tab.trimTest == null && newtonFrom(ctx, tab, s, su, sv, tolerance)
+                && ctx.rootT > tMin && ctx.rootT < tMax) {
+            // An any-hit query needs a root, not the nearest: one that Newton finds in the leaf
+            // (its iterates confined to it) answers it, without the clipping search
+            ctx.anyRootsByNewton++;
+            return true;
         }
         return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
     }

@@ -126,6 +126,8 @@ public final class TraceContext {
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
+    /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
+    long anyRootsByNewton;
 
     TraceContext() {}
 

@@ -172,6 +172,66 @@ class ClippingShortcutsTest {
         assertTrue(occluded > 0.2 * rays && occluded < 0.9 * rays, occluded + " of " + rays + " segments occluded");
     }
 
+    /**
+     * Shadow rays leaving surface points at grazing angles, on nets of degree 1..15 and the teapot,
+     * meet leaves that may hold several roots, where an any-hit query takes the first root Newton
+     * finds: it answers as the closest hit within the segment does, and nothing occludes the
+     * segment before that closest hit. The shortcut is taken, not skipped.
+     */
+    @Test
+    void anyHitQueriesAnsweredByNewtonOnFoldedLeavesAnswerAsTheClosestHit() {
+        Random rnd = new Random(778);
+        int rays = 0, occluded = 0;
+        long byNewton = 0;
+        for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
+            Scene scene = new Scene(patches);
+            SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+            double size = si.sceneSize();
+            var box = scene.controlBounds();
+            TraceContext any = si.newContext(), closest = si.newContext();
+            Hit hit = new Hit();
+            SurfacePoint sp = new SurfacePoint();
+            for (int r = 0; r < 400; r++) {
+                // a camera-like ray to a random point of the box; at its hit, a grazing ray leaves
+                double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+                double px = box.minX() + rnd.nextDouble() * (box.maxX() - box.minX());
+                double py = box.minY() + rnd.nextDouble() * (box.maxY() - box.minY());
+                double pz = box.minZ() + rnd.nextDouble() * (box.maxZ() - box.minZ());
+                if (!si.closestHit(closest, px - 2 * size * dx, py - 2 * size * dy, pz - 2 * size * dz, dx, dy, dz,
+                        0, Double.POSITIVE_INFINITY, hit)) {
+                    continue;
+                }
+                si.surfacePoint(closest, hit, sp);
+                double nx = sp.nx, ny = sp.ny, nz = sp.nz;
+                if (nx * dx + ny * dy + nz * dz > 0) {
+                    nx = -nx;
+                    ny = -ny;
+                    nz = -nz;
+                }
+                double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
+                double along = lx * nx + ly * ny + lz * nz, up = 0.3 * rnd.nextDouble();
+                lx += (up - along) * nx;
+                ly += (up - along) * ny;
+                lz += (up - along) * nz;
+                double eps = 1e-6 * size, ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
+                double tMax = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
+                boolean blocked = si.occluded(any, ox, oy, oz, lx, ly, lz, 0, tMax);
+                boolean met = si.closestHit(closest, ox, oy, oz, lx, ly, lz, 0, tMax, hit);
+                String where = patches.size() + " patches of degree " + patches.get(0).degreeU() + "x"
+                        + patches.get(0).degreeV() + ", ray " + r;
+                assertEquals(met, blocked, where);
+                if (met) {
+                    assertFalse(si.occluded(any, ox, oy, oz, lx, ly, lz, 0, hit.t * (1 - 1e-7)), where);
+                    occluded++;
+                }
+                rays++;
+            }
+            byNewton += any.anyRootsByNewton;
+        }
+        assertTrue(rays > 3000 && occluded > rays / 10, occluded + " of " + rays + " grazing rays occluded");
+        assertTrue(byNewton > 100, byNewton + " any-hit answers by Newton on folded leaves");
+    }
+
     /** The leaf of the single-patch table that holds {@code (u, v)}. */
     private static int leafOf(SubPatchTable table, double u, double v) {
         for (int s = 0; s < table.count; s++) {
