@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
@@ -11,7 +12,10 @@ import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.TrimLoop;
+import org.beziertracer.model.TrimRegion;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -181,55 +185,88 @@ class ClippingShortcutsTest {
     @Test
     void anyHitQueriesAnsweredByNewtonOnFoldedLeavesAnswerAsTheClosestHit() {
         Random rnd = new Random(778);
-        int rays = 0, occluded = 0;
-        long byNewton = 0;
+        long[] tally = new long[3];
         for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
-            Scene scene = new Scene(patches);
-            SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
-            double size = si.sceneSize();
-            var box = scene.controlBounds();
-            TraceContext any = si.newContext(), closest = si.newContext();
-            Hit hit = new Hit();
-            SurfacePoint sp = new SurfacePoint();
-            for (int r = 0; r < 400; r++) {
-                // a camera-like ray to a random point of the box; at its hit, a grazing ray leaves
-                double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
-                double px = box.minX() + rnd.nextDouble() * (box.maxX() - box.minX());
-                double py = box.minY() + rnd.nextDouble() * (box.maxY() - box.minY());
-                double pz = box.minZ() + rnd.nextDouble() * (box.maxZ() - box.minZ());
-                if (!si.closestHit(closest, px - 2 * size * dx, py - 2 * size * dy, pz - 2 * size * dz, dx, dy, dz,
-                        0, Double.POSITIVE_INFINITY, hit)) {
-                    continue;
-                }
-                si.surfacePoint(closest, hit, sp);
-                double nx = sp.nx, ny = sp.ny, nz = sp.nz;
-                if (nx * dx + ny * dy + nz * dz > 0) {
-                    nx = -nx;
-                    ny = -ny;
-                    nz = -nz;
-                }
-                double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
-                double along = lx * nx + ly * ny + lz * nz, up = 0.3 * rnd.nextDouble();
-                lx += (up - along) * nx;
-                ly += (up - along) * ny;
-                lz += (up - along) * nz;
-                double eps = 1e-6 * size, ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
-                double tMax = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
-                boolean blocked = si.occluded(any, ox, oy, oz, lx, ly, lz, 0, tMax);
-                boolean met = si.closestHit(closest, ox, oy, oz, lx, ly, lz, 0, tMax, hit);
-                String where = patches.size() + " patches of degree " + patches.get(0).degreeU() + "x"
-                        + patches.get(0).degreeV() + ", ray " + r;
-                assertEquals(met, blocked, where);
-                if (met) {
-                    assertFalse(si.occluded(any, ox, oy, oz, lx, ly, lz, 0, hit.t * (1 - 1e-7)), where);
-                    occluded++;
-                }
-                rays++;
-            }
-            byNewton += any.anyRootsByNewton;
+            grazingShadowRays(new Scene(patches), IntersectOptions.defaults(), rnd, 400, tally);
         }
-        assertTrue(rays > 3000 && occluded > rays / 10, occluded + " of " + rays + " grazing rays occluded");
-        assertTrue(byNewton > 100, byNewton + " any-hit answers by Newton on folded leaves");
+        assertTrue(tally[0] > 3000 && tally[1] > tally[0] / 10, tally[1] + " of " + tally[0] + " grazing rays occluded");
+        assertTrue(tally[2] > 100, tally[2] + " any-hit answers by Newton on folded leaves");
+    }
+
+    /**
+     * The same on folded bicubic patches with holes: there a root Newton finds may be cut away by
+     * the trim, and the query must go on to the roots the trim keeps, nearer ones included (so a
+     * trimmed leaf is searched as for a closest hit).
+     */
+    @Test
+    void anyHitQueriesOnTrimmedFoldsFindTheRootsTheTrimKeeps() {
+        Random rnd = new Random(779);
+        long[] tally = new long[3];
+        for (int p = 0; p < 60; p++) {
+            BezierPatch fold = RandomPatches.wild(rnd, 3, 3, 4);
+            List<TrimLoop> holes = new ArrayList<>();
+            for (int h = 0; h < 3; h++) {
+                holes.add(TrimLoop.circle(0.2 + 0.6 * rnd.nextDouble(), 0.2 + 0.6 * rnd.nextDouble(),
+                        0.1 + 0.1 * rnd.nextDouble(), false));
+            }
+            TrimRegion region = new TrimRegion(List.of(TrimLoop.circle(0.5, 0.5, 0.7, true)), holes);
+            BezierPatch trimmed = new BezierPatch(3, 3, fold.copyNet(), null, new PatchDomain(0, 1, 0, 1, region), null);
+            // split or whole (one leaf with all its folds, where the nearer root is often not Newton's)
+            IntersectOptions options = p % 2 == 0 ? IntersectOptions.defaults()
+                    : IntersectOptions.defaults().withSplit(SplitOptions.wholePatches());
+            grazingShadowRays(new Scene(List.of(trimmed)), options, rnd, 300, tally);
+        }
+        assertTrue(tally[0] > 3000 && tally[1] > tally[0] / 10, tally[1] + " of " + tally[0] + " grazing rays occluded");
+    }
+
+    /**
+     * {@code rays} camera-like rays at random points of the scene; from each hit a shadow ray leaves
+     * at a grazing angle, its any-hit answer checked against the closest hit. Adds to {@code tally}:
+     * shadow rays, occluded ones, any-hit answers by Newton.
+     */
+    private static void grazingShadowRays(Scene scene, IntersectOptions options, Random rnd, int rays, long[] tally) {
+        SceneIntersector si = SceneIntersector.build(scene, options);
+        double size = si.sceneSize();
+        var box = scene.controlBounds();
+        TraceContext any = si.newContext(), closest = si.newContext();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        for (int r = 0; r < rays; r++) {
+            double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+            double px = box.minX() + rnd.nextDouble() * (box.maxX() - box.minX());
+            double py = box.minY() + rnd.nextDouble() * (box.maxY() - box.minY());
+            double pz = box.minZ() + rnd.nextDouble() * (box.maxZ() - box.minZ());
+            if (!si.closestHit(closest, px - 2 * size * dx, py - 2 * size * dy, pz - 2 * size * dz, dx, dy, dz,
+                    0, Double.POSITIVE_INFINITY, hit)) {
+                continue;
+            }
+            si.surfacePoint(closest, hit, sp);
+            double nx = sp.nx, ny = sp.ny, nz = sp.nz;
+            if (nx * dx + ny * dy + nz * dz > 0) {
+                nx = -nx;
+                ny = -ny;
+                nz = -nz;
+            }
+            // a direction on the normal's side, at most about 17° above the tangent plane
+            double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
+            double along = lx * nx + ly * ny + lz * nz, up = 0.3 * rnd.nextDouble();
+            lx += (up - along) * nx;
+            ly += (up - along) * ny;
+            lz += (up - along) * nz;
+            double eps = 1e-6 * size, ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
+            double tMax = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
+            boolean blocked = si.occluded(any, ox, oy, oz, lx, ly, lz, 0, tMax);
+            boolean met = si.closestHit(closest, ox, oy, oz, lx, ly, lz, 0, tMax, hit);
+            String where = scene.patches().size() + " patches of degree " + scene.patches().get(0).degreeU() + "x"
+                    + scene.patches().get(0).degreeV() + ", ray " + r;
+            assertEquals(met, blocked, where);
+            if (met) {
+                assertFalse(si.occluded(any, ox, oy, oz, lx, ly, lz, 0, hit.t * (1 - 1e-7)), where);
+                tally[1]++;
+            }
+            tally[0]++;
+        }
+        tally[2] += any.anyRootsByNewton;
     }
 
     /** The leaf of the single-patch table that holds {@code (u, v)}. */
