@@ -122,13 +122,13 @@ final class BezierClipper {
         } else if (unique && quadratics != null) {
             LeafQuadratics.start(ctx, quadratics, s); // a nearer start, when the model's lies in the leaf
         }
+        double su = ctx.clip[0], sv = ctx.clip[1]; // (the quarters' own starts overwrite ctx.clip)
         if (!unique && quarters != null) {
             int settled = quarters.solve(ctx, tab, s, tMin, tMax, tolerance);
             if (settled != LeafQuarters.UNDECIDED) {
                 return settled == LeafQuarters.ROOT;
             }
         }
-        double su = ctx.clip[0], sv = ctx.clip[1];
         if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
