@@ -168,19 +168,12 @@ public final class TraceContext {
         planesSet = true;
         double squared = dx * dx + dy * dy + dz * dz;
         if (squared > SQUARES_FROM && squared < SQUARES_TO) {
-            // the usual direction: its squared length neither underflows nor overflows. n1 comes
-            // from d's two largest components directly (their squares are at least a third of
-            // d's), so its square root does not wait for d's: the two run side by side
-            double ax, ay, az;
-            if (Math.abs(dx) > Math.abs(dz)) {
-                ax = -dy; ay = dx; az = 0;
-            } else {
-                ax = 0; ay = -dz; az = dy;
-            }
-            double inv = 1.0 / Math.sqrt(squared), invA = 1.0 / Math.sqrt(ax * ax + ay * ay + az * az);
+            // the usual direction: its squared length neither underflows nor overflows, so one
+            // square root and one division; n1's, from d itself, does not wait for it
+            double inv = 1.0 / Math.sqrt(squared);
             invLength = inv;
             n3x = dx * inv; n3y = dy * inv; n3z = dz * inv;
-            n1x = ax * invA; n1y = ay * invA; n1z = az * invA;
+            across(dx, dy, dz);
         } else {
             // scale by the largest component first, so tiny or huge directions neither underflow nor overflow
             double big = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
@@ -188,20 +181,28 @@ public final class TraceContext {
             double scaledLength = Math.sqrt(sx * sx + sy * sy + sz * sz);
             invLength = 1.0 / (scaledLength * big);
             n3x = sx / scaledLength; n3y = sy / scaledLength; n3z = sz / scaledLength;
-            // n1: perpendicular to d, built from its two largest components
-            double ax, ay, az;
-            if (Math.abs(n3x) > Math.abs(n3z)) {
-                ax = -n3y; ay = n3x; az = 0;
-            } else {
-                ax = 0; ay = -n3z; az = n3y;
-            }
-            double inv = 1.0 / Math.sqrt(ax * ax + ay * ay + az * az);
-            n1x = ax * inv; n1y = ay * inv; n1z = az * inv;
+            across(sx, sy, sz);
         }
         // n2 = d̂ × n1
         n2x = n3y * n1z - n3z * n1y;
         n2y = n3z * n1x - n3x * n1z;
         n2z = n3x * n1y - n3y * n1x;
+    }
+
+    /**
+     * n1: the unit vector across {@code (x, y, z)} (a multiple of d whose squares neither
+     * underflow nor overflow) built from its two largest components, whose squares are at least a
+     * third of its own.
+     */
+    private void across(double x, double y, double z) {
+        double ax, ay, az;
+        if (Math.abs(x) > Math.abs(z)) {
+            ax = -y; ay = x; az = 0;
+        } else {
+            ax = 0; ay = -z; az = y;
+        }
+        double inv = 1.0 / Math.sqrt(ax * ax + ay * ay + az * az);
+        n1x = ax * inv; n1y = ay * inv; n1z = az * inv;
     }
 
     /**
