@@ -93,16 +93,21 @@ public final class Film {
     /**
      * Encodes the rectangle {@code (x0, y0, w, h)} into {@code argb[j * stride + i]}; a pixel without
      * samples takes the value of the anchor {@code (x − x mod block, y − y mod block)} of its block.
+     * {@code block} is a power of two (the pass plan's), so the anchor is a mask away, not a division.
      */
     void writeArgb(int x0, int y0, int w, int h, int block, int[] argb, int stride) {
+        if (block < 1 || (block & (block - 1)) != 0) {
+            throw new IllegalArgumentException("block must be a power of two, got " + block);
+        }
+        int mask = -block;
         for (int j = 0; j < h; j++) {
             int y = y0 + j;
-            int last = -1, lastArgb = 0;
+            int last = -1, lastArgb = 0, anchorRow = (y & mask) * width;
             for (int i = 0; i < w; i++) {
                 int x = x0 + i;
                 int p = y * width + x;
                 if (count[p] == 0) {
-                    p = (y - y % block) * width + (x - x % block);
+                    p = anchorRow + (x & mask);
                 }
                 if (p != last) {
                     // A coarse pass's pixels share their anchor's colour: encode it once per run

@@ -21,8 +21,9 @@ final class PassPlan {
     /**
      * One pass.
      *
-     * @param block      first-sample passes: pixels on this grid; extra passes: 1
-     * @param skipGrid   first-sample passes: pixels on this coarser grid were done before (0: none)
+     * @param block      first-sample passes: pixels on this grid; extra passes: 1 (a power of two)
+     * @param skipGrid   first-sample passes: pixels on this coarser grid were done before (0: none;
+     *                   else a power of two, which the render worker masks with)
      * @param sampleFrom first sample index traced
      * @param sampleTo   one past the last sample index
      * @param adaptive   extra samples only where the first sample differs from a neighbour's

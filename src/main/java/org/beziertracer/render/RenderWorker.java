@@ -57,8 +57,10 @@ final class RenderWorker {
                 // The packet: this pass's samples of up to PACKET × PACKET pixels of the pass's grid
                 int n = 0;
                 for (int y = gy; y < yEnd; y += block) {
+                    // the skip grid is a power of two (PassPlan): a mask, not a division per pixel
+                    boolean skipRow = skip > 0 && (y & (skip - 1)) == 0;
                     for (int x = gx; x < xEnd; x += block) {
-                        if (skip > 0 && x % skip == 0 && y % skip == 0) {
+                        if (skipRow && (x & (skip - 1)) == 0) {
                             continue;
                         }
                         if (pass.adaptive() && !differs(film, x, y, threshold)) {
