@@ -85,6 +85,10 @@ class FilmTest {
         int[] one = new int[6 * 5];
         film.writeArgb(2, 3, 6, 5, 1, one, 6);
         assertEquals(0xFF000000, one[0], "block 1: a pixel without samples is black");
+        // blocks are the pass plan's powers of two; anything else is a caller's mistake
+        for (int bad : new int[] {0, 3, 6, -4}) {
+            assertThrows(IllegalArgumentException.class, () -> film.writeArgb(2, 3, 6, 5, bad, one, 6), "block " + bad);
+        }
     }
 
     @Test
