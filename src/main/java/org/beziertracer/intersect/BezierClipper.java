@@ -118,6 +118,10 @@ final class BezierClipper {
         boolean unique = kind == NewtonSolver.SINGLE_ROOT && tab.patchDim[tab.parent[s]] == 3
                 || RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && s == ctx.originLeaf) {
+            if (OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
+                ctx.originRootsBehind++; // its one root is the origin's point, behind the ray: proven unevaluated
+                return false;
+            }
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
         } else if (unique && quadratics != null) {
             LeafQuadratics.start(ctx, quadratics, s); // a nearer start, when the model's lies in the leaf

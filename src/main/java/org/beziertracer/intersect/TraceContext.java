@@ -128,6 +128,8 @@ public final class TraceContext {
     public long solverCalls, clipIterations;
     /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
     long anyRootsByNewton;
+    /** Shadow rays whose own leaf {@link OriginRoot} cleared without an evaluation. */
+    long originRootsBehind;
 
     TraceContext() {}
 

@@ -1,0 +1,170 @@
+package org.beziertracer.intersect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.geometry.SplitOptions;
+import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@link OriginRoot}: when it clears a shadow ray's own leaf, the leaf does hold a root behind the
+ * ray's origin and none ahead of it (the clipping search, without the shortcut, on a context that
+ * knows nothing of the origin), and the shadow ray's answer is the plain query's. Seeded random
+ * patches of degree 1..15, domes with bumps kept whole, and the teapot; a third of the shadow rays
+ * graze their surface.
+ */
+class OriginRootTest {
+
+    /** What one scene's rays saw. */
+    record Tally(int rays, int cleared, int aheadOnOwnLeaf) {}
+
+    static Tally check(Scene scene, IntersectOptions options, Random rnd, int trials, String in) {
+        SceneIntersector si = SceneIntersector.build(scene, options);
+        PatchLeaves leaves = (PatchLeaves) si.leaves;
+        SubPatchTable tab = leaves.table;
+        double size = scene.controlBounds().diagonal(), eps = 1e-6 * size;
+        double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit(), from = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        int rays = 0, cleared = 0, ahead = 0;
+        var b = scene.controlBounds();
+        for (int trial = 0; trial < trials; trial++) {
+            double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+            double tx = b.minX() + rnd.nextDouble() * (b.maxX() - b.minX());
+            double ty = b.minY() + rnd.nextDouble() * (b.maxY() - b.minY());
+            double tz = b.minZ() + rnd.nextDouble() * (b.maxZ() - b.minZ());
+            if (!si.closestHit(ctx, tx - 2 * size * dx, ty - 2 * size * dy, tz - 2 * size * dz, dx, dy, dz, 0,
+                    Double.POSITIVE_INFINITY, hit)) {
+                continue;
+            }
+            from.set(hit);
+            si.surfacePoint(ctx, hit, sp); // the shading's evaluation, as the renderer keeps it
+            double nx = sp.nx, ny = sp.ny, nz = sp.nz;
+            if (nx * dx + ny * dy + nz * dz > 0) {
+                nx = -nx;
+                ny = -ny;
+                nz = -nz;
+            }
+            // A direction on the normal's side: random, a third of them grazing (5° or less)
+            double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
+            double along = lx * nx + ly * ny + lz * nz;
+            lx -= along * nx;
+            ly -= along * ny;
+            lz -= along * nz;
+            double side = Math.sqrt(lx * lx + ly * ly + lz * lz);
+            double up = (trial % 3 == 0 ? 0.09 * rnd.nextDouble() * side : Math.abs(along)) + 1e-4 * side;
+            lx += up * nx;
+            ly += up * ny;
+            lz += up * nz;
+            double ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
+            double far = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
+            rays++;
+            String ray = in + ", trial " + trial;
+            // The answer of the renderer's query is the plain one's
+            boolean plain = si.occluded(ctx, ox, oy, oz, lx, ly, lz, 0, far);
+            assertEquals(plain, si.occludedLeaving(ctx, from, sp, nx, ny, nz, ox, oy, oz, lx, ly, lz, 0, far), ray);
+            // The proof itself, on the ray's own leaf
+            TraceContext probe = si.newContext();
+            probe.setRay(ox, oy, oz, lx, ly, lz);
+            probe.tMin = 0;
+            probe.anyHit = true;
+            probe.leaving(from.subPatch, from.u, from.v, sp, nx, ny, nz);
+            boolean behind = OriginRoot.behind(probe, tab, from.subPatch, 0, tolerance);
+            // The reference: clipping without the origin's shortcuts, for the nearest root ahead and
+            // for roots behind
+            TraceContext plainCtx = si.newContext();
+            plainCtx.setRay(ox, oy, oz, lx, ly, lz);
+            plainCtx.tMin = 0;
+            boolean meets = leaves.solve(plainCtx, from.subPatch, 0, far);
+            ahead += meets ? 1 : 0;
+            if (behind) {
+                cleared++;
+                boolean unique = RootUniqueness.atMostOneRoot(plainCtx, tab, from.subPatch);
+                assertFalse(unique && meets, () -> ray + ": cleared a single-root leaf the ray meets at t = " + plainCtx.rootT);
+                plainCtx.setRay(ox, oy, oz, lx, ly, lz);
+                plainCtx.tMin = -far;
+                assertTrue(leaves.solve(plainCtx, from.subPatch, -far, 0), () -> ray + ": no root behind the origin");
+            }
+        }
+        return new Tally(rays, cleared, ahead);
+    }
+
+    @Test
+    void randomSurfacesOfDegreeOneToFifteen() {
+        Random rnd = new Random(91);
+        int rays = 0, cleared = 0, ahead = 0;
+        for (int degree = 1; degree <= 15; degree++) {
+            int m = 1 + rnd.nextInt(15);
+            List<BezierPatch> patches = new ArrayList<>();
+            patches.add(switch (degree % 3) {
+                case 0 -> RandomPatches.heightField(rnd, degree, m, 4, 0.5 + rnd.nextDouble());
+                case 1 -> RandomPatches.wild(rnd, degree, m, 4);
+                default -> OriginLeafTest.dome(rnd, degree, m);
+            });
+            Tally t = check(new Scene(patches), IntersectOptions.defaults(), rnd, 400, "degree " + degree + "x" + m);
+            rays += t.rays();
+            cleared += t.cleared();
+            ahead += t.aheadOnOwnLeaf();
+        }
+        // The proof holds for most rays, and rays that meet their own leaf again occur
+        assertTrue(cleared > rays / 2, "cleared " + cleared + " of " + rays);
+        assertTrue(ahead > 20, "rays meeting their own leaf ahead: " + ahead);
+    }
+
+    @Test
+    void bumpyCapsKeptWholeWhereShadowRaysMeetTheirOwnLeaf() {
+        Random rnd = new Random(92);
+        IntersectOptions whole = IntersectOptions.defaults().withSplit(SplitOptions.wholePatches());
+        int cleared = 0, ahead = 0;
+        for (int trial = 0; trial < 40; trial++) {
+            int n = 4 + rnd.nextInt(6), m = 4 + rnd.nextInt(6);
+            Tally t = check(new Scene(List.of(OriginLeafTest.bumpyDome(rnd, n, m))), whole, rnd, 150, "bumpy cap " + trial);
+            cleared += t.cleared();
+            ahead += t.aheadOnOwnLeaf();
+        }
+        assertTrue(cleared > 100, "cleared " + cleared);
+        assertTrue(ahead > 30, "rays meeting their own leaf ahead: " + ahead);
+    }
+
+    @Test
+    void theTeapot() {
+        Tally t = check(Models.teapot(), IntersectOptions.defaults(), new Random(93), 1500, "teapot");
+        assertTrue(t.rays() > 500, "too few hits: " + t);
+        assertTrue(t.cleared() > 0, "never cleared: " + t);
+    }
+
+    @Test
+    void aRayThatLeavesNoKeptPointOrAnotherLeafIsNotCleared() {
+        SceneIntersector si = SceneIntersector.build(new Scene(List.of(OriginLeafTest.dome(new Random(94), 3, 3))),
+                IntersectOptions.defaults().withSplit(SplitOptions.wholePatches()));
+        SubPatchTable tab = ((PatchLeaves) si.leaves).table;
+        TraceContext ctx = si.newContext();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        assertTrue(si.closestHit(ctx, 0.1, 0.2, 5, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
+        si.surfacePoint(ctx, hit, sp);
+        double ox = sp.px + 1e-6 * sp.nx, oy = sp.py + 1e-6 * sp.ny, oz = sp.pz + 1e-6 * sp.nz;
+        ctx.setRay(ox, oy, oz, sp.nx + 0.3, sp.ny, sp.nz);
+        ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
+        assertTrue(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "the plain case");
+        ctx.leaving(hit.subPatch, hit.u, hit.v, sp.px, sp.py, sp.pz, sp.nx, sp.ny, sp.nz);
+        assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "no kept derivatives");
+        ctx.leaving(-1, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
+        assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "a ray that leaves no leaf");
+        ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
+        assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, -1, 1e-12), "a query that starts behind the root");
+        ctx.setRay(ox, oy, oz, 1, 0, 1e-9 - sp.nx / sp.nz);
+        ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
+        assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "a ray along the tangent plane");
+    }
+}
