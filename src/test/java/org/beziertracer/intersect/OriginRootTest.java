@@ -144,6 +144,56 @@ class OriginRootTest {
     }
 
     @Test
+    void raysGrazingADomeAreClearedOnlyWhereTheLineMeetsTheDomeBehindTheOrigin() {
+        // Leaving the top of a dome at an angle θ above its tangent plane, from h0 above it: the
+        // line meets the dome behind the origin only when θ² ≥ 2κ·h0 (κ the curvature); below that
+        // it passes over the dome altogether, and nothing may be claimed behind
+        Random rnd = new Random(95);
+        IntersectOptions whole = IntersectOptions.defaults().withSplit(SplitOptions.wholePatches());
+        double[] e = new double[9], scratch = new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH];
+        int cleared = 0, refused = 0;
+        for (int trial = 0; trial < 600; trial++) {
+            int n = 2 + rnd.nextInt(6), m = 2 + rnd.nextInt(6);
+            BezierPatch dome = OriginLeafTest.dome(rnd, n, m);
+            SceneIntersector si = SceneIntersector.build(new Scene(List.of(dome)), whole);
+            PatchLeaves leaves = (PatchLeaves) si.leaves;
+            double u = 0.2 + 0.6 * rnd.nextDouble(), v = 0.2 + 0.6 * rnd.nextDouble();
+            org.beziertracer.geometry.DeCasteljau.evaluateWithDerivatives(dome.copyNet(), 0, n, m, u, v, e, scratch);
+            double nx = e[4] * e[8] - e[5] * e[7], ny = e[5] * e[6] - e[3] * e[8], nz = e[3] * e[7] - e[4] * e[6];
+            double len = Math.sqrt(nx * nx + ny * ny + nz * nz) * Math.signum(nz);
+            nx /= len;
+            ny /= len;
+            nz /= len;
+            // a unit tangent, and the direction θ above it
+            double ax = e[3] - (e[3] * nx + e[4] * ny + e[5] * nz) * nx, ay = e[4] - (e[3] * nx + e[4] * ny + e[5] * nz) * ny;
+            double az = e[5] - (e[3] * nx + e[4] * ny + e[5] * nz) * nz, al = Math.sqrt(ax * ax + ay * ay + az * az);
+            double theta = Math.pow(10, -5 + 4 * rnd.nextDouble()), c = Math.cos(theta) / al, sn = Math.sin(theta);
+            double h0 = 1e-6 * 8;
+            TraceContext ctx = si.newContext();
+            ctx.setRay(e[0] + h0 * nx, e[1] + h0 * ny, e[2] + h0 * nz, c * ax + sn * nx, c * ay + sn * ny, c * az + sn * nz);
+            ctx.tMin = 0;
+            ctx.anyHit = true;
+            SurfacePoint sp = new SurfacePoint();
+            sp.px = e[0]; sp.py = e[1]; sp.pz = e[2];
+            sp.dpdux = e[3]; sp.dpduy = e[4]; sp.dpduz = e[5];
+            sp.dpdvx = e[6]; sp.dpdvy = e[7]; sp.dpdvz = e[8];
+            ctx.leaving(0, u, v, sp, nx, ny, nz);
+            if (!OriginRoot.behind(ctx, leaves.table, 0, 0, 1e-12 * 8)) {
+                refused++;
+                continue;
+            }
+            cleared++;
+            TraceContext plain = si.newContext();
+            plain.setRay(ctx.ox, ctx.oy, ctx.oz, ctx.dx, ctx.dy, ctx.dz);
+            plain.tMin = -100;
+            String ray = "dome " + trial + ", θ = " + theta;
+            assertTrue(leaves.solve(plain, 0, -100, 0), () -> ray + ": cleared, but no root behind the origin");
+            assertFalse(leaves.solve(plain, 0, 0, 100), () -> ray + ": cleared, but a root ahead at t = " + plain.rootT);
+        }
+        assertTrue(cleared > 200 && refused > 50, "cleared " + cleared + ", refused " + refused);
+    }
+
+    @Test
     void aRayThatLeavesNoKeptPointOrAnotherLeafIsNotCleared() {
         SceneIntersector si = SceneIntersector.build(new Scene(List.of(OriginLeafTest.dome(new Random(94), 3, 3))),
                 IntersectOptions.defaults().withSplit(SplitOptions.wholePatches()));
@@ -163,6 +213,9 @@ class OriginRootTest {
         assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "a ray that leaves no leaf");
         ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
         assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, -1, 1e-12), "a query that starts behind the root");
+        ctx.setRay(ox, oy, oz, -sp.nx + 0.3, -sp.ny, -sp.nz);
+        ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
+        assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "a ray into the surface: its root is ahead");
         ctx.setRay(ox, oy, oz, 1, 0, 1e-9 - sp.nx / sp.nz);
         ctx.leaving(hit.subPatch, hit.u, hit.v, sp, sp.nx, sp.ny, sp.nz);
         assertFalse(OriginRoot.behind(ctx, tab, hit.subPatch, 0, 1e-12), "a ray along the tangent plane");
