@@ -66,7 +66,8 @@ final class OriginRoot {
         }
         double du = (b * f2 - d * f1) / det, dv = (c * f1 - a * f2) / det;
         // ‖J̃⁻¹‖ from the Euclidean residual to the step's |du| + |dv| (Cauchy–Schwarz on each row)
-        double beta = (Math.hypot(b, d) + Math.hypot(a, c)) / Math.abs(det) * (1 + 1e-12);
+        // (Math.sqrt, not Math.hypot: a sum that overflows makes β infinite, which proves nothing)
+        double beta = (Math.sqrt(b * b + d * d) + Math.sqrt(a * a + c * c)) / Math.abs(det) * (1 + 1e-12);
         double su = Math.sqrt(sux * sux + suy * suy + suz * suz), sv = Math.sqrt(svx * svx + svy * svy + svz * svz);
         double magnitude = Math.abs(ctx.originPx) + Math.abs(ctx.originPy) + Math.abs(ctx.originPz)
                 + Math.abs(ctx.ox) + Math.abs(ctx.oy) + Math.abs(ctx.oz);
