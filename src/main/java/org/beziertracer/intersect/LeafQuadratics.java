@@ -120,6 +120,11 @@ final class LeafQuadratics {
                 tab.patchDegreeV[k], 3, u, v, out, scratch);
     }
 
+    /** True when leaf {@code s} has a model. */
+    static boolean has(float[] models, int s) {
+        return !Float.isNaN(models[STRIDE * s]);
+    }
+
     /**
      * Where the current ray of {@code ctx} meets leaf {@code s}'s model, in leaf parameters into
      * {@code ctx.clip[0..1]}; true when that lies in the leaf. Otherwise {@code ctx.clip} is left

@@ -130,6 +130,8 @@ public final class TraceContext {
     long anyRootsByNewton;
     /** Shadow rays whose own leaf {@link OriginRoot} cleared without an evaluation. */
     long originRootsBehind;
+    /** Single-root leaves the winding test settled before Newton ran (the model's start outside the leaf). */
+    long besideFirst;
 
     TraceContext() {}
 

@@ -71,6 +71,45 @@ class ClippingShortcutsTest {
     }
 
     @Test
+    void aSingleRootLeafWhoseModelMissesItIsSettledByTheWindingFirstAsTheReferenceWould() {
+        // Above bicubic, a single-root leaf whose quadratic model's start lies outside it is tried
+        // by the winding test before Newton: the same answers, root for root, as the search
+        // without records or models, and the order is taken (the counter)
+        Random rnd = new Random(9_2026_12_03L);
+        int rays = 0, hits = 0;
+        long beside = 0;
+        for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
+            LeafRays aimer = LeafRays.of(patches);
+            SubPatchTable table = aimer.table;
+            float[] quadratics = LeafQuadratics.build(table);
+            double size = aimer.size, tolerance = aimer.tolerance;
+            TraceContext ctx = new TraceContext();
+            for (int s = 0; s < table.count; s++) {
+                for (int r = 0; r < 8; r++) {
+                    // near the leaf's border, half of them shifted off the surface: many pass beside
+                    double a = rnd.nextBoolean() ? rnd.nextDouble() : (r % 2) * 1.0;
+                    double b = rnd.nextBoolean() ? rnd.nextDouble() : (r / 2 % 2) * 1.0;
+                    aimer.aim(ctx, s, a, b, r % 2 == 1 ? 0.1 * table.diagonal[s] : 0, rnd);
+                    boolean reference = BezierClipper.intersect(ctx, table, null, s, 0, Double.POSITIVE_INFINITY, tolerance);
+                    double tRef = ctx.rootT;
+                    boolean fast = BezierClipper.intersect(ctx, table, aimer.records, quadratics, s, 0,
+                            Double.POSITIVE_INFINITY, tolerance);
+                    String where = "leaf " + s + " of " + table.count + ", ray " + r;
+                    assertEquals(reference, fast, where);
+                    if (fast) {
+                        assertEquals(tRef, ctx.rootT, 1e-9 * size, where);
+                        hits++;
+                    }
+                    rays++;
+                }
+            }
+            beside += ctx.besideFirst;
+        }
+        assertTrue(hits > 0.3 * rays && beside > 0.01 * rays, rays + " rays: " + hits + " hits, " + beside
+                + " leaves settled by the winding before Newton");
+    }
+
+    @Test
     void anUnevaluatedLastStepGivesTheAimedRootAndAnEvaluationWithinItsBound() {
         Random rnd = new Random(20261202L);
         int roots = 0, extrapolated = 0;
