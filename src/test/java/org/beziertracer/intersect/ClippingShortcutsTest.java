@@ -280,12 +280,8 @@ class ClippingShortcutsTest {
                 continue;
             }
             si.surfacePoint(closest, hit, sp);
-            double nx = sp.nx, ny = sp.ny, nz = sp.nz;
-            if (nx * dx + ny * dy + nz * dz > 0) {
-                nx = -nx;
-                ny = -ny;
-                nz = -nz;
-            }
+            double[] n = ShadowRays.facing(sp, dx, dy, dz);
+            double nx = n[0], ny = n[1], nz = n[2];
             // a direction on the normal's side, at most about 17° above the tangent plane
             double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
             double along = lx * nx + ly * ny + lz * nz, up = 0.3 * rnd.nextDouble();

@@ -38,49 +38,18 @@ class OriginLeafTest {
     static Tally check(Scene scene, IntersectOptions options, Random rnd, int trials, String in) {
         SceneIntersector si = SceneIntersector.build(scene, options);
         PatchLeaves leaves = (PatchLeaves) si.leaves;
-        double size = scene.controlBounds().diagonal(), eps = 1e-6 * size;
         TraceContext ctx = si.newContext();
-        Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
         int rays = 0, proven = 0, own = 0, neighbours = 0;
         for (int trial = 0; trial < trials; trial++) {
-            // A camera-like ray from outside toward a random point of the scene's box
-            double[] o = new double[3], d = new double[3];
-            for (int c = 0; c < 3; c++) {
-                d[c] = rnd.nextGaussian();
-            }
-            double[] target = {rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble()};
-            var b = scene.controlBounds();
-            double tx = b.minX() + target[0] * (b.maxX() - b.minX()), ty = b.minY() + target[1] * (b.maxY() - b.minY());
-            double tz = b.minZ() + target[2] * (b.maxZ() - b.minZ());
-            o[0] = tx - 2 * size * d[0];
-            o[1] = ty - 2 * size * d[1];
-            o[2] = tz - 2 * size * d[2];
-            if (!si.closestHit(ctx, o[0], o[1], o[2], d[0], d[1], d[2], 0, Double.POSITIVE_INFINITY, hit)) {
+            // From a random hit, a direction on the normal's side: random, a third of them grazing (5° or less)
+            ShadowRays.ShadowRay sr = ShadowRays.atRandomHit(si, ctx, rnd, trial % 3 == 0, 1e-3, sp);
+            if (sr == null) {
                 continue;
             }
-            Hit from = new Hit();
-            from.set(hit);
-            si.surfacePoint(ctx, hit, sp);
-            double nx = sp.nx, ny = sp.ny, nz = sp.nz;
-            if (nx * d[0] + ny * d[1] + nz * d[2] > 0) {
-                nx = -nx;
-                ny = -ny;
-                nz = -nz;
-            }
-            // A direction on the normal's side: random, a third of them grazing (5° or less)
-            double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
-            double along = lx * nx + ly * ny + lz * nz;
-            lx -= along * nx;
-            ly -= along * ny;
-            lz -= along * nz;
-            double side = Math.sqrt(lx * lx + ly * ly + lz * lz);
-            double up = trial % 3 == 0 ? 0.09 * rnd.nextDouble() * side : Math.abs(along);
-            lx += up * nx + 1e-3 * side * nx;
-            ly += up * ny + 1e-3 * side * ny;
-            lz += up * nz + 1e-3 * side * nz;
-            double ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
-            double far = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
+            Hit from = sr.from();
+            double nx = sr.nx(), ny = sr.ny(), nz = sr.nz(), ox = sr.ox(), oy = sr.oy(), oz = sr.oz();
+            double lx = sr.lx(), ly = sr.ly(), lz = sr.lz(), far = sr.far();
             rays++;
             String ray = in + ", trial " + trial;
             boolean plain = si.occluded(ctx, ox, oy, oz, lx, ly, lz, 0, far);

@@ -31,43 +31,20 @@ class OriginRootTest {
         SceneIntersector si = SceneIntersector.build(scene, options);
         PatchLeaves leaves = (PatchLeaves) si.leaves;
         SubPatchTable tab = leaves.table;
-        double size = scene.controlBounds().diagonal(), eps = 1e-6 * size;
-        double tolerance = PatchLeaves.RELATIVE_TOLERANCE * size;
+        double tolerance = PatchLeaves.RELATIVE_TOLERANCE * scene.controlBounds().diagonal();
         TraceContext ctx = si.newContext();
-        Hit hit = new Hit(), from = new Hit();
+        Hit from = new Hit();
         SurfacePoint sp = new SurfacePoint();
         int rays = 0, cleared = 0, ahead = 0;
-        var b = scene.controlBounds();
         for (int trial = 0; trial < trials; trial++) {
-            double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
-            double tx = b.minX() + rnd.nextDouble() * (b.maxX() - b.minX());
-            double ty = b.minY() + rnd.nextDouble() * (b.maxY() - b.minY());
-            double tz = b.minZ() + rnd.nextDouble() * (b.maxZ() - b.minZ());
-            if (!si.closestHit(ctx, tx - 2 * size * dx, ty - 2 * size * dy, tz - 2 * size * dz, dx, dy, dz, 0,
-                    Double.POSITIVE_INFINITY, hit)) {
+            // A direction on the normal's side: random, a third of them grazing (5° or less)
+            ShadowRays.ShadowRay sr = ShadowRays.atRandomHit(si, ctx, rnd, trial % 3 == 0, 1e-4, sp);
+            if (sr == null) {
                 continue;
             }
-            from.set(hit);
-            si.surfacePoint(ctx, hit, sp); // the shading's evaluation, as the renderer keeps it
-            double nx = sp.nx, ny = sp.ny, nz = sp.nz;
-            if (nx * dx + ny * dy + nz * dz > 0) {
-                nx = -nx;
-                ny = -ny;
-                nz = -nz;
-            }
-            // A direction on the normal's side: random, a third of them grazing (5° or less)
-            double lx = rnd.nextGaussian(), ly = rnd.nextGaussian(), lz = rnd.nextGaussian();
-            double along = lx * nx + ly * ny + lz * nz;
-            lx -= along * nx;
-            ly -= along * ny;
-            lz -= along * nz;
-            double side = Math.sqrt(lx * lx + ly * ly + lz * lz);
-            double up = (trial % 3 == 0 ? 0.09 * rnd.nextDouble() * side : Math.abs(along)) + 1e-4 * side;
-            lx += up * nx;
-            ly += up * ny;
-            lz += up * nz;
-            double ox = sp.px + eps * nx, oy = sp.py + eps * ny, oz = sp.pz + eps * nz;
-            double far = 3 * size / Math.sqrt(lx * lx + ly * ly + lz * lz);
+            from.set(sr.from());
+            double nx = sr.nx(), ny = sr.ny(), nz = sr.nz(), ox = sr.ox(), oy = sr.oy(), oz = sr.oz();
+            double lx = sr.lx(), ly = sr.ly(), lz = sr.lz(), far = sr.far();
             rays++;
             String ray = in + ", trial " + trial;
             // The answer of the renderer's query is the plain one's
