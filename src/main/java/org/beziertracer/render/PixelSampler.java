@@ -19,6 +19,8 @@ public final class PixelSampler {
      * {@code fixed[2s], fixed[2s+1]}, NaN where the position is random.
      */
     private final double[] fixed;
+    /** The stratum of each sample: {@code cell[2s], cell[2s+1]} (no division per pixel). */
+    private final int[] cell;
 
     public PixelSampler(SamplerKind kind, PixelFilter filter, int spp, long seed) {
         if (spp < 1) {
@@ -32,6 +34,12 @@ public final class PixelSampler {
         this.kx = (int) Math.ceil(Math.sqrt(extra));
         this.ky = (extra + kx - 1) / kx;
         this.fixed = new double[2 * spp];
+        this.cell = new int[2 * spp];
+        for (int k = 0; k < spp; k++) {
+            int c = kind == SamplerKind.ADAPTIVE ? Math.max(k - 1, 0) : k;
+            cell[2 * k] = c % kx;
+            cell[2 * k + 1] = c / kx;
+        }
         double[] o = new double[2];
         for (int k = 0; k < spp; k++) {
             boolean isFixed = kind == SamplerKind.REGULAR || kind == SamplerKind.ADAPTIVE && k == 0;
@@ -67,8 +75,7 @@ public final class PixelSampler {
             ox = 0.5;
             oy = 0.5;
         } else {
-            int c = kind == SamplerKind.ADAPTIVE ? s - 1 : s;
-            int cx = c % kx, cy = c / kx;
+            int cx = cell[2 * s], cy = cell[2 * s + 1];
             double jx = 0.5, jy = 0.5;
             if (kind != SamplerKind.REGULAR) {
                 jx = uniform(x, y, s, 0);
