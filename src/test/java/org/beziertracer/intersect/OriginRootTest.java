@@ -27,7 +27,18 @@ class OriginRootTest {
     /** What one scene's rays saw. */
     record Tally(int rays, int cleared, int aheadOnOwnLeaf) {}
 
+    /** Shadow rays of {@link #check}: trial {@code trial}'s, or null when its camera ray missed. */
+    interface Source {
+        ShadowRays.ShadowRay ray(SceneIntersector si, TraceContext ctx, Random rnd, int trial, SurfacePoint sp);
+    }
+
     static Tally check(Scene scene, IntersectOptions options, Random rnd, int trials, String in) {
+        // A direction on the normal's side: random, a third of them grazing (5° or less)
+        return check(scene, options, rnd, trials, in,
+                (si, ctx, r, trial, sp) -> ShadowRays.atRandomHit(si, ctx, r, trial % 3 == 0, 1e-4, sp));
+    }
+
+    static Tally check(Scene scene, IntersectOptions options, Random rnd, int trials, String in, Source source) {
         SceneIntersector si = SceneIntersector.build(scene, options);
         PatchLeaves leaves = (PatchLeaves) si.leaves;
         SubPatchTable tab = leaves.table;
@@ -37,8 +48,7 @@ class OriginRootTest {
         SurfacePoint sp = new SurfacePoint();
         int rays = 0, cleared = 0, ahead = 0;
         for (int trial = 0; trial < trials; trial++) {
-            // A direction on the normal's side: random, a third of them grazing (5° or less)
-            ShadowRays.ShadowRay sr = ShadowRays.atRandomHit(si, ctx, rnd, trial % 3 == 0, 1e-4, sp);
+            ShadowRays.ShadowRay sr = source.ray(si, ctx, rnd, trial, sp);
             if (sr == null) {
                 continue;
             }
@@ -118,6 +128,27 @@ class OriginRootTest {
         Tally t = check(Models.teapot(), IntersectOptions.defaults(), new Random(93), 1500, "teapot");
         assertTrue(t.rays() > 500, "too few hits: " + t);
         assertTrue(t.cleared() > 0, "never cleared: " + t);
+    }
+
+    @Test
+    void theTeapotsLeafBorders() {
+        // Shadow rays from points on the borders of the teapot's leaves (and so on its patches'
+        // borders, where two patches meet): the root's ball must lie in the leaf the hit names
+        Scene teapot = Models.teapot();
+        SubPatchTable tab = ((PatchLeaves) SceneIntersector.build(teapot, IntersectOptions.defaults()).leaves).table;
+        double[] e = new double[9], scratch = new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH];
+        Tally t = check(teapot, IntersectOptions.defaults(), new Random(96), 3000, "teapot border", (si, ctx, rnd, trial, sp) -> {
+            int s = rnd.nextInt(tab.count), k = tab.parent[s], edge = rnd.nextInt(4);
+            double along = rnd.nextDouble();
+            double u = edge < 2 ? tab.boxes[4 * s + edge] : tab.boxes[4 * s] + along * (tab.boxes[4 * s + 1] - tab.boxes[4 * s]);
+            double v = edge >= 2 ? tab.boxes[4 * s + edge] : tab.boxes[4 * s + 2] + along * (tab.boxes[4 * s + 3] - tab.boxes[4 * s + 2]);
+            org.beziertracer.geometry.DeCasteljau.evaluateWithDerivatives(tab.patchNets, tab.patchNetOffset[k],
+                    tab.patchDegreeU[k], tab.patchDegreeV[k], u, v, e, scratch);
+            return ShadowRays.atHit(si, ctx, rnd, e[0], e[1], e[2], rnd.nextGaussian(), rnd.nextGaussian(),
+                    rnd.nextGaussian(), trial % 3 == 0, 1e-4, sp);
+        });
+        assertTrue(t.rays() > 1500, "too few hits: " + t);
+        assertTrue(t.cleared() > t.rays() / 4, "rarely cleared: " + t);
     }
 
     @Test

@@ -19,11 +19,17 @@ final class ShadowRays {
     static ShadowRay atRandomHit(SceneIntersector si, TraceContext ctx, Random rnd, boolean grazing, double lift,
                                  SurfacePoint sp) {
         var b = si.scene().controlBounds();
-        double size = b.diagonal(), eps = 1e-6 * size;
         double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
         double tx = b.minX() + rnd.nextDouble() * (b.maxX() - b.minX());
         double ty = b.minY() + rnd.nextDouble() * (b.maxY() - b.minY());
         double tz = b.minZ() + rnd.nextDouble() * (b.maxZ() - b.minZ());
+        return atHit(si, ctx, rnd, tx, ty, tz, dx, dy, dz, grazing, lift, sp);
+    }
+
+    /** As {@link #atRandomHit}, the camera-like ray aimed at {@code t} along {@code d}. */
+    static ShadowRay atHit(SceneIntersector si, TraceContext ctx, Random rnd, double tx, double ty, double tz,
+                           double dx, double dy, double dz, boolean grazing, double lift, SurfacePoint sp) {
+        double size = si.scene().controlBounds().diagonal(), eps = 1e-6 * size;
         Hit hit = new Hit();
         if (!si.closestHit(ctx, tx - 2 * size * dx, ty - 2 * size * dy, tz - 2 * size * dz, dx, dy, dz, 0,
                 Double.POSITIVE_INFINITY, hit)) {
