@@ -125,22 +125,25 @@ final class NewtonLeafRecords {
     static void frame(double[] net, int off, int n, int m, boolean rational, double[] rec, int o) {
         int row = 3 * (n + 1);
         int p00 = off, pn0 = off + 3 * n, p0m = off + row * m, pnm = p0m + 3 * n;
+        midRanges(net, off, n, m, rec, o);
         for (int c = 0; c < 3; c++) {
-            rec[o + A + c] = midRange(net, off + c, n, m, 3, n);
-            rec[o + B + c] = midRange(net, off + c, n, m, row, m);
             rec[o + C + c] = 0.25 * (net[p00 + c] + net[pn0 + c] + net[p0m + c] + net[pnm + c]);
         }
+        // The largest squared distances, then one square root each (the root is monotone, so the
+        // root of the largest square is the largest root, to the bit)
         double ra = 0, rb = 0;
         for (int j = 0; j <= m; j++) {
             for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
                 if (i < n) {
-                    ra = Math.max(ra, distance(net, p, p + 3, n, rec, o + A));
+                    ra = Math.max(ra, squaredDistance(net, p, p + 3, n, rec, o + A));
                 }
                 if (j < m) {
-                    rb = Math.max(rb, distance(net, p, p + row, m, rec, o + B));
+                    rb = Math.max(rb, squaredDistance(net, p, p + row, m, rec, o + B));
                 }
             }
         }
+        ra = Math.sqrt(ra);
+        rb = Math.sqrt(rb);
         double ex = rec[o + C] - 0.5 * (rec[o + A] + rec[o + B]) - net[p00];
         double ey = rec[o + C + 1] - 0.5 * (rec[o + A + 1] + rec[o + B + 1]) - net[p00 + 1];
         double ez = rec[o + C + 2] - 0.5 * (rec[o + A + 2] + rec[o + B + 2]) - net[p00 + 2];
@@ -165,35 +168,57 @@ final class NewtonLeafRecords {
                     double d = net[p + c] - (rec[o + C + c] + s * rec[o + A + c] + t * rec[o + B + c]);
                     sq += d * d;
                 }
-                reach = Math.max(reach, Math.sqrt(sq));
+                reach = Math.max(reach, sq);
             }
         }
-        return reach;
+        return Math.sqrt(reach);
     }
 
     /**
-     * Middle of the range of {@code deg·(net[p + step] − net[p])} over the net's points that have a
-     * neighbour {@code step} doubles on ({@code step = 3}: along u; one row: along v), coordinate
-     * at {@code first}.
+     * A and B into {@code rec[o + A ..]}, {@code rec[o + B ..]}: per coordinate, the middle of the
+     * range of {@code n·(P[i+1][j] − P[i][j])} (along u) and of {@code m·(P[i][j+1] − P[i][j])}
+     * (along v) over the net at {@code net[off..]}, in one pass. (Comparisons, not Math.min and
+     * Math.max: the net is finite, and the two differ only on NaN and on the order of ±0.)
      */
-    private static double midRange(double[] net, int first, int n, int m, int step, int deg) {
+    private static void midRanges(double[] net, int off, int n, int m, double[] rec, int o) {
         int row = 3 * (n + 1);
-        int columns = step == 3 ? n : n + 1, rows = step == 3 ? m + 1 : m;
-        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-        for (int j = 0; j < rows; j++) {
-            for (int i = 0, p = first + j * row; i < columns; i++, p += 3) {
-                double d = deg * (net[p + step] - net[p]);
-                lo = Math.min(lo, d);
-                hi = Math.max(hi, d);
+        double ulx = Double.POSITIVE_INFINITY, uly = ulx, ulz = ulx, uhx = Double.NEGATIVE_INFINITY, uhy = uhx, uhz = uhx;
+        double vlx = ulx, vly = ulx, vlz = ulx, vhx = uhx, vhy = uhx, vhz = uhx;
+        for (int j = 0; j <= m; j++) {
+            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
+                if (i < n) {
+                    double x = n * (net[p + 3] - net[p]), y = n * (net[p + 4] - net[p + 1]), z = n * (net[p + 5] - net[p + 2]);
+                    if (x < ulx) ulx = x;
+                    if (x > uhx) uhx = x;
+                    if (y < uly) uly = y;
+                    if (y > uhy) uhy = y;
+                    if (z < ulz) ulz = z;
+                    if (z > uhz) uhz = z;
+                }
+                if (j < m) {
+                    int q = p + row;
+                    double x = m * (net[q] - net[p]), y = m * (net[q + 1] - net[p + 1]), z = m * (net[q + 2] - net[p + 2]);
+                    if (x < vlx) vlx = x;
+                    if (x > vhx) vhx = x;
+                    if (y < vly) vly = y;
+                    if (y > vhy) vhy = y;
+                    if (z < vlz) vlz = z;
+                    if (z > vhz) vhz = z;
+                }
             }
         }
-        return 0.5 * (lo + hi);
+        rec[o + A] = 0.5 * (ulx + uhx);
+        rec[o + A + 1] = 0.5 * (uly + uhy);
+        rec[o + A + 2] = 0.5 * (ulz + uhz);
+        rec[o + B] = 0.5 * (vlx + vhx);
+        rec[o + B + 1] = 0.5 * (vly + vhy);
+        rec[o + B + 2] = 0.5 * (vlz + vhz);
     }
 
-    /** {@code |deg·(net[q] − net[p]) − rec[axis..axis+3)|}. */
-    private static double distance(double[] net, int p, int q, int deg, double[] rec, int axis) {
+    /** {@code |deg·(net[q] − net[p]) − rec[axis..axis+3)|²}. */
+    private static double squaredDistance(double[] net, int p, int q, int deg, double[] rec, int axis) {
         double x = deg * (net[q] - net[p]) - rec[axis], y = deg * (net[q + 1] - net[p + 1]) - rec[axis + 1];
         double z = deg * (net[q + 2] - net[p + 2]) - rec[axis + 2];
-        return Math.sqrt(x * x + y * y + z * z);
+        return x * x + y * y + z * z;
     }
 }

@@ -1,5 +1,6 @@
 package org.beziertracer.intersect;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -56,6 +57,67 @@ class NewtonLeafRecordsTest {
             sumBall += ball;
         }
         assertTrue(sumR < 0.5 * sumBall, "mean R " + sumR / table.count + " vs ball bound " + sumBall / table.count);
+    }
+
+    @Test
+    void theFrameIsItsDefinitionToTheBit() {
+        // A and B the middles of the ranges of the scaled control-point differences, RA and RB
+        // the largest distances of those differences from them, R the control points' largest
+        // distance from the parallelogram (or the ball bound, the smaller), computed the plain
+        // way (Math.min / Math.max, a square root per point) on random nets of degree 1..15
+        Random rnd = new Random(20261203);
+        double[] frame = new double[NewtonLeafRecords.STRIDE];
+        for (int trial = 0; trial < 300; trial++) {
+            int n = 1 + rnd.nextInt(15), m = 1 + rnd.nextInt(15), row = 3 * (n + 1);
+            double[] net = RandomPatches.wild(rnd, n, m, 1 + 10 * rnd.nextDouble()).copyNet();
+            NewtonLeafRecords.frame(net, 0, n, m, false, frame, 0);
+            double[] a = new double[3], b = new double[3];
+            for (int c = 0; c < 3; c++) {
+                double ulo = Double.POSITIVE_INFINITY, uhi = Double.NEGATIVE_INFINITY, vlo = ulo, vhi = uhi;
+                for (int j = 0; j <= m; j++) {
+                    for (int i = 0; i <= n; i++) {
+                        int p = j * row + 3 * i + c;
+                        if (i < n) {
+                            ulo = Math.min(ulo, n * (net[p + 3] - net[p]));
+                            uhi = Math.max(uhi, n * (net[p + 3] - net[p]));
+                        }
+                        if (j < m) {
+                            vlo = Math.min(vlo, m * (net[p + row] - net[p]));
+                            vhi = Math.max(vhi, m * (net[p + row] - net[p]));
+                        }
+                    }
+                }
+                a[c] = 0.5 * (ulo + uhi);
+                b[c] = 0.5 * (vlo + vhi);
+            }
+            double ra = 0, rb = 0, hull = 0;
+            for (int j = 0; j <= m; j++) {
+                for (int i = 0; i <= n; i++) {
+                    int p = j * row + 3 * i;
+                    double su = 0, sv = 0, sh = 0;
+                    for (int c = 0; c < 3; c++) {
+                        double du = i < n ? n * (net[p + 3 + c] - net[p + c]) - a[c] : 0;
+                        double dv = j < m ? m * (net[p + row + c] - net[p + c]) - b[c] : 0;
+                        double dh = net[p + c] - (frame[NewtonLeafRecords.C + c] + ((double) i / n - 0.5) * a[c]
+                                + ((double) j / m - 0.5) * b[c]);
+                        su += du * du;
+                        sv += dv * dv;
+                        sh += dh * dh;
+                    }
+                    ra = Math.max(ra, Math.sqrt(su));
+                    rb = Math.max(rb, Math.sqrt(sv));
+                    hull = Math.max(hull, Math.sqrt(sh));
+                }
+            }
+            String net_ = "net " + trial + " (" + n + "x" + m + ")";
+            for (int c = 0; c < 3; c++) {
+                assertEquals(a[c], frame[NewtonLeafRecords.A + c], 0, net_);
+                assertEquals(b[c], frame[NewtonLeafRecords.B + c], 0, net_);
+            }
+            assertEquals(ra, frame[NewtonLeafRecords.RA], 0, net_);
+            assertEquals(rb, frame[NewtonLeafRecords.RB], 0, net_);
+            assertEquals(Math.min(hull, ballBound(frame, net, 0)), frame[NewtonLeafRecords.R], 0, net_);
+        }
     }
 
     /** The bound from the derivative balls alone: |C − (A+B)/2 − P00| + RA + RB. */
