@@ -116,12 +116,12 @@ final class BezierClipper {
         }
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
         // they prove a single root, the table's own test need not run
-        boolean unique = kind == NewtonSolver.SINGLE_ROOT && tab.patchDim[tab.parent[s]] == 3
+        boolean polynomial = tab.patchDim[tab.parent[s]] == 3;
+        boolean unique = kind == NewtonSolver.SINGLE_ROOT && polynomial
                 || RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && s == ctx.originLeaf) {
             if (OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
-                ctx.originRootsBehind++; // its one root is the origin's point, behind the ray: proven unevaluated
-                return false;
+                return false; // its one root is the origin's point, behind the ray: proven unevaluated
             }
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
         } else if (unique && quadratics != null) {
@@ -137,7 +137,7 @@ final class BezierClipper {
                 return settled == LeafQuarters.ROOT;
             }
         }
-        boolean windingFirst = besideFirst && tab.patchDim[tab.parent[s]] == 3;
+        boolean windingFirst = besideFirst && polynomial;
         if (windingFirst && holdsNoRoot(ctx, tab, s, tolerance)) {
             ctx.besideFirst++;
             return false;
@@ -146,7 +146,7 @@ final class BezierClipper {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
-        if (unique && !windingFirst && tab.patchDim[tab.parent[s]] == 3 && holdsNoRoot(ctx, tab, s, tolerance)) {
+        if (unique && !windingFirst && polynomial && holdsNoRoot(ctx, tab, s, tolerance)) {
             // Newton failed because there is nothing to find: the ray passes beside the leaf
             return false;
         }

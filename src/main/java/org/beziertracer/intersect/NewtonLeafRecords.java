@@ -177,42 +177,38 @@ final class NewtonLeafRecords {
     /**
      * A and B into {@code rec[o + A ..]}, {@code rec[o + B ..]}: per coordinate, the middle of the
      * range of {@code n·(P[i+1][j] − P[i][j])} (along u) and of {@code m·(P[i][j+1] − P[i][j])}
-     * (along v) over the net at {@code net[off..]}, in one pass. (Comparisons, not Math.min and
-     * Math.max: the net is finite, and the two differ only on NaN and on the order of ±0.)
+     * (along v) over the net at {@code net[off..]}.
      */
     private static void midRanges(double[] net, int off, int n, int m, double[] rec, int o) {
         int row = 3 * (n + 1);
-        double ulx = Double.POSITIVE_INFINITY, uly = ulx, ulz = ulx, uhx = Double.NEGATIVE_INFINITY, uhy = uhx, uhz = uhx;
-        double vlx = ulx, vly = ulx, vlz = ulx, vhx = uhx, vhy = uhx, vhz = uhx;
-        for (int j = 0; j <= m; j++) {
-            for (int i = 0, p = off + j * row; i <= n; i++, p += 3) {
-                if (i < n) {
-                    double x = n * (net[p + 3] - net[p]), y = n * (net[p + 4] - net[p + 1]), z = n * (net[p + 5] - net[p + 2]);
-                    if (x < ulx) ulx = x;
-                    if (x > uhx) uhx = x;
-                    if (y < uly) uly = y;
-                    if (y > uhy) uhy = y;
-                    if (z < ulz) ulz = z;
-                    if (z > uhz) uhz = z;
-                }
-                if (j < m) {
-                    int q = p + row;
-                    double x = m * (net[q] - net[p]), y = m * (net[q + 1] - net[p + 1]), z = m * (net[q + 2] - net[p + 2]);
-                    if (x < vlx) vlx = x;
-                    if (x > vhx) vhx = x;
-                    if (y < vly) vly = y;
-                    if (y > vhy) vhy = y;
-                    if (z < vlz) vlz = z;
-                    if (z > vhz) vhz = z;
-                }
+        midRange(net, off, row, n, m + 1, 3, n, rec, o + A);
+        midRange(net, off, row, n + 1, m, row, m, rec, o + B);
+    }
+
+    /**
+     * Per coordinate, the middle of the range of {@code deg·(net[p + step] − net[p])} over the
+     * {@code columns × rows} points {@code p} from {@code net[off]} (rows {@code row} doubles apart), into
+     * {@code rec[at .. at+3)}, in one pass. (Comparisons, not Math.min and Math.max: the net is
+     * finite, and the two differ only on NaN and on the order of ±0.)
+     */
+    private static void midRange(double[] net, int off, int row, int columns, int rows, int step, int deg,
+                                 double[] rec, int at) {
+        double lx = Double.POSITIVE_INFINITY, ly = lx, lz = lx, hx = Double.NEGATIVE_INFINITY, hy = hx, hz = hx;
+        for (int j = 0; j < rows; j++) {
+            for (int i = 0, p = off + j * row; i < columns; i++, p += 3) {
+                double x = deg * (net[p + step] - net[p]), y = deg * (net[p + step + 1] - net[p + 1]);
+                double z = deg * (net[p + step + 2] - net[p + 2]);
+                if (x < lx) lx = x;
+                if (x > hx) hx = x;
+                if (y < ly) ly = y;
+                if (y > hy) hy = y;
+                if (z < lz) lz = z;
+                if (z > hz) hz = z;
             }
         }
-        rec[o + A] = 0.5 * (ulx + uhx);
-        rec[o + A + 1] = 0.5 * (uly + uhy);
-        rec[o + A + 2] = 0.5 * (ulz + uhz);
-        rec[o + B] = 0.5 * (vlx + vhx);
-        rec[o + B + 1] = 0.5 * (vly + vhy);
-        rec[o + B + 2] = 0.5 * (vlz + vhz);
+        rec[at] = 0.5 * (lx + hx);
+        rec[at + 1] = 0.5 * (ly + hy);
+        rec[at + 2] = 0.5 * (lz + hz);
     }
 
     /** {@code |deg·(net[q] − net[p]) − rec[axis..axis+3)|²}. */

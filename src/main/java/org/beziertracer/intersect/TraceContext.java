@@ -128,8 +128,6 @@ public final class TraceContext {
     public long solverCalls, clipIterations;
     /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
     long anyRootsByNewton;
-    /** Shadow rays whose own leaf {@link OriginRoot} cleared without an evaluation. */
-    long originRootsBehind;
     /** Single-root leaves the winding test settled before Newton ran (the model's start outside the leaf). */
     long besideFirst;
 
