@@ -7,6 +7,7 @@ import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.intersect.SurfacePoint;
 import org.beziertracer.intersect.TraceContext;
+import org.beziertracer.math.Powers;
 import org.beziertracer.model.RenderSettings;
 
 /**
@@ -322,7 +323,7 @@ public final class WhittedTracer {
             }
             // Phong specular: reflect l about n, compare with the view direction v = -u
             double rdv = 2 * ndl * (nx * -ux + ny * -uy + nz * -uz) - (lx * -ux + ly * -uy + lz * -uz);
-            double spec = rdv > 0 && ks > 0 ? ks * Math.pow(rdv, shin) : 0;
+            double spec = rdv > 0 && ks > 0 ? ks * Powers.pow(rdv, shin) : 0;
             double diff = kd * ndl;
             sumR += lights[lo + 3] * (diff * cr + spec);
             sumG += lights[lo + 4] * (diff * cg + spec);
