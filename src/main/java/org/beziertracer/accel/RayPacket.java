@@ -82,10 +82,30 @@ public final class RayPacket {
      */
     public RayPacket of(double[] rays, int n) {
         clear();
-        for (int i = 0; i < n; i++) {
-            int o = 6 * i;
-            add(rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5]);
+        if (n == 0) {
+            return this;
         }
+        // add() per ray, its bounds in locals rather than in the arrays
+        double oxLo = rays[0], oyLo = rays[1], ozLo = rays[2], dxLo = rays[3], dyLo = rays[4], dzLo = rays[5];
+        double oxHi = oxLo, oyHi = oyLo, ozHi = ozLo, dxHi = dxLo, dyHi = dyLo, dzHi = dzLo;
+        boolean nan = false;
+        for (int o = 6; o < 6 * n; o += 6) {
+            double ox = rays[o], oy = rays[o + 1], oz = rays[o + 2];
+            double dx = rays[o + 3], dy = rays[o + 4], dz = rays[o + 5];
+            oxLo = ox < oxLo ? ox : oxLo; oxHi = ox > oxHi ? ox : oxHi;
+            oyLo = oy < oyLo ? oy : oyLo; oyHi = oy > oyHi ? oy : oyHi;
+            ozLo = oz < ozLo ? oz : ozLo; ozHi = oz > ozHi ? oz : ozHi;
+            dxLo = dx < dxLo ? dx : dxLo; dxHi = dx > dxHi ? dx : dxHi;
+            dyLo = dy < dyLo ? dy : dyLo; dyHi = dy > dyHi ? dy : dyHi;
+            dzLo = dz < dzLo ? dz : dzLo; dzHi = dz > dzHi ? dz : dzHi;
+            nan |= ox != ox | oy != oy | oz != oz | dx != dx | dy != dy | dz != dz;
+        }
+        oLo[0] = oxLo; oLo[1] = oyLo; oLo[2] = ozLo;
+        oHi[0] = oxHi; oHi[1] = oyHi; oHi[2] = ozHi;
+        dLo[0] = dxLo; dLo[1] = dyLo; dLo[2] = dzLo;
+        dHi[0] = dxHi; dHi[1] = dyHi; dHi[2] = dzHi;
+        this.rays = n;
+        spread = nan;
         return this;
     }
 
