@@ -165,8 +165,12 @@ final class BezierClipper {
      * {@code s} holds no root ({@link BoundaryWinding}).
      */
     private static boolean holdsNoRoot(TraceContext ctx, SubPatchTable tab, int s, double tolerance) {
-        return BoundaryWinding.holdsNoRoot(ctx, tab, s,
-                tolerance + 1e-13 * (Math.abs(ctx.ox) + Math.abs(ctx.oy) + Math.abs(ctx.oz)));
+        return BoundaryWinding.holdsNoRoot(ctx, tab, s, windingMargin(ctx, tolerance));
+    }
+
+    /** The winding test's margin: the tolerance and the rounding of the projection about the ray's origin. */
+    static double windingMargin(TraceContext ctx, double tolerance) {
+        return tolerance + 1e-13 * (Math.abs(ctx.ox) + Math.abs(ctx.oy) + Math.abs(ctx.oz));
     }
 
     /** {@link #intersect} without records: every leaf is searched, Newton starting at its corners' parallelogram. */

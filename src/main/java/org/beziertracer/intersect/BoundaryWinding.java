@@ -37,24 +37,48 @@ final class BoundaryWinding {
      * when that could not be settled within {@code eps}.
      */
     static boolean holdsNoRoot(TraceContext ctx, SubPatchTable tab, int s, double eps) {
-        int n = tab.degreeU[s], m = tab.degreeV[s], off = tab.netOffset[s], row = 3 * (n + 1);
-        int winding = 0;
-        // The border as a closed loop: v = 0 forwards, u = 1 forwards, v = 1 backwards, u = 0 backwards
-        for (int edge = 0; edge < 4; edge++) {
-            int deg = edge % 2 == 0 ? n : m, first, step;
-            switch (edge) {
-                case 0 -> { first = off; step = 3; }
-                case 1 -> { first = off + 3 * n; step = row; }
-                case 2 -> { first = off + row * m + 3 * n; step = -3; }
-                default -> { first = off + row * m; step = -row; }
-            }
-            int crossings = crossings(ctx, tab.nets, first, step, deg, eps);
-            if (crossings == UNSETTLED) {
-                return false;
-            }
-            winding += crossings;
+        return holdsNoRoot(ctx, tab.nets, tab.netOffset[s], tab.degreeU[s], tab.degreeV[s], eps);
+    }
+
+    /**
+     * {@link #holdsNoRoot(TraceContext, SubPatchTable, int, double)} for a piece of a patch proven
+     * single-root for the ray, its border given as four 3-D curves, each stored forwards (increasing
+     * parameter, {@code 3·(deg + 1)} doubles) at {@code curves[off + k·stride]}, {@code k} = 0..3:
+     * {@code v = v0} and {@code u = u1} (degrees {@code n} and {@code m}), then {@code v = v1} and
+     * {@code u = u0}, which the closed loop runs backwards.
+     */
+    static boolean bordersHoldNoRoot(TraceContext ctx, double[] curves, int off, int stride, int n, int m,
+                                     double eps) {
+        return windsZero(ctx, curves, off, 3, off + stride, 3, off + 2 * stride + 3 * n, -3,
+                off + 3 * stride + 3 * m, -3, n, m, eps);
+    }
+
+    /** The net at {@code net[off..]}: its border rows and columns, in loop order. */
+    private static boolean holdsNoRoot(TraceContext ctx, double[] net, int off, int n, int m, double eps) {
+        int row = 3 * (n + 1);
+        return windsZero(ctx, net, off, 3, off + 3 * n, row, off + row * m + 3 * n, -3, off + row * m, -row, n, m, eps);
+    }
+
+    /**
+     * True when the closed loop of the four curves {@code pts[f_k + i·s_k]} (degrees n, m, n, m)
+     * settles and its winding number about the ray is zero.
+     */
+    private static boolean windsZero(TraceContext ctx, double[] pts, int f0, int s0, int f1, int s1, int f2, int s2,
+                                     int f3, int s3, int n, int m, double eps) {
+        int c0 = crossings(ctx, pts, f0, s0, n, eps);
+        if (c0 == UNSETTLED) {
+            return false;
         }
-        return winding == 0;
+        int c1 = crossings(ctx, pts, f1, s1, m, eps);
+        if (c1 == UNSETTLED) {
+            return false;
+        }
+        int c2 = crossings(ctx, pts, f2, s2, n, eps);
+        if (c2 == UNSETTLED) {
+            return false;
+        }
+        int c3 = crossings(ctx, pts, f3, s3, m, eps);
+        return c3 != UNSETTLED && c0 + c1 + c2 + c3 == 0;
     }
 
     /** {@link #crossings} could not settle a piece. */

@@ -18,9 +18,13 @@ import org.beziertracer.math.HeapBytes;
  *
  * <p>The proof is the records' own, quarter by quarter: a quarter whose enclosure the ray misses
  * in {@code (tMin, tMax)} holds no root there; a quarter proven single-root whose Newton iteration
- * (confined to the quarter) converged holds that root and no other; when every quarter is settled
- * so, the nearest of their roots is the leaf's nearest. Anything else (a quarter not proven
- * single-root, a Newton attempt that failed) leaves the leaf to clipping, as before. The idea is
+ * (confined to the quarter) converged holds that root and no other; a single-root quarter where it
+ * did not converge, usually a quarter the ray passes beside, holds none when the image of its
+ * border does not wind around the ray ({@link BoundaryWinding}: the record's proof makes the
+ * ray-space map one-to-one on the quarter); when every quarter is settled so, the nearest of their
+ * roots is the leaf's nearest. Anything else (a quarter not proven
+ * single-root, a failed Newton attempt whose quarter the winding cannot prove empty) leaves the
+ * leaf to clipping, as before. The idea is
  * that of the clipping search's own split into halves (Nishita, Sederberg and Kakimoto 1990), taken
  * one level ahead with precomputed enclosures (K. Qin, M. Gong, G. Tong, "Fast ray tracing NURBS
  * surfaces", 1996).
@@ -113,6 +117,11 @@ final class LeafQuarters {
             double u0 = records[o + NewtonLeafRecords.U0], u1 = u0 + records[o + NewtonLeafRecords.DU];
             double v0 = records[o + NewtonLeafRecords.V0], v1 = v0 + records[o + NewtonLeafRecords.DV];
             if (!BezierClipper.newtonIn(ctx, tab, tab.parent[s], u0, u1, v0, v1, ctx.clip[0], ctx.clip[1], tolerance)) {
+                // Usually a quarter the ray passes beside, within its enclosure: the winding of its
+                // border proves it empty, else the leaf is left to clipping
+                if (holdsNoRoot(ctx, tab, s, q, tolerance)) {
+                    continue;
+                }
                 return UNDECIDED;
             }
             if (ctx.rootT > tMin && ctx.rootT < bestT) {
@@ -129,6 +138,68 @@ final class LeafQuarters {
         ctx.rootU = bestU;
         ctx.rootV = bestV;
         return ROOT;
+    }
+
+    /**
+     * Quarter {@code q} of leaf {@code s}, proven single-root for the ray by its record, provably
+     * holds no root: the image of its border does not wind around the ray ({@link BoundaryWinding};
+     * the record's proof, that of {@link RootUniqueness} with the record's balls, makes the ray-space
+     * map one-to-one on the quarter as it does on a leaf).
+     */
+    private static boolean holdsNoRoot(TraceContext ctx, SubPatchTable tab, int s, int q, double tolerance) {
+        ctx.quarterWindings++;
+        borders(tab, s, q, ctx.arena);
+        return BoundaryWinding.bordersHoldNoRoot(ctx, ctx.arena, 0, BORDER, tab.degreeU[s], tab.degreeV[s],
+                BezierClipper.windingMargin(ctx, tolerance));
+    }
+
+    /**
+     * The border of quarter {@code q} of leaf {@code s} as {@link BoundaryWinding#bordersHoldNoRoot}
+     * takes it, its curves at {@code out[k·BORDER]} ({@code v = v0}, {@code u = u1}, {@code v = v1},
+     * {@code u = u0}); uses {@code out[0 .. 6·BORDER)}.
+     */
+    static void borders(SubPatchTable tab, int s, int q, double[] out) {
+        int n = tab.degreeU[s], m = tab.degreeV[s], uHalf = q & 1, vHalf = q >> 1, net = tab.netOffset[s];
+        // each the half of a leaf iso-curve at 0, ½ or 1
+        border(tab.nets, net, n, m, true, vHalf, uHalf, out, 0);
+        border(tab.nets, net, n, m, false, uHalf + 1, vHalf, out, BORDER);
+        border(tab.nets, net, n, m, true, vHalf + 1, uHalf, out, 2 * BORDER);
+        border(tab.nets, net, n, m, false, uHalf, vHalf, out, 3 * BORDER);
+    }
+
+    /** Doubles of one border curve in {@link #borders}' output. */
+    static final int BORDER = 3 * 2 * DeCasteljau.MAX_ORDER;
+
+    /**
+     * Into {@code out[at..]} (3-D points, forwards): half {@code half} (0: the first, 1: the second)
+     * of the leaf net's iso-curve {@code v = at2/2} along u ({@code alongU}) or {@code u = at2/2}
+     * along v, {@code at2} = 0, 1 or 2. The curve at ½ is the Bernstein sum across the net
+     * (weights {@code C(k, j)/2^k}: a convex combination, as de Casteljau's at ½, in {@code k + 1}
+     * multiply-adds a point instead of {@code k(k+1)/2} averages); the half is split from the curve
+     * by de Casteljau, in the arena past the four borders.
+     */
+    private static void border(double[] nets, int net, int n, int m, boolean alongU, int at2, int half,
+                               double[] out, int at) {
+        int deg = alongU ? n : m, across = alongU ? m : n;
+        int step = alongU ? 3 : 3 * (n + 1), acrossStep = alongU ? 3 * (n + 1) : 3;
+        double[] c = out;
+        int full = 4 * BORDER; // the whole iso-curve, then split into its halves
+        int first = net + (at2 == 0 ? 0 : at2 == 2 ? across * acrossStep : 0);
+        for (int i = 0; i <= deg; i++) {
+            int p = first + i * step, o = full + 3 * i;
+            if (at2 == 1) {
+                // w_j = C(across, j) / 2^across, exact in double (binomials of degree 15 and below)
+                double x = 0, y = 0, z = 0, w = Math.scalb(1.0, -across);
+                for (int j = 0, r = p; j <= across; j++, r += acrossStep) {
+                    x += w * nets[r]; y += w * nets[r + 1]; z += w * nets[r + 2];
+                    w = w * (across - j) / (j + 1);
+                }
+                c[o] = x; c[o + 1] = y; c[o + 2] = z;
+            } else {
+                c[o] = nets[p]; c[o + 1] = nets[p + 1]; c[o + 2] = nets[p + 2];
+            }
+        }
+        DeCasteljau.splitU(c, full, deg, 0, 3, 0.5, c, half == 0 ? at : full + BORDER, c, half == 0 ? full + BORDER : at);
     }
 
     /** Makes leaf {@code s}'s quarters unless they are made (a leaf with quarters, {@link #has}). */

@@ -130,6 +130,8 @@ public final class TraceContext {
     long anyRootsByNewton;
     /** Single-root leaves the winding test settled before Newton ran (the model's start outside the leaf). */
     long besideFirst;
+    /** Quarters of a leaf whose Newton attempt failed and the winding of their border was asked ({@link LeafQuarters}). */
+    long quarterWindings;
 
     TraceContext() {}
 

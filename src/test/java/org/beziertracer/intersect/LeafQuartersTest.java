@@ -37,6 +37,7 @@ class LeafQuartersTest {
         Random rnd = new Random(9_2026_12_03L);
         double[] e = new double[9], scratch = new double[DeCasteljau.SCRATCH_LENGTH];
         int tried = 0, settled = 0, roots = 0;
+        long windings = 0;
         for (List<BezierPatch> patches : RandomPatches.everyDegreeAndTheTeapot(rnd)) {
             LeafRays aimer = LeafRays.of(patches);
             SubPatchTable table = aimer.table;
@@ -75,6 +76,8 @@ class LeafQuartersTest {
                             roots++;
                         }
                     }
+                    windings += ctx.quarterWindings;
+                    ctx.quarterWindings = 0;
                     // and through the leaf solver, quarters and all
                     boolean fast = BezierClipper.intersect(ctx, table, aimer.records, null, quarters, s, 0,
                             Double.POSITIVE_INFINITY, tol);
@@ -88,6 +91,46 @@ class LeafQuartersTest {
         // (most asked leaves are the folded nets' and the grazing rays': hard for quarters too)
         assertTrue(settled > 3000 && roots > 0.3 * settled,
                 tried + " leaves asked, " + settled + " settled by their quarters, " + roots + " of them with a root");
+        // quarters whose Newton attempt failed were settled by their borders' winding on the way
+        assertTrue(windings > 500, windings + " quarters' windings asked");
+    }
+
+    /** A quarter's border is the border rows and columns of the quarter's net split from the leaf's. */
+    @Test
+    void aQuartersBorderIsTheBorderOfItsSplitNet() {
+        Random rnd = new Random(1203);
+        int len = TraceContext.NET_LENGTH;
+        double[] split = new double[4 * len], border = new double[6 * LeafQuarters.BORDER];
+        for (int trial = 0; trial < 60; trial++) {
+            int n = 1 + rnd.nextInt(15), m = 1 + rnd.nextInt(15);
+            BezierPatch patch = trial % 2 == 0 ? RandomPatches.heightField(rnd, n, m, 4, 0.5) : RandomPatches.wild(rnd, n, m, 4);
+            SubPatchTable table = SubPatchTable.build(List.of(patch), SplitOptions.defaults());
+            double size = table.diagonal[0];
+            for (int s = 0; s < table.count; s += 1 + table.count / 7) {
+                DeCasteljau.splitU(table.nets, table.netOffset[s], n, m, 3, 0.5, split, 0, split, len);
+                for (int q = 0; q < 4; q++) {
+                    DeCasteljau.splitV(split, (q & 1) * len, n, m, 3, 0.5, split, 2 * len, split, 3 * len);
+                    int quarter = (2 + (q >> 1)) * len, row = 3 * (n + 1);
+                    LeafQuarters.borders(table, s, q, border);
+                    String where = "degree " + n + "x" + m + ", leaf " + s + ", quarter " + q;
+                    for (int i = 0; i <= Math.max(n, m); i++) {
+                        for (int c = 0; c < 3; c++) {
+                            if (i <= n) { // v = v0 and v = v1, along u
+                                assertEquals(split[quarter + 3 * i + c], border[3 * i + c], 1e-13 * size, where);
+                                assertEquals(split[quarter + m * row + 3 * i + c], border[2 * LeafQuarters.BORDER + 3 * i + c],
+                                        1e-13 * size, where);
+                            }
+                            if (i <= m) { // u = u1 and u = u0, along v
+                                assertEquals(split[quarter + i * row + 3 * n + c], border[LeafQuarters.BORDER + 3 * i + c],
+                                        1e-13 * size, where);
+                                assertEquals(split[quarter + i * row + c], border[3 * LeafQuarters.BORDER + 3 * i + c],
+                                        1e-13 * size, where);
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 
     @Test
