@@ -18,7 +18,8 @@ import org.junit.jupiter.api.Test;
  * {@link BoundaryWinding}: a single-root leaf it declares empty holds no root (the reference
  * clipping search of the leaf, over every t, finds none), on seeded random wavy and folded nets
  * of degree 1..15 and the teapot, rays aimed at points near every leaf's border, inside and
- * outside it; and it declares empty most of the leaves such rays pass beside.
+ * outside it; and it declares empty nearly all of the leaves such rays pass beside (all but 0.2 %:
+ * at a depth of 6 halvings it left 0.8 % to clipping).
  */
 class BoundaryWindingTest {
 
@@ -75,7 +76,7 @@ class BoundaryWindingTest {
                 }
             }
         }
-        assertTrue(single > 5000 && besideDeclared > 0.5 * besideAndSingle, single + " single-root leaf tests, "
+        assertTrue(single > 5000 && besideDeclared > 0.998 * besideAndSingle, single + " single-root leaf tests, "
                 + declared + " declared empty; " + besideDeclared + " of " + besideAndSingle + " beside the ray");
     }
 
