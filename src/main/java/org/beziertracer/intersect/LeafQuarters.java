@@ -22,12 +22,11 @@ import org.beziertracer.math.HeapBytes;
  * did not converge, usually a quarter the ray passes beside, holds none when the image of its
  * border does not wind around the ray ({@link BoundaryWinding}: the record's proof makes the
  * ray-space map one-to-one on the quarter); when every quarter is settled so, the nearest of their
- * roots is the leaf's nearest. Anything else (a quarter not proven
- * single-root, a failed Newton attempt whose quarter the winding cannot prove empty) leaves the
- * leaf to clipping, as before. The idea is
- * that of the clipping search's own split into halves (Nishita, Sederberg and Kakimoto 1990), taken
- * one level ahead with precomputed enclosures (K. Qin, M. Gong, G. Tong, "Fast ray tracing NURBS
- * surfaces", 1996).
+ * roots is the leaf's nearest. Anything else (a quarter not proven single-root, a failed Newton
+ * attempt whose quarter the winding cannot prove empty) leaves the leaf to clipping, as before. The
+ * idea is that of the clipping search's own split into halves (Nishita, Sederberg and Kakimoto
+ * 1990), taken one level ahead with precomputed enclosures (K. Qin, M. Gong, G. Tong, "Fast ray
+ * tracing NURBS surfaces", 1996).
  *
  * <p>Only polynomial leaves above bicubic get quarters, in tables of at most {@link #MOST_LEAVES}
  * leaves (a record is 64 bytes, so a leaf's quarters take 256): on bicubic leaves, whose clipping
@@ -182,9 +181,8 @@ final class LeafQuarters {
                                double[] out, int at) {
         int deg = alongU ? n : m, across = alongU ? m : n;
         int step = alongU ? 3 : 3 * (n + 1), acrossStep = alongU ? 3 * (n + 1) : 3;
-        double[] c = out;
         int full = 4 * BORDER; // the whole iso-curve, then split into its halves
-        int first = net + (at2 == 0 ? 0 : at2 == 2 ? across * acrossStep : 0);
+        int first = net + (at2 == 2 ? across * acrossStep : 0);
         for (int i = 0; i <= deg; i++) {
             int p = first + i * step, o = full + 3 * i;
             if (at2 == 1) {
@@ -194,12 +192,13 @@ final class LeafQuarters {
                     x += w * nets[r]; y += w * nets[r + 1]; z += w * nets[r + 2];
                     w = w * (across - j) / (j + 1);
                 }
-                c[o] = x; c[o + 1] = y; c[o + 2] = z;
+                out[o] = x; out[o + 1] = y; out[o + 2] = z;
             } else {
-                c[o] = nets[p]; c[o + 1] = nets[p + 1]; c[o + 2] = nets[p + 2];
+                out[o] = nets[p]; out[o + 1] = nets[p + 1]; out[o + 2] = nets[p + 2];
             }
         }
-        DeCasteljau.splitU(c, full, deg, 0, 3, 0.5, c, half == 0 ? at : full + BORDER, c, half == 0 ? full + BORDER : at);
+        DeCasteljau.splitU(out, full, deg, 0, 3, 0.5, out, half == 0 ? at : full + BORDER, out,
+                half == 0 ? full + BORDER : at);
     }
 
     /** Makes leaf {@code s}'s quarters unless they are made (a leaf with quarters, {@link #has}). */
