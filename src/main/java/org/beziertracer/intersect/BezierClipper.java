@@ -150,10 +150,16 @@ final class BezierClipper {
             // Newton failed because there is nothing to find: the ray passes beside the leaf
             return false;
         }
-        if (!unique && ctx.anyHit && tab.trimTest == null && newtonFrom(ctx, tab, s, su, sv, tolerance)
-                && ctx.rootT > tMin && ctx.rootT < tMax) {
-            // An any-hit query needs a root, not the nearest: one that Newton finds in the leaf
-            // (its iterates confined to it) answers it, without the clipping search
+        // An any-hit query needs a root, not the nearest: one that Newton finds in the leaf (its
+        // iterates confined to it) answers it, without the clipping search. Not on the leaf the
+        // ray leaves from a start near the ray's origin: Newton there converges to the origin's
+        // own point, behind the ray
+        boolean anyByNewton = !unique && ctx.anyHit && tab.trimTest == null;
+        if (anyByNewton && s == ctx.originLeaf && !OriginLeaf.awayFromOrigin(ctx, tab, s, su, sv)) {
+            ctx.nearOriginStarts++;
+            anyByNewton = false;
+        }
+        if (anyByNewton && newtonFrom(ctx, tab, s, su, sv, tolerance) && ctx.rootT > tMin && ctx.rootT < tMax) {
             ctx.anyRootsByNewton++;
             return true;
         }

@@ -37,6 +37,9 @@ final class OriginLeaf {
      */
     static final double ROUNDING = 1e-9;
 
+    /** A Newton start on the ray's own leaf nearer than this to the origin's point is not tried ({@link #awayFromOrigin}). */
+    static final double NEAR_ORIGIN = 0.25;
+
     /** Leaves whose last test failed, remembered per thread (a power of two). */
     static final int MEMORY = 256;
     /** A remembered leaf is tested again on every this many rays that leave it. */
@@ -72,6 +75,18 @@ final class OriginLeaf {
     static void startAtOrigin(TraceContext ctx, SubPatchTable tab, int s) {
         ctx.clip[0] = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, true)));
         ctx.clip[1] = Math.min(1, Math.max(0, leafParameter(ctx, tab, s, false)));
+    }
+
+    /**
+     * Newton's start {@code (su, sv)} on leaf {@code s}, the leaf a shadow ray leaves, lies at least
+     * {@link #NEAR_ORIGIN} (in the leaf's parameters, summed over both) from the origin's point. From a nearer start
+     * Newton all but always converges to the origin's own root, behind the ray: counted on the
+     * curved patch's frame, 73,600 attempts from within that distance found 280 roots ahead, those
+     * from farther 10,670 roots in 41,000 (teapot: none in 20,300, 790 in 8,000).
+     */
+    static boolean awayFromOrigin(TraceContext ctx, SubPatchTable tab, int s, double su, double sv) {
+        double d = Math.abs(su - leafParameter(ctx, tab, s, true)) + Math.abs(sv - leafParameter(ctx, tab, s, false));
+        return !(d < NEAR_ORIGIN);
     }
 
     /** The origin's u ({@code alongU}) or v in leaf {@code s}'s own parameters (0..1 inside the leaf). */

@@ -20,7 +20,11 @@ import org.junit.jupiter.api.Test;
 class OriginLeafTest {
 
     /** What one scene's trials saw. */
-    record Tally(int rays, int proven, int ownLeafHits, int neighboursProven) {}
+    /**
+     * What one scene's trials saw; {@code nearOriginStarts}: any-hit Newton attempts on the ray's own
+     * leaf left out because they would start near its origin ({@link OriginLeaf#awayFromOrigin}).
+     */
+    record Tally(int rays, int proven, int ownLeafHits, int neighboursProven, long nearOriginStarts) {}
 
     /**
      * Rays at random points of {@code scene} from random directions; at each hit a shadow ray
@@ -84,7 +88,7 @@ class OriginLeafTest {
                 }
             }
         }
-        return new Tally(rays, proven, own, neighbours);
+        return new Tally(rays, proven, own, neighbours, ctx.nearOriginStarts);
     }
 
     @Test
@@ -99,6 +103,7 @@ class OriginLeafTest {
     void randomSurfacesOfDegreeOneToFifteenAreNeverWronglySkipped() {
         Random rnd = new Random(71);
         int proven = 0, own = 0;
+        long nearOrigin = 0;
         for (int degree = 1; degree <= 15; degree++) {
             int m = 1 + rnd.nextInt(degree);
             BezierPatch patch = switch (degree % 3) {
@@ -110,10 +115,13 @@ class OriginLeafTest {
             Tally t = check(new Scene(patches), rnd, 300, "degree " + degree + "x" + m);
             proven += t.proven();
             own += t.ownLeafHits();
+            nearOrigin += t.nearOriginStarts();
         }
         // Both kinds of leaf occur: proven ones, and ones the shadow ray does meet again
         assertTrue(proven > 50, "proofs: " + proven);
         assertTrue(own > 20, "shadow rays meeting their own leaf: " + own);
+        // ... and answers as the plain query although Newton's attempt near the origin was left out
+        assertTrue(nearOrigin > 200, "own leaves searched without that attempt: " + nearOrigin);
     }
 
     @Test
@@ -124,12 +132,15 @@ class OriginLeafTest {
         Random rnd = new Random(72);
         IntersectOptions whole = IntersectOptions.defaults().withSplit(SplitOptions.wholePatches());
         int own = 0;
+        long nearOrigin = 0;
         for (int trial = 0; trial < 40; trial++) {
             int n = 4 + rnd.nextInt(6), m = 4 + rnd.nextInt(6);
             Tally t = check(new Scene(List.of(bumpyDome(rnd, n, m))), whole, rnd, 150, "bumpy cap " + trial);
             own += t.ownLeafHits();
+            nearOrigin += t.nearOriginStarts();
         }
         assertTrue(own > 30, "shadow rays meeting their own leaf: " + own);
+        assertTrue(nearOrigin > 1000, "own leaves searched without Newton's attempt near the origin: " + nearOrigin);
     }
 
     @Test
