@@ -108,6 +108,12 @@ final class BezierClipper {
                              LeafQuarters quarters, int s, double tMin, double tMax, double tolerance) {
         int kind = NewtonSolver.MAYBE_SEVERAL;
         boolean besideFirst = false;
+        // The leaf a shadow ray leaves, proven single-root by the table's own test: its one root is
+        // the origin's point, behind the ray, and no record is read (nor any evaluation made)
+        boolean originSingle = s == ctx.originLeaf && RootUniqueness.atMostOneRoot(ctx, tab, s);
+        if (originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
+            return false;
+        }
         if (records == null) {
             cornerStart(ctx, tab, s);
         } else if ((kind = NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance))
@@ -117,10 +123,10 @@ final class BezierClipper {
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
         // they prove a single root, the table's own test need not run
         boolean polynomial = tab.patchDim[tab.parent[s]] == 3;
-        boolean unique = kind == NewtonSolver.SINGLE_ROOT && polynomial
+        boolean unique = originSingle || kind == NewtonSolver.SINGLE_ROOT && polynomial
                 || RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && s == ctx.originLeaf) {
-            if (OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
+            if (!originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
                 return false; // its one root is the origin's point, behind the ray: proven unevaluated
             }
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
