@@ -112,9 +112,14 @@ final class LeafQuarters {
                 continue;
             }
             int o = STRIDE * s + NewtonLeafRecords.STRIDE * q;
-            NewtonSolver.start(ctx, records, o, tMin, tMax, tolerance); // the start again, into ctx.clip
             double u0 = records[o + NewtonLeafRecords.U0], u1 = u0 + records[o + NewtonLeafRecords.DU];
             double v0 = records[o + NewtonLeafRecords.V0], v1 = v0 + records[o + NewtonLeafRecords.DV];
+            if (s == ctx.originLeaf && OriginRoot.behindIn(ctx, tab, tab.parent[s], u0, u1, v0, v1, tMin, tolerance)) {
+                // The quarter a shadow ray leaves from: its one root is the origin's point, behind the ray
+                ctx.originQuarters++;
+                continue;
+            }
+            NewtonSolver.start(ctx, records, o, tMin, tMax, tolerance); // the start again, into ctx.clip
             if (!BezierClipper.newtonIn(ctx, tab, tab.parent[s], u0, u1, v0, v1, ctx.clip[0], ctx.clip[1], tolerance)) {
                 // Usually a quarter the ray passes beside, within its enclosure: the winding of its
                 // border proves it empty, else the leaf is left to clipping

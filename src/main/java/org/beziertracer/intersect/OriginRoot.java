@@ -48,9 +48,21 @@ final class OriginRoot {
      * grazing ray, an origin too near the leaf's border).
      */
     static boolean behind(TraceContext ctx, SubPatchTable tab, int s, double tMin, double tolerance) {
-        int k = tab.parent[s];
+        int o = 4 * s;
+        return s == ctx.originLeaf
+                && behindIn(ctx, tab, tab.parent[s], tab.boxes[o], tab.boxes[o + 1], tab.boxes[o + 2], tab.boxes[o + 3],
+                        tMin, tolerance);
+    }
+
+    /**
+     * As {@link #behind}, for the piece {@code [uLo, uHi]×[vLo, vHi]} of patch {@code k} (the patch the
+     * context's any-hit ray leaves, from a point of that piece), proven single-root for the ray by
+     * the caller: a leaf, or a quarter of one ({@link LeafQuarters}).
+     */
+    static boolean behindIn(TraceContext ctx, SubPatchTable tab, int k, double uLo, double uHi, double vLo, double vHi,
+                            double tMin, double tolerance) {
         double curvature = tab.patchCurvature[k];
-        if (s != ctx.originLeaf || !ctx.originDerivatives || tab.patchDim[k] != 3 || !(curvature < Double.POSITIVE_INFINITY)
+        if (!ctx.originDerivatives || tab.patchDim[k] != 3 || !(curvature < Double.POSITIVE_INFINITY)
                 || !SurfaceParameters.unit(tab.patchDomain, k)) {
             return false;
         }
@@ -83,10 +95,9 @@ final class OriginRoot {
         if (!(q <= CONTRACTION)) {
             return false;
         }
-        // The ball ‖x − x0‖₁ ≤ r in the leaf, where the leaf's single root is the patch's only one
+        // The ball ‖x − x0‖₁ ≤ r in the piece, where the piece's single root is the patch's only one
         double u0 = ctx.originU, v0 = ctx.originV;
-        int o = 4 * s;
-        if (!(u0 - r >= tab.boxes[o] && u0 + r <= tab.boxes[o + 1] && v0 - r >= tab.boxes[o + 2] && v0 + r <= tab.boxes[o + 3])) {
+        if (!(u0 - r >= uLo && u0 + r <= uHi && v0 - r >= vLo && v0 + r <= vHi)) {
             return false;
         }
         // Distance along the ray of that root: the linear model at x1, then the bounds

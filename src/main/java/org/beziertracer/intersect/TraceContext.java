@@ -128,6 +128,8 @@ public final class TraceContext {
     public long solverCalls, clipIterations;
     /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
     long anyRootsByNewton;
+    /** Quarters of a shadow ray's own leaf cleared by {@link OriginRoot} ({@link LeafQuarters}). */
+    long originQuarters;
     /** Any-hit Newton attempts not made on the ray's own leaf, their start near its origin ({@link OriginLeaf#awayFromOrigin}). */
     long nearOriginStarts;
     /** Single-root leaves the winding test settled before Newton ran (the model's start outside the leaf). */

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
+import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
@@ -25,7 +26,11 @@ import org.junit.jupiter.api.Test;
 class OriginRootTest {
 
     /** What one scene's rays saw. */
-    record Tally(int rays, int cleared, int aheadOnOwnLeaf) {}
+    /**
+     * {@code quarters}: quarters of own leaves cleared so ({@link LeafQuarters}), in the renderer's
+     * queries; {@code checkedQuarters}: those the test cleared itself and searched on their own.
+     */
+    record Tally(int rays, int cleared, int aheadOnOwnLeaf, long quarters, int checkedQuarters) {}
 
     /** Shadow rays of {@link #check}: trial {@code trial}'s, or null when its camera ray missed. */
     interface Source {
@@ -46,7 +51,7 @@ class OriginRootTest {
         TraceContext ctx = si.newContext();
         Hit from = new Hit();
         SurfacePoint sp = new SurfacePoint();
-        int rays = 0, cleared = 0, ahead = 0;
+        int rays = 0, cleared = 0, ahead = 0, checked = 0;
         for (int trial = 0; trial < trials; trial++) {
             ShadowRays.ShadowRay sr = source.ray(si, ctx, rnd, trial, sp);
             if (sr == null) {
@@ -74,6 +79,34 @@ class OriginRootTest {
             plainCtx.tMin = 0;
             boolean meets = leaves.solve(plainCtx, from.subPatch, 0, far);
             ahead += meets ? 1 : 0;
+            // The same proof on each quarter of the leaf that its record proves single-root (as
+            // LeafQuarters asks it): the clipping search on the quarter alone, a patch of its own,
+            // finds no root ahead in a quarter it clears
+            LeafQuarters quarters = LeafQuarters.of(tab);
+            int k = tab.parent[from.subPatch];
+            if (quarters != null && LeafQuarters.has(tab, k)) {
+                quarters.ensure(probe, tab, from.subPatch);
+                for (int q = 0; q < 4; q++) {
+                    int o = LeafQuarters.STRIDE * from.subPatch + NewtonLeafRecords.STRIDE * q;
+                    float[] rec = quarters.records;
+                    double u0 = rec[o + NewtonLeafRecords.U0], u1 = u0 + rec[o + NewtonLeafRecords.DU];
+                    double v0 = rec[o + NewtonLeafRecords.V0], v1 = v0 + rec[o + NewtonLeafRecords.DV];
+                    if (NewtonSolver.start(probe, rec, o, 0, far, tolerance) != NewtonSolver.SINGLE_ROOT
+                            || !OriginRoot.behindIn(probe, tab, k, u0, u1, v0, v1, 0, tolerance)) {
+                        continue;
+                    }
+                    int n = tab.patchDegreeU[k], m = tab.patchDegreeV[k];
+                    double[] net = new double[3 * (n + 1) * (m + 1)];
+                    DeCasteljau.subPatch(tab.patchNets, tab.patchNetOffset[k], n, m, 3, u0, u1, v0, v1, net, 0);
+                    SceneIntersector alone = SceneIntersector.build(new Scene(List.of(new BezierPatch(n, m, net))),
+                            IntersectOptions.defaults().withSplit(SplitOptions.wholePatches()));
+                    Hit there = new Hit();
+                    int quarter = q;
+                    assertFalse(alone.closestHit(alone.newContext(), ox, oy, oz, lx, ly, lz, 0, far, there),
+                            () -> ray + ": cleared quarter " + quarter + ", which the ray meets at t = " + there.t);
+                    checked++;
+                }
+            }
             if (behind) {
                 cleared++;
                 boolean unique = RootUniqueness.atMostOneRoot(plainCtx, tab, from.subPatch);
@@ -83,13 +116,14 @@ class OriginRootTest {
                 assertTrue(leaves.solve(plainCtx, from.subPatch, -far, 0), () -> ray + ": no root behind the origin");
             }
         }
-        return new Tally(rays, cleared, ahead);
+        return new Tally(rays, cleared, ahead, ctx.originQuarters, checked);
     }
 
     @Test
     void randomSurfacesOfDegreeOneToFifteen() {
         Random rnd = new Random(91);
         int rays = 0, cleared = 0, ahead = 0;
+        long quarters = 0, checked = 0;
         for (int degree = 1; degree <= 15; degree++) {
             int m = 1 + rnd.nextInt(15);
             List<BezierPatch> patches = new ArrayList<>();
@@ -102,10 +136,14 @@ class OriginRootTest {
             rays += t.rays();
             cleared += t.cleared();
             ahead += t.aheadOnOwnLeaf();
+            quarters += t.quarters();
+            checked += t.checkedQuarters();
         }
         // The proof holds for most rays, and rays that meet their own leaf again occur
         assertTrue(cleared > rays / 2, "cleared " + cleared + " of " + rays);
         assertTrue(ahead > 20, "rays meeting their own leaf ahead: " + ahead);
+        assertTrue(quarters > 50, "quarters of own leaves cleared: " + quarters);
+        assertTrue(checked > 500, "cleared quarters searched on their own: " + checked);
     }
 
     @Test
@@ -113,13 +151,16 @@ class OriginRootTest {
         Random rnd = new Random(92);
         IntersectOptions whole = IntersectOptions.defaults().withSplit(SplitOptions.wholePatches());
         int cleared = 0, ahead = 0;
+        long quarters = 0;
         for (int trial = 0; trial < 40; trial++) {
             int n = 4 + rnd.nextInt(6), m = 4 + rnd.nextInt(6);
             Tally t = check(new Scene(List.of(OriginLeafTest.bumpyDome(rnd, n, m))), whole, rnd, 150, "bumpy cap " + trial);
             cleared += t.cleared();
             ahead += t.aheadOnOwnLeaf();
+            quarters += t.quarters();
         }
         assertTrue(cleared > 100, "cleared " + cleared);
+        assertTrue(quarters > 10, "quarters of own leaves cleared: " + quarters);
         assertTrue(ahead > 30, "rays meeting their own leaf ahead: " + ahead);
     }
 
