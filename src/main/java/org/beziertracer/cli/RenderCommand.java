@@ -350,6 +350,9 @@ final class RenderCommand implements Callable<Integer> {
         m.put("shadowRays", last.stats().shadowRays());
         m.put("secondaryRays", last.stats().secondaryRays());
         m.put("totalRays", last.stats().totalRays());
+        m.put("solverCalls", last.stats().work().solverCalls());
+        m.put("clipSteps", last.stats().work().clipSteps());
+        m.put("patchEvaluations", last.stats().work().evaluations());
         m.put("buildMillis", round(job.intersector().buildMillis()));
         m.put("frameMillis", Arrays.stream(frameMillis).map(RenderCommand::round).toArray());
         m.put("renderMillis", round(median));

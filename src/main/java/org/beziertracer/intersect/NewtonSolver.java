@@ -250,6 +250,7 @@ final class NewtonSolver {
         double previous = Double.POSITIVE_INFINITY;
         for (int step = 0; step <= MAX_STEPS; step++) {
             RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
+            ctx.evaluations++;
             double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
             double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz, f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;
             ctx.rootU = u;

@@ -114,6 +114,7 @@ abstract class PatchLeaves implements Leaves {
             e = ctx.eval;
             ctx.evalPatch = -1;
             RationalDeCasteljau.pointAndDerivatives(table.patchNets, off, n, m, dim, u, v, e, ctx.scratch);
+            ctx.evaluations++;
         }
         double du = plain ? 1 : 1 / (domain[4 * k + 1] - domain[4 * k]);
         double dv = plain ? 1 : 1 / (domain[4 * k + 3] - domain[4 * k + 2]);

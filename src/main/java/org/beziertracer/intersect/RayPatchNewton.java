@@ -116,6 +116,7 @@ final class RayPatchNewton {
      */
     private static void evaluate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v) {
         RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, ctx.eval, ctx.scratch);
+        ctx.evaluations++;
         takeIterate(ctx, u, v);
     }
 
@@ -214,6 +215,7 @@ final class RayPatchNewton {
         double[] g = ctx.refineEval;
         RationalDeCasteljau.pointAndDerivatives(net, table.patchNetOffset[k], table.patchDegreeU[k],
                 table.patchDegreeV[k], table.patchDim[k], u, v, g, ctx.scratch);
+        ctx.evaluations++;
         qx = g[0] - ctx.ox; qy = g[1] - ctx.oy; qz = g[2] - ctx.oz;
         double g1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;
         double g2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;

@@ -126,6 +126,12 @@ public final class TraceContext {
 
     /** Counters for statistics (not reset by queries). */
     public long solverCalls, clipIterations;
+    /**
+     * Evaluations of a patch with its first derivatives that the solvers and the surface point made
+     * (Newton's iterates, their refinement, a hit's point when no iterate stood there): with the
+     * counters above, the work of a frame, which repeats exactly where times do not.
+     */
+    public long evaluations;
     /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
     long anyRootsByNewton;
     /** Quarters of a shadow ray's own leaf cleared by {@link OriginRoot} ({@link LeafQuarters}). */

@@ -1,14 +1,23 @@
 package org.beziertracer.render;
 
 /**
- * Ray counts and time of one render (a generation), cumulative up to the pass reported.
+ * Ray counts, work counts and time of one render (a generation), cumulative up to the pass reported.
  *
  * @param primaryRays   camera rays
  * @param shadowRays    shadow (any-hit) rays
  * @param secondaryRays reflected and refracted rays
  * @param millis        wall-clock time since the render started
+ * @param work          what the intersector did for those rays
  */
-public record FrameStats(long primaryRays, long shadowRays, long secondaryRays, double millis) {
+public record FrameStats(long primaryRays, long shadowRays, long secondaryRays, double millis, Work work) {
+
+    /**
+     * The intersector's work: leaf-solver calls, Bézier clipping steps and patch evaluations (with
+     * first derivatives). On one thread they repeat exactly from run to run, where times on a shared
+     * machine do not, so a change's effect can be counted; on several threads a little of the work
+     * (which proofs a thread skips after they failed for it lately) depends on how the tiles fell.
+     */
+    public record Work(long solverCalls, long clipSteps, long evaluations) {}
 
     public long totalRays() { return primaryRays + shadowRays + secondaryRays; }
 

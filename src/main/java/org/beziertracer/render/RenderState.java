@@ -13,6 +13,7 @@ final class RenderState {
     final FrameSink sink;
     final ProgressCounter progress;
     final LongAdder primaryRays = new LongAdder(), shadowRays = new LongAdder(), secondaryRays = new LongAdder();
+    final LongAdder solverCalls = new LongAdder(), clipSteps = new LongAdder(), evaluations = new LongAdder();
     private final AtomicInteger currentGeneration;
     final long startNanos = System.nanoTime();
     volatile Throwable failure;
@@ -38,6 +39,7 @@ final class RenderState {
 
     FrameStats stats() {
         return new FrameStats(primaryRays.sum(), shadowRays.sum(), secondaryRays.sum(),
-                (System.nanoTime() - startNanos) / 1e6);
+                (System.nanoTime() - startNanos) / 1e6,
+                new FrameStats.Work(solverCalls.sum(), clipSteps.sum(), evaluations.sum()));
     }
 }

@@ -84,6 +84,7 @@ final class RenderWorker {
         tracer.primaryRays = 0;
         tracer.shadowRays = 0;
         tracer.secondaryRays = 0;
+        tracer.addWork(st);
         if (display && st.sink.wantsTiles() && !st.isStale()) {
             if (argb.length < w * h) {
                 argb = new int[st.job.options().tileSize() * st.job.options().tileSize()];

@@ -106,6 +106,16 @@ public final class WhittedTracer {
 
     public long primaryRays() { return primaryRays; }
 
+    /** Adds the intersector's work since the last call to {@code st}'s counters, and starts counting again. */
+    void addWork(RenderState st) {
+        st.solverCalls.add(ctx.solverCalls);
+        st.clipSteps.add(ctx.clipIterations);
+        st.evaluations.add(ctx.evaluations);
+        ctx.solverCalls = 0;
+        ctx.clipIterations = 0;
+        ctx.evaluations = 0;
+    }
+
     public long shadowRays() { return shadowRays; }
 
     public long secondaryRays() { return secondaryRays; }

@@ -37,8 +37,8 @@ class RenderCommandTest {
         assertEquals(1, lines.length, r.out());
         JsonObject json = JsonParser.parseString(lines[0]).getAsJsonObject();
         for (String key : new String[] {"width", "height", "spp", "threads", "method", "bvh", "primaryRays", "shadowRays",
-                "secondaryRays", "totalRays", "buildMillis", "frameMillis", "renderMillis", "mraysPerSecond",
-                "subPatches", "bvhNodes"}) {
+                "secondaryRays", "totalRays", "solverCalls", "clipSteps", "patchEvaluations", "buildMillis", "frameMillis",
+                "renderMillis", "mraysPerSecond", "subPatches", "bvhNodes"}) {
             assertTrue(json.has(key), "missing " + key + " in " + lines[0]);
         }
         assertEquals(80, json.get("width").getAsInt());
@@ -51,6 +51,31 @@ class RenderCommandTest {
         try (var files = Files.list(dir)) {
             assertEquals(1, files.count(), "no temporary file left behind");
         }
+    }
+
+    @Test
+    void theWorkCountsRepeatExactlyOnOneThreadAndTrianglesMakeNoPatchWork() {
+        // The work a frame makes (leaf-solver calls, clipping steps, patch evaluations) is the
+        // measure that does not swing with the machine: on one thread it repeats to the unit
+        String[] exact = {"render", "curved", "-o", dir.resolve("c.png").toString(), "--size", "120x90", "--stats",
+                "--threads", "1", "--eye", "-4.5,-5,2.5", "--target", "0,0,0.6", "--light", "-2,-4,5"};
+        JsonObject a = stats(run(exact)), b = stats(run(exact));
+        for (String key : new String[] {"solverCalls", "clipSteps", "patchEvaluations"}) {
+            assertTrue(a.get(key).getAsLong() > 0, key + " counted: " + a);
+            assertEquals(a.get(key).getAsLong(), b.get(key).getAsLong(), key + " repeats");
+        }
+        // Each hit of the curved patch costs at least one evaluation, a shadow ray's own leaf often none
+        assertTrue(a.get("patchEvaluations").getAsLong() > a.get("primaryRays").getAsLong() / 10, a.toString());
+        JsonObject mesh = stats(run("render", "curved", "-o", dir.resolve("m.png").toString(), "--size", "120x90",
+                "--stats", "--threads", "1", "--tessellate", "8"));
+        assertEquals(0, mesh.get("patchEvaluations").getAsLong(), "triangles: " + mesh);
+        assertEquals(0, mesh.get("clipSteps").getAsLong(), "triangles: " + mesh);
+    }
+
+    private static JsonObject stats(Run r) {
+        assertEquals(0, r.code(), r.err());
+        String[] lines = r.out().strip().split("\n");
+        return JsonParser.parseString(lines[lines.length - 1]).getAsJsonObject();
     }
 
     @Test
