@@ -78,13 +78,7 @@ final class RenderWorker {
                 }
             }
         }
-        st.primaryRays.add(tracer.primaryRays);
-        st.shadowRays.add(tracer.shadowRays);
-        st.secondaryRays.add(tracer.secondaryRays);
-        tracer.primaryRays = 0;
-        tracer.shadowRays = 0;
-        tracer.secondaryRays = 0;
-        tracer.addWork(st);
+        tracer.addCounts(st);
         if (display && st.sink.wantsTiles() && !st.isStale()) {
             if (argb.length < w * h) {
                 argb = new int[st.job.options().tileSize() * st.job.options().tileSize()];

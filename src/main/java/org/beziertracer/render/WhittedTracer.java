@@ -106,14 +106,19 @@ public final class WhittedTracer {
 
     public long primaryRays() { return primaryRays; }
 
-    /** Adds the intersector's work since the last call to {@code st}'s counters, and starts counting again. */
-    void addWork(RenderState st) {
+    /**
+     * Adds the rays traced and the intersector's work since the last call to {@code st}'s counters,
+     * and starts counting again.
+     */
+    void addCounts(RenderState st) {
+        st.primaryRays.add(primaryRays);
+        st.shadowRays.add(shadowRays);
+        st.secondaryRays.add(secondaryRays);
         st.solverCalls.add(ctx.solverCalls);
         st.clipSteps.add(ctx.clipIterations);
         st.evaluations.add(ctx.evaluations);
-        ctx.solverCalls = 0;
-        ctx.clipIterations = 0;
-        ctx.evaluations = 0;
+        primaryRays = shadowRays = secondaryRays = 0;
+        ctx.solverCalls = ctx.clipIterations = ctx.evaluations = 0;
     }
 
     public long shadowRays() { return shadowRays; }
