@@ -110,7 +110,7 @@ final class BezierClipper {
         boolean besideFirst = false;
         // The leaf a shadow ray leaves, proven single-root by the table's own test: its one root is
         // the origin's point, behind the ray, and no record is read (nor any evaluation made)
-        boolean originSingle = s == ctx.originLeaf && RootUniqueness.atMostOneRoot(ctx, tab, s);
+        boolean own = s == ctx.originLeaf, originSingle = own && RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
             return false;
         }
@@ -123,9 +123,10 @@ final class BezierClipper {
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
         // they prove a single root, the table's own test need not run
         boolean polynomial = tab.patchDim[tab.parent[s]] == 3;
+        // (on the ray's own leaf the table's test has run above)
         boolean unique = originSingle || kind == NewtonSolver.SINGLE_ROOT && polynomial
-                || RootUniqueness.atMostOneRoot(ctx, tab, s);
-        if (unique && s == ctx.originLeaf) {
+                || !own && RootUniqueness.atMostOneRoot(ctx, tab, s);
+        if (unique && own) {
             if (!originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
                 return false; // its one root is the origin's point, behind the ray: proven unevaluated
             }
