@@ -36,6 +36,9 @@ import org.beziertracer.model.TrimRegion;
  * {@link #patchDomain}, {@link #patchTrim} and its whole net in {@link #nets} at
  * {@code patchNetOffset[k]} (padded to a multiple of 3 doubles), followed by its leaves' nets
  * when they are not the patch itself. {@link #patchNets} is the same array as {@link #nets}.
+ * A polynomial patch of degree up to {@link PowerForm#MAX_DEGREE}, in a scene of at most
+ * {@link #POWER_PATCHES} patches, also has its {@link PowerForm} there, after its net
+ * ({@link #patchPowerOffset}): the Newton iterations and the hit's evaluation use it.
  *
  * <p><b>Rational patches</b> keep Euclidean leaf nets and their weights in {@link #weights} (null
  * when no patch is rational); the whole patch's net is then homogeneous ({@link #patchDim} 4, see
@@ -65,7 +68,12 @@ public final class SubPatchTable {
     /** Retained bytes per leaf besides its net: parent, degrees, net offset, box, diagonal, uniqueness. */
     static final int LEAF_BYTES = 4 + 2 + 4 + 4 * 4 + 8 + HodographBounds.STRIDE * 8;
     /** Retained bytes per patch besides its net: offsets, degrees, first leaf, squared extent, dim, curvature, domain. */
-    static final int PATCH_BYTES = 4 + 4 + 4 + 4 + 8 + 4 + 4 + 4 * 8;
+    static final int PATCH_BYTES = 4 + 4 + 4 + 4 + 8 + 4 + 4 + 4 * 8 + 4;
+    /**
+     * Most patches whose tables keep their {@link PowerForm}s (a bicubic one is 384 bytes more): a
+     * single model of up to about 30,000 patches, as {@code ClippingLeaves} keeps its leaf records.
+     */
+    public static final int POWER_PATCHES = 1 << 15;
 
     private final List<BezierPatch> patches;
     private final SplitOptions options;
@@ -86,6 +94,8 @@ public final class SubPatchTable {
     public final double[] patchNets;
     /** Where patch {@code k}'s net starts in {@link #patchNets}. */
     public final int[] patchNetOffset;
+    /** Where patch {@code k}'s {@link PowerForm} starts in {@link #patchNets}; −1 when it has none. */
+    public final int[] patchPowerOffset;
     /** Degrees of patch {@code k}. */
     public final int[] patchDegreeU;
     public final int[] patchDegreeV;
@@ -136,6 +146,7 @@ public final class SubPatchTable {
         patchNets = nets;
         firstOf = new int[patchCount + 1];
         patchNetOffset = new int[patchCount];
+        patchPowerOffset = new int[patchCount];
         patchDegreeU = new int[patchCount];
         patchDegreeV = new int[patchCount];
         patchSquaredExtent = new double[patchCount];
@@ -187,7 +198,7 @@ public final class SubPatchTable {
         boolean rational = false;
         for (int k = 0; k < pieces.length; k++) {
             leaves += leafCount(pieces[k]);
-            doubles += regionLength(patches.get(k), pieces[k]);
+            doubles += regionLength(patches.get(k), pieces[k], pieces.length);
             rational |= patches.get(k).isRational();
         }
         SubPatchTable t = new SubPatchTable(patches, options, minSize, leaves, checkedLength(doubles), rational, trims);
@@ -196,7 +207,7 @@ public final class SubPatchTable {
             t.firstOf[k] = s;
             t.patchNetOffset[k] = off;
             s += leafCount(pieces[k]);
-            off += (int) regionLength(patches.get(k), pieces[k]);
+            off += (int) regionLength(patches.get(k), pieces[k], pieces.length);
         }
         t.firstOf[pieces.length] = s;
         IntStream fill = IntStream.range(0, pieces.length);
@@ -220,12 +231,22 @@ public final class SubPatchTable {
         return (d + 2) / 3 * 3;
     }
 
+    /** True when {@code patch}, in a scene of {@code patchCount} patches, keeps its {@link PowerForm}. */
+    static boolean hasPower(BezierPatch patch, int patchCount) {
+        return patchCount <= POWER_PATCHES && !patch.isRational() && PowerForm.has(patch.degreeU(), patch.degreeV());
+    }
+
+    /** Doubles of a patch's own net and its power form (when it has one) in {@link #nets}. */
+    private static long ownLength(BezierPatch patch, int patchCount) {
+        return patchLength(patch) + (hasPower(patch, patchCount) ? 3L * patch.pointCount() : 0);
+    }
+
     /**
-     * Doubles patch {@code patch} takes in {@link #nets}: its whole net, and its leaves' nets when
-     * they are not the patch itself ({@code pieces} non-null).
+     * Doubles patch {@code patch} takes in {@link #nets}: its whole net, its power form, and its
+     * leaves' nets when they are not the patch itself ({@code pieces} non-null).
      */
-    private static long regionLength(BezierPatch patch, PatchPieces pieces) {
-        return patchLength(patch) + (pieces == null ? 0 : 3L * patch.pointCount() * pieces.count());
+    private static long regionLength(BezierPatch patch, PatchPieces pieces, int patchCount) {
+        return ownLength(patch, patchCount) + (pieces == null ? 0 : 3L * patch.pointCount() * pieces.count());
     }
 
     private static int checkedLength(long doubles) {
@@ -265,7 +286,14 @@ public final class SubPatchTable {
         patchDomain[4 * k + 1] = d.u1();
         patchDomain[4 * k + 2] = d.v0();
         patchDomain[4 * k + 3] = d.v1();
-        int leafBase = off + (int) patchLength(patch);
+        int power = off + (int) patchLength(patch);
+        if (hasPower(patch, patches.size())) {
+            PowerForm.fromBezier(nets, off, n, m, nets, power);
+            patchPowerOffset[k] = power;
+        } else {
+            patchPowerOffset[k] = -1;
+        }
+        int leafBase = off + (int) ownLength(patch, patches.size());
         if (p != null) {
             System.arraycopy(p.nets(), 0, nets, leafBase, leaves * len);
         }
@@ -284,7 +312,7 @@ public final class SubPatchTable {
     private void fillLeaves(int k, PatchPieces p, int from, int to) {
         int n = patchDegreeU[k], m = patchDegreeV[k], points = (n + 1) * (m + 1), len = 3 * points;
         int off = patchNetOffset[k], s0 = firstOf[k];
-        int leafBase = off + (int) patchLength(patches.get(k));
+        int leafBase = off + (int) ownLength(patches.get(k), patches.size());
         double[] pieceBoxes = p == null ? WHOLE : p.boxes();
         double[] box = new double[6];
         for (int i = from; i < to; i++) {
@@ -401,7 +429,7 @@ public final class SubPatchTable {
                     ? PatchSplitter.resplit(now, options, minSize, w, boxes, firstOf[k], firstOf[k + 1]) : null;
             pieces[e] = kept(p != null ? p : PatchSplitter.split(now, options, trims[k], minSize, w));
             dLeaves[e] = leafCount(pieces[e]) - (firstOf[k + 1] - firstOf[k]);
-            dNets[e] = regionLength(list.get(k), pieces[e]) - (regionEnd(k) - patchNetOffset[k]);
+            dNets[e] = regionLength(list.get(k), pieces[e], list.size()) - (regionEnd(k) - patchNetOffset[k]);
             leaves += dLeaves[e];
             doubles += dNets[e];
         }
@@ -460,6 +488,7 @@ public final class SubPatchTable {
         for (int k = 0, e = 0; k < patchCount; k++) {
             t.firstOf[k] = firstOf[k] + shiftL;
             t.patchNetOffset[k] = patchNetOffset[k] + shiftN;
+            t.patchPowerOffset[k] = patchPowerOffset[k] < 0 ? -1 : patchPowerOffset[k] + shiftN;
             t.patchDegreeU[k] = patchDegreeU[k];
             t.patchDegreeV[k] = patchDegreeV[k];
             t.patchSquaredExtent[k] = patchSquaredExtent[k];
@@ -538,7 +567,7 @@ public final class SubPatchTable {
             BezierPatch patch = patches.get((int) ((long) k * n / samples));
             PatchPieces p = kept(PatchSplitter.split(patch, options, minSize));
             leaves += leafCount(p);
-            regions += regionLength(patch, p);
+            regions += regionLength(patch, p, n);
             pieceDoubles += p != null ? p.nets().length + p.boxes().length : 0;
         }
         double scale = (double) n / samples;
@@ -552,10 +581,26 @@ public final class SubPatchTable {
     public long bytes() {
         return HeapBytes.of(parent) + HeapBytes.of(degreeU) + HeapBytes.of(degreeV) + HeapBytes.of(netOffset)
                 + HeapBytes.of(nets) + HeapBytes.of(boxes) + HeapBytes.of(diagonal) + HeapBytes.of(firstOf)
-                + HeapBytes.of(patchNetOffset) + HeapBytes.of(patchDegreeU) + HeapBytes.of(patchDegreeV)
+                + HeapBytes.of(patchNetOffset) + HeapBytes.of(patchPowerOffset) + HeapBytes.of(patchDegreeU)
+                + HeapBytes.of(patchDegreeV)
                 + HeapBytes.of(uniqueness) + HeapBytes.of(patchSquaredExtent) + HeapBytes.of(patchDim)
                 + HeapBytes.of(patchCurvature)
                 + HeapBytes.of(patchDomain) + HeapBytes.of(weights) + HeapBytes.of(trimTest);
+    }
+
+    /**
+     * {@code S}, {@code ∂S/∂u}, {@code ∂S/∂v} of patch {@code k} at {@code (u, v)} into
+     * {@code out[0..9)}: from its {@link PowerForm} when it has one, else by
+     * {@link RationalDeCasteljau#pointAndDerivatives} ({@code scratch} as that asks).
+     */
+    public void evaluatePatch(int k, double u, double v, double[] out, double[] scratch) {
+        int power = patchPowerOffset[k];
+        if (power >= 0) {
+            PowerForm.evaluateWithDerivatives(nets, power, patchDegreeU[k], patchDegreeV[k], u, v, out, 0);
+        } else {
+            RationalDeCasteljau.pointAndDerivatives(nets, patchNetOffset[k], patchDegreeU[k], patchDegreeV[k],
+                    patchDim[k], u, v, out, scratch);
+        }
     }
 
     /** Number of sub-patches of patch {@code index}. */

@@ -100,7 +100,7 @@ final class NewtonRefinement implements LeafCriterion {
         if (NewtonSolver.start(ctx, rec, 0, 0, Double.POSITIVE_INFINITY, tolerance) == NewtonSolver.MISS) {
             return false;
         }
-        return NewtonSolver.iterate(ctx, net, 0, n, m, 3, ctx.clip[0], ctx.clip[1], w, tolerance) == NewtonSolver.CONVERGED
+        return NewtonSolver.iterate(ctx, net, 0, -1, n, m, 3, ctx.clip[0], ctx.clip[1], w, tolerance) == NewtonSolver.CONVERGED
                 && Math.abs(ctx.rootU - s) <= AIM && Math.abs(ctx.rootV - t) <= AIM;
     }
 }

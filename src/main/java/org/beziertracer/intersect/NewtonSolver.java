@@ -1,5 +1,6 @@
 package org.beziertracer.intersect;
 
+import org.beziertracer.geometry.PowerForm;
 import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 
@@ -188,7 +189,8 @@ final class NewtonSolver {
             }
             w[TMIN] = tMin;
             w[TMAX] = bestT;
-            if (iterate(ctx, tab.patchNets, tab.patchNetOffset[k], tab.patchDegreeU[k], tab.patchDegreeV[k], tab.patchDim[k],
+            if (iterate(ctx, tab.patchNets, tab.patchNetOffset[k], tab.patchPowerOffset[k], tab.patchDegreeU[k],
+                    tab.patchDegreeV[k], tab.patchDim[k],
                     u0 + su * du, v0 + sv * dv, w, tolerance) == CONVERGED) {
                 double u = ctx.rootU, v = ctx.rootV;
                 if (u >= uLo && u <= uHi && v >= vLo && v <= vHi && ctx.rootT > tMin && ctx.rootT < bestT) {
@@ -237,19 +239,22 @@ final class NewtonSolver {
 
     /**
      * Newton iteration from {@code (u,v)} on the degree {@code n}×{@code m} net at
-     * {@code net[off..]}, within the domain, t range and root to avoid held in {@code w}
+     * {@code net[off..]} (evaluated from its {@link PowerForm} at {@code net[power..]} when
+     * {@code power ≥ 0}), within the domain, t range and root to avoid held in {@code w}
      * ({@link #setDomain}): {@link #CONVERGED} with the root in {@code ctx.rootU, rootV, rootT}, or
      * {@link #FAILED}. {@code ctx.eval} holds the last evaluation, at {@code ctx.evalU, evalV}
      * (the root itself unless the last step was taken unevaluated).
      */
-
-
-    static int iterate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v,
+    static int iterate(TraceContext ctx, double[] net, int off, int power, int n, int m, int dim, double u, double v,
                        double[] w, double tolerance) {
         double[] e = ctx.eval;
         double previous = Double.POSITIVE_INFINITY;
         for (int step = 0; step <= MAX_STEPS; step++) {
-            RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
+            if (power >= 0) {
+                PowerForm.evaluateWithDerivatives(net, power, n, m, u, v, e, 0);
+            } else {
+                RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, e, ctx.scratch);
+            }
             ctx.evaluations++;
             double qx = e[0] - ctx.ox, qy = e[1] - ctx.oy, qz = e[2] - ctx.oz;
             double f1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz, f2 = ctx.n2x * qx + ctx.n2y * qy + ctx.n2z * qz;

@@ -1,7 +1,6 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.PatchNormals;
-import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
 
@@ -113,7 +112,7 @@ abstract class PatchLeaves implements Leaves {
             // Not the solver's last evaluation at this hit: evaluate (same kernel, same result)
             e = ctx.eval;
             ctx.evalPatch = -1;
-            RationalDeCasteljau.pointAndDerivatives(table.patchNets, off, n, m, dim, u, v, e, ctx.scratch);
+            table.evaluatePatch(k, u, v, e, ctx.scratch);
             ctx.evaluations++;
         }
         double du = plain ? 1 : 1 / (domain[4 * k + 1] - domain[4 * k]);

@@ -10,7 +10,9 @@ import org.beziertracer.geometry.SubPatchTable;
  * surfaces", SIGGRAPH 1985). Works on the parent patch's own net, so a root is found to full
  * double precision whatever sub-patch produced the start. A rational patch is evaluated through
  * its homogeneous net with the exact rational Jacobian (the quotient rule,
- * {@link RationalDeCasteljau#evaluateWithDerivatives}); a polynomial one exactly as before.
+ * {@link RationalDeCasteljau#evaluateWithDerivatives}); a polynomial one up to degree 9 from its
+ * power form ({@link SubPatchTable#evaluatePatch}, {@link org.beziertracer.geometry.PowerForm}),
+ * above that by de Casteljau or the Bernstein sums.
  */
 final class RayPatchNewton {
     private RayPatchNewton() {}
@@ -35,15 +37,12 @@ final class RayPatchNewton {
      */
     static int solve(TraceContext ctx, SubPatchTable table, int k, double u, double v, int maxSteps,
                      double uLo, double uHi, double vLo, double vHi, double tolerance) {
-        double[] net = table.patchNets;
-        int off = table.patchNetOffset[k], n = table.patchDegreeU[k], m = table.patchDegreeV[k];
-        int dim = table.patchDim[k];
         double[] e = ctx.eval;
         double curvature = table.patchCurvature[k];
         ctx.evalPatch = k; // from here on ctx.eval holds S, Su, Sv of patch k at (ctx.evalU, ctx.evalV)
         for (int step = 0; step <= maxSteps; step++) {
             if (step > 0 || !fromOrigin(ctx, table, k, u, v)) {
-                evaluate(ctx, net, off, n, m, dim, u, v);
+                evaluate(ctx, table, k, u, v);
             }
             double f1 = ctx.residual1, f2 = ctx.residual2;
             if (Math.abs(f1) <= tolerance && Math.abs(f2) <= tolerance && step > 0) {
@@ -81,7 +80,7 @@ final class RayPatchNewton {
             }
             if (Math.abs(du) < 1e-15 && Math.abs(dv) < 1e-15) {
                 // one more evaluation at the final iterate for t
-                evaluate(ctx, net, off, n, m, dim, u, v);
+                evaluate(ctx, table, k, u, v);
                 return Math.abs(ctx.residual1) <= tolerance && Math.abs(ctx.residual2) <= tolerance
                         ? CONVERGED : DIVERGED;
             }
@@ -114,8 +113,8 @@ final class RayPatchNewton {
      * S, Su, Sv of the patch at {@code (u, v)} into {@code ctx.eval}; the iterate as the root so
      * far (u, v and its t along the ray) and its residuals to the ray's two planes.
      */
-    private static void evaluate(TraceContext ctx, double[] net, int off, int n, int m, int dim, double u, double v) {
-        RationalDeCasteljau.pointAndDerivatives(net, off, n, m, dim, u, v, ctx.eval, ctx.scratch);
+    private static void evaluate(TraceContext ctx, SubPatchTable table, int k, double u, double v) {
+        table.evaluatePatch(k, u, v, ctx.eval, ctx.scratch);
         ctx.evaluations++;
         takeIterate(ctx, u, v);
     }
@@ -211,10 +210,8 @@ final class RayPatchNewton {
         if (!(u >= uLo && u <= uHi && v >= vLo && v <= vHi)) {
             return;
         }
-        double[] net = table.patchNets;
         double[] g = ctx.refineEval;
-        RationalDeCasteljau.pointAndDerivatives(net, table.patchNetOffset[k], table.patchDegreeU[k],
-                table.patchDegreeV[k], table.patchDim[k], u, v, g, ctx.scratch);
+        table.evaluatePatch(k, u, v, g, ctx.scratch);
         ctx.evaluations++;
         qx = g[0] - ctx.ox; qy = g[1] - ctx.oy; qz = g[2] - ctx.oz;
         double g1 = ctx.n1x * qx + ctx.n1y * qy + ctx.n1z * qz;

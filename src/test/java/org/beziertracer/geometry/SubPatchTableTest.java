@@ -50,6 +50,7 @@ class SubPatchTableTest {
                     tab.patchNetOffset[k] + net.length), 0, "whole net of patch " + k);
             assertEquals(PatchNormals.squaredExtent(net, 0, patch.degreeU(), patch.degreeV()),
                     tab.patchSquaredExtent[k], 0);
+            assertPowerForm(patch, patches.size(), tab, k);
             double[] leafBounds = tab.bounds(s, pieces.count());
             for (int p = 0; p < pieces.count(); p++, s++) {
                 String where = "sub-patch " + s + " (patch " + k + " piece " + p + ")";
@@ -80,6 +81,36 @@ class SubPatchTableTest {
         assertEquals(HodographBounds.STRIDE * s, tab.uniqueness.length);
     }
 
+    /**
+     * Patch {@code k}'s {@link PowerForm} in {@code tab}: there, as {@link PowerForm#fromBezier}
+     * makes it, exactly when the patch is polynomial of degree up to 9 in a scene of at most
+     * {@link SubPatchTable#POWER_PATCHES} patches; and {@link SubPatchTable#evaluatePatch} is the
+     * patch itself, against de Casteljau.
+     */
+    static void assertPowerForm(BezierPatch patch, int patchCount, SubPatchTable tab, int k) {
+        int n = patch.degreeU(), m = patch.degreeV();
+        double[] net = patch.copyNet();
+        int power = tab.patchPowerOffset[k];
+        if (patchCount <= SubPatchTable.POWER_PATCHES && !patch.isRational() && Math.max(n, m) <= 9) {
+            double[] expected = new double[net.length];
+            PowerForm.fromBezier(net, 0, n, m, expected, 0);
+            assertTrue(power >= tab.patchNetOffset[k] + net.length, "patch " + k + "'s power form follows its net");
+            assertArrayEquals(expected, Arrays.copyOfRange(tab.nets, power, power + net.length), 0,
+                    "power form of patch " + k);
+        } else {
+            assertEquals(-1, power, "patch " + k + " has no power form");
+        }
+        double[] got = new double[9], want = new double[9], scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+        double size = TestNets.size(net, 0, net.length);
+        for (double[] uv : new double[][] {{0, 0}, {1, 1}, {0.3, 0.8}, {0.5, 0.5}, {0.9, 0.1}}) {
+            tab.evaluatePatch(k, uv[0], uv[1], got, scratch);
+            DeCasteljau.evaluateWithDerivatives(net, 0, n, m, uv[0], uv[1], want, scratch);
+            for (int c = 0; c < 9; c++) {
+                assertEquals(want[c], got[c], (c < 3 ? 1e-12 : 1e-10) * size, "patch " + k + " at " + Arrays.toString(uv));
+            }
+        }
+    }
+
     @Test
     void theArraysHoldEachPatchsPieces() {
         Random rnd = new Random(42);
@@ -108,10 +139,12 @@ class SubPatchTableTest {
         SubPatchTable tab = SubPatchTable.build(patches, SplitOptions.defaults());
         long expected = 0;
         for (int k = 0; k < patches.size(); k++) {
-            int len = 3 * patches.get(k).pointCount();
+            BezierPatch p = patches.get(k);
+            int len = 3 * p.pointCount();
             expected += tab.countOf(k) == 1 ? len : (long) len * (1 + tab.countOf(k));
+            expected += PowerForm.has(p.degreeU(), p.degreeV()) ? len : 0;
         }
-        assertEquals(expected, tab.nets.length, "whole nets plus the nets of split patches' leaves");
+        assertEquals(expected, tab.nets.length, "whole nets, power forms and the nets of split patches' leaves");
         assertTrue(tab.count > patches.size(), "some patches were split");
     }
 
@@ -121,7 +154,7 @@ class SubPatchTableTest {
         long expected = HeapBytes.array(tab.count, 4) * 2 + HeapBytes.array(tab.count, 1) * 2
                 + HeapBytes.array(4L * tab.count, 4) + HeapBytes.array(tab.count, 8)
                 + HeapBytes.array((long) HodographBounds.STRIDE * tab.count, 8) + HeapBytes.array(tab.nets.length, 8)
-                + HeapBytes.array(tab.patchCount() + 1, 4) + 5 * HeapBytes.array(tab.patchCount(), 4)
+                + HeapBytes.array(tab.patchCount() + 1, 4) + 6 * HeapBytes.array(tab.patchCount(), 4)
                 + HeapBytes.array(tab.patchCount(), 8) + HeapBytes.array(4L * tab.patchCount(), 8);
         assertEquals(expected, tab.bytes());
         long perLeaf = (tab.bytes() - HeapBytes.array(tab.nets.length, 8)) / tab.count;
@@ -194,11 +227,34 @@ class SubPatchTableTest {
                     int a = tab.patchNetOffset[k], b = edited.patchNetOffset[k];
                     int net = 3 * patches.get(k).pointCount();
                     int len = tab.countOf(k) == 1 ? net : net * (1 + tab.countOf(k));
+                    len += tab.patchPowerOffset[k] >= 0 ? net : 0;
                     assertArrayEquals(Arrays.copyOfRange(tab.nets, a, a + len), Arrays.copyOfRange(edited.nets, b, b + len),
                             0, "patch " + k);
                 }
             }
         }
+    }
+
+    /** A scene of more than {@link SubPatchTable#POWER_PATCHES} patches keeps no power forms (their memory). */
+    @Test
+    void aHugeSceneKeepsNoPowerForms() {
+        Random rnd = new Random(48);
+        List<BezierPatch> patches = new ArrayList<>();
+        for (int k = 0; k <= SubPatchTable.POWER_PATCHES; k++) {
+            patches.add(new BezierPatch(1, 1, TestNets.randomNet(rnd, 1, 1, 3, 1)));
+        }
+        SubPatchTable tab = SubPatchTable.build(patches, SplitOptions.defaults());
+        assertTrue(Arrays.stream(tab.patchPowerOffset).allMatch(o -> o == -1), "no power forms");
+        long nets = 0;
+        for (int k = 0; k < patches.size(); k++) {
+            nets += 12L * (tab.countOf(k) == 1 ? 1 : 1 + tab.countOf(k));
+        }
+        assertEquals(nets, tab.nets.length, "the nets alone");
+        assertPowerForm(patches.get(7), patches.size(), tab, 7);
+        List<BezierPatch> fewer = patches.subList(0, SubPatchTable.POWER_PATCHES);
+        SubPatchTable kept = SubPatchTable.build(fewer, SplitOptions.defaults());
+        assertTrue(Arrays.stream(kept.patchPowerOffset).allMatch(o -> o >= 0), "one patch fewer: every power form");
+        assertPowerForm(fewer.get(7), fewer.size(), kept, 7);
     }
 
     /** The corners of {@code p} with a bilinear net between them: flat, one leaf. */

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Random;
 
-import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.PatchDomain;
@@ -48,8 +47,7 @@ class OriginEvaluationTest {
             double u = piece ? SurfaceParameters.s(tab.patchDomain, 0, hit.u) : hit.u;
             double v = piece ? SurfaceParameters.t(tab.patchDomain, 0, hit.v) : hit.v;
             double[] fresh = new double[9];
-            RationalDeCasteljau.pointAndDerivatives(tab.patchNets, tab.patchNetOffset[0], n, m, tab.patchDim[0], u, v,
-                    fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
+            tab.evaluatePatch(0, u, v, fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
             // A shadow ray leaves the hit upward
             ctx.setRay(sp.px, sp.py, sp.pz + 1e-6, 0.3, 0.2, 1);
             ctx.leaving(hit.subPatch, hit.u, hit.v, sp, 0, 0, 1);
@@ -68,15 +66,13 @@ class OriginEvaluationTest {
             seeded += piece ? 0 : 1;
             // Elsewhere, or with no kept point, the patch is evaluated afresh: exactly
             double u2 = Math.min(1, u + 1e-3);
-            RationalDeCasteljau.pointAndDerivatives(tab.patchNets, tab.patchNetOffset[0], n, m, tab.patchDim[0], u2, v,
-                    fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
+            tab.evaluatePatch(0, u2, v, fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
             firstIterate(ctx, tab, u2, v);
             for (int c = 0; c < 9; c++) {
                 assertEquals(fresh[c], ctx.eval[c], 0, where + ": another point");
             }
             ctx.leaving(hit.subPatch, hit.u, hit.v, sp.px + 1, sp.py, sp.pz, 0, 0, 1);   // no derivatives kept
-            RationalDeCasteljau.pointAndDerivatives(tab.patchNets, tab.patchNetOffset[0], n, m, tab.patchDim[0], u, v,
-                    fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
+            tab.evaluatePatch(0, u, v, fresh, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
             firstIterate(ctx, tab, u, v);
             for (int c = 0; c < 9; c++) {
                 assertEquals(fresh[c], ctx.eval[c], 0, where + ": a point without derivatives");
@@ -96,8 +92,7 @@ class OriginEvaluationTest {
         SubPatchTable tab = ((PatchLeaves) si.leaves).table;
         TraceContext ctx = si.newContext();
         double[] corner = new double[9];
-        RationalDeCasteljau.pointAndDerivatives(tab.patchNets, tab.patchNetOffset[0], 3, 3, tab.patchDim[0], 0, 0,
-                corner, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
+        tab.evaluatePatch(0, 0, 0, corner, new double[org.beziertracer.geometry.DeCasteljau.SCRATCH_LENGTH]);
         SurfacePoint sp = new SurfacePoint();
         sp.px = corner[0]; sp.py = corner[1]; sp.pz = corner[2];
         sp.dpdux = corner[3]; sp.dpduy = corner[4]; sp.dpduz = corner[5];

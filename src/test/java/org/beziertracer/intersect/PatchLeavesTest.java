@@ -10,7 +10,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Random;
 
-import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.Scene;
@@ -106,8 +105,7 @@ class PatchLeavesTest {
             // (an earlier, farther hit on the same patch may have left its evaluation: then u, v differ)
             if (ctx.hitEvalPatch == hit.index && ctx.hitEvalU == hit.u && ctx.hitEvalV == hit.v) {
                 kept++;
-                RationalDeCasteljau.pointAndDerivatives(leaves.table.patchNets, leaves.table.patchNetOffset[0], 3, 3, 3,
-                        hit.u, hit.v, fresh, ctx.scratch);
+                leaves.table.evaluatePatch(0, hit.u, hit.v, fresh, ctx.scratch); // the solver's own kernel
                 assertArrayEquals(fresh, ctx.hitEval, "ray " + r);
             }
         }
