@@ -96,16 +96,18 @@ final class BezierClipper {
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics, int s,
                              double tMin, double tMax, double tolerance) {
-        return intersect(ctx, tab, records, quadratics, null, s, tMin, tMax, tolerance);
+        return intersect(ctx, tab, records, quadratics, null, null, s, tMin, tMax, tolerance);
     }
 
     /**
      * As {@link #intersect(TraceContext, SubPatchTable, float[], float[], int, double, double, double)};
      * with {@code quarters} (or null) a leaf its record cannot prove single-root is first tried
-     * quarter by quarter ({@link LeafQuarters}) before it is clipped.
+     * quarter by quarter ({@link LeafQuarters}) before it is clipped; with {@code slabs} (the
+     * leaves' {@link LeafSlabs}, or null) a leaf whose record the ray meets is rejected when the
+     * ray misses its slabs.
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics,
-                             LeafQuarters quarters, int s, double tMin, double tMax, double tolerance) {
+                             LeafQuarters quarters, float[] slabs, int s, double tMin, double tMax, double tolerance) {
         int kind = NewtonSolver.MAYBE_SEVERAL;
         boolean besideFirst = false;
         // The leaf a shadow ray leaves, proven single-root by the table's own test: its one root is
@@ -138,6 +140,12 @@ final class BezierClipper {
             besideFirst = !LeafQuadratics.start(ctx, quadratics, s) && LeafQuadratics.has(quadratics, s);
         }
         double su = ctx.clip[0], sv = ctx.clip[1]; // (the quarters' own starts overwrite ctx.clip)
+        // The leaf's slabs are tried where the ray would cost more than their test: before any
+        // search of a leaf that may hold several roots, and on a single-root one once Newton failed
+        // or its start lies outside (a leaf a ray hits pays nothing for them)
+        if (!unique && beside(ctx, slabs, own, s, tMin, tMax, tolerance)) {
+            return false;
+        }
         if (!unique && quarters != null) {
             int settled = quarters.solve(ctx, tab, s, tMin, tMax, tolerance);
             if (settled != LeafQuarters.UNDECIDED) {
@@ -145,7 +153,7 @@ final class BezierClipper {
             }
         }
         boolean windingFirst = besideFirst && polynomial;
-        if (windingFirst && holdsNoRoot(ctx, tab, s, tolerance)) {
+        if (windingFirst && (beside(ctx, slabs, own, s, tMin, tMax, tolerance) || holdsNoRoot(ctx, tab, s, tolerance))) {
             ctx.besideFirst++;
             return false;
         }
@@ -153,7 +161,8 @@ final class BezierClipper {
             // The whole leaf holds at most one root and Newton found it: no clipping at all
             return ctx.rootT > tMin && ctx.rootT < tMax;
         }
-        if (unique && !windingFirst && polynomial && holdsNoRoot(ctx, tab, s, tolerance)) {
+        if (unique && !windingFirst && (beside(ctx, slabs, own, s, tMin, tMax, tolerance)
+                || polynomial && holdsNoRoot(ctx, tab, s, tolerance))) {
             // Newton failed because there is nothing to find: the ray passes beside the leaf
             return false;
         }
@@ -171,6 +180,15 @@ final class BezierClipper {
             return true;
         }
         return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
+    }
+
+    /**
+     * The ray misses leaf {@code s}'s {@link LeafSlabs} (when there are slabs; never on the leaf a
+     * shadow ray leaves, whose slabs hold its origin) within {@code (tMin, tMax)}.
+     */
+    private static boolean beside(TraceContext ctx, float[] slabs, boolean own, int s, double tMin, double tMax,
+                                  double tolerance) {
+        return slabs != null && !own && LeafSlabs.misses(ctx, slabs, s, tMin, tMax, windingMargin(ctx, tolerance));
     }
 
     /**

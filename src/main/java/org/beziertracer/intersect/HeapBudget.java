@@ -41,6 +41,9 @@ public final class HeapBudget {
         boolean records = options.method() == Method.NEWTON
                 || options.method() == Method.CLIPPING && ClippingLeaves.hasRecords(table.leaves());
         long solverBytes = records ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
+        if (records && options.method() == Method.CLIPPING) {
+            solverBytes += 4L * LeafSlabs.STRIDE * table.leaves(); // clipping's slabs
+        }
         if (records && options.method() == Method.CLIPPING && patches.stream().anyMatch(
                 p -> !p.isRational() && LeafQuadratics.worthIt(p.degreeU(), p.degreeV()))) {
             // clipping's quadratic starts, a model for every leaf once a patch is above bicubic

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * {@link EditedLeafData}: after an edit, the solver's per-leaf data (Newton records, leaf
- * quadratics) with the untouched patches' data copied equals the data computed afresh for every
+ * quadratics, slabs) with the untouched patches' data copied equals the data computed afresh for every
  * leaf of the edited table, bit for bit: for edits that keep or change a patch's leaf count, one
  * patch or several, the first or the last, a degree-9 patch's hundreds of leaves (filled in
  * parallel chunks), and an edit that makes the first patch above bicubic.
@@ -42,6 +42,7 @@ class EditedLeafDataTest {
         List<BezierPatch> patches = scene(rnd);
         SubPatchTable before = SubPatchTable.build(patches, SplitOptions.defaults());
         float[] records = NewtonLeafRecords.build(before), quadratics = LeafQuadratics.build(before);
+        float[] slabs = LeafSlabs.build(before);
         assertNotNull(quadratics);
         int changedCount = 0;
         for (int trial = 0; trial < 24; trial++) {
@@ -60,6 +61,7 @@ class EditedLeafDataTest {
             String where = "trial " + trial;
             assertArrayEquals(NewtonLeafRecords.build(after), NewtonLeafRecords.edited(records, before, after, indices), where);
             assertArrayEquals(LeafQuadratics.build(after), LeafQuadratics.edited(quadratics, before, after, indices), where);
+            assertArrayEquals(LeafSlabs.build(after), LeafSlabs.edited(slabs, before, after, indices), where);
         }
         assertTrue(changedCount >= 4, "edits that change the leaf count: " + changedCount);
     }

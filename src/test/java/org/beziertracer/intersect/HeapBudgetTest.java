@@ -137,20 +137,22 @@ class HeapBudgetTest {
         }
         IntersectOptions clipping = IntersectOptions.defaults();
         SubPatchTable.Estimate table = SubPatchTable.estimate(teapot.patches(), clipping.split());
-        // Clipping below ClippingLeaves.RECORD_LEAVES and Newton add their per-leaf records (STRIDE floats each)
-        long records = 4L * NewtonLeafRecords.STRIDE * table.leaves();
+        // Clipping below ClippingLeaves.RECORD_LEAVES and Newton add their per-leaf records (STRIDE
+        // floats each), clipping its leaves' slabs too
+        long records = 4L * NewtonLeafRecords.STRIDE * table.leaves(), slabs = 4L * LeafSlabs.STRIDE * table.leaves();
         assertTrue(ClippingLeaves.hasRecords(table.leaves()));
-        assertEquals(table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + records,
+        assertEquals(table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + records + slabs,
                 HeapBudget.estimateBytes(teapot, clipping));
         IntersectOptions newton = clipping.withMethod(Method.NEWTON).withSplit(clipping.split());
-        assertEquals(HeapBudget.estimateBytes(teapot, clipping), HeapBudget.estimateBytes(teapot, newton));
+        assertEquals(HeapBudget.estimateBytes(teapot, clipping) - slabs, HeapBudget.estimateBytes(teapot, newton));
         // Subdivision keeps no records
         IntersectOptions subdivision = clipping.withMethod(Method.SUBDIVISION).withSplit(clipping.split());
-        assertEquals(records, HeapBudget.estimateBytes(teapot, clipping) - HeapBudget.estimateBytes(teapot, subdivision));
+        assertEquals(records + slabs, HeapBudget.estimateBytes(teapot, clipping) - HeapBudget.estimateBytes(teapot, subdivision));
         // Above bicubic, clipping also keeps a quadratic start a leaf (LeafQuadratics), Newton does not
         Scene wavy = new Scene(List.of(new BezierPatch(5, 5, wavyNet(5))));
         SubPatchTable.Estimate wavyTable = SubPatchTable.estimate(wavy.patches(), clipping.split());
-        assertEquals(table(wavyTable) + 4L * (NewtonLeafRecords.STRIDE + LeafQuadratics.STRIDE) * wavyTable.leaves(),
+        assertEquals(table(wavyTable) + 4L * (NewtonLeafRecords.STRIDE + LeafSlabs.STRIDE + LeafQuadratics.STRIDE)
+                * wavyTable.leaves(),
                 HeapBudget.estimateBytes(wavy, clipping));
         assertEquals(table(wavyTable) + 4L * NewtonLeafRecords.STRIDE * wavyTable.leaves(),
                 HeapBudget.estimateBytes(wavy, newton));
@@ -191,7 +193,8 @@ class HeapBudgetTest {
         assertTrue(!ClippingLeaves.hasRecords(leaves.count()), leaves.count() + " leaves built");
         assertEquals(leaves.table.bytes(), leaves.bytes());
         PatchLeaves small = PatchLeaves.build(Models.teapot(), clipping, 1);
-        assertEquals(small.table.bytes() + HeapBytes.array((long) NewtonLeafRecords.STRIDE * small.count(), 4), small.bytes());
+        assertEquals(small.table.bytes() + HeapBytes.array((long) NewtonLeafRecords.STRIDE * small.count(), 4)
+                + HeapBytes.array((long) LeafSlabs.STRIDE * small.count(), 4), small.bytes());
     }
 
     /** The refusal names the scene's patches (and the tessellation with its triangle count). */

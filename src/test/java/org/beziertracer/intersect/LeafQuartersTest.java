@@ -79,7 +79,7 @@ class LeafQuartersTest {
                     windings += ctx.quarterWindings;
                     ctx.quarterWindings = 0;
                     // and through the leaf solver, quarters and all
-                    boolean fast = BezierClipper.intersect(ctx, table, aimer.records, null, quarters, s, 0,
+                    boolean fast = BezierClipper.intersect(ctx, table, aimer.records, null, quarters, null, s, 0,
                             Double.POSITIVE_INFINITY, tol);
                     assertEquals(reference, fast, where);
                     if (fast) {
