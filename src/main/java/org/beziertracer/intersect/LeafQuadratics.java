@@ -1,7 +1,5 @@
 package org.beziertracer.intersect;
 
-import java.util.stream.IntStream;
-
 import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.RationalDeCasteljau;
 import org.beziertracer.geometry.SubPatchTable;
@@ -37,8 +35,6 @@ final class LeafQuadratics {
     static final int STRIDE = 18;
     /** Newton steps on the model. */
     static final int MODEL_STEPS = 4;
-    /** Leaves a task of the parallel {@link #build} fills. */
-    private static final int CHUNK = 4096;
 
     /** True when leaves of a degree {@code n}×{@code m} polynomial patch get a model. */
     static boolean worthIt(int n, int m) {
@@ -53,12 +49,7 @@ final class LeafQuadratics {
         if (!needed(table)) {
             return null;
         }
-        float[] out = new float[STRIDE * table.count];
-        int chunks = (table.count + CHUNK - 1) / CHUNK;
-        IntStream range = IntStream.range(0, chunks);
-        (chunks > 1 ? range.parallel() : range).forEach(c -> fill(table, out, c * CHUNK,
-                Math.min(table.count, (c + 1) * CHUNK)));
-        return out;
+        return EditedLeafData.built(table, STRIDE, LeafQuadratics::fill);
     }
 
     /** True when some leaf of {@code table} gets a model. */

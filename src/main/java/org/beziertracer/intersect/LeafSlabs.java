@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
-import java.util.stream.IntStream;
+import static org.beziertracer.accel.RayBox.down;
+import static org.beziertracer.accel.RayBox.up;
 
 import org.beziertracer.geometry.SubPatchTable;
 
@@ -36,16 +37,8 @@ final class LeafSlabs {
 
     /** The slabs of every leaf of {@code table}. */
     static float[] build(SubPatchTable table) {
-        float[] out = new float[STRIDE * table.count];
-        int chunks = (table.count + CHUNK - 1) / CHUNK;
-        IntStream range = IntStream.range(0, chunks);
-        (chunks > 1 ? range.parallel() : range).forEach(c -> fill(table, out, c * CHUNK,
-                Math.min(table.count, (c + 1) * CHUNK)));
-        return out;
+        return EditedLeafData.built(table, STRIDE, LeafSlabs::fill);
     }
-
-    /** Leaves a task of the parallel {@link #build} fills. */
-    private static final int CHUNK = 4096;
 
     /** The slabs of {@code after}, an edit of {@code before} in the patches {@code edited} ({@link EditedLeafData}). */
     static float[] edited(float[] old, SubPatchTable before, SubPatchTable after, int[] edited) {
@@ -101,16 +94,6 @@ final class LeafSlabs {
             out[o + RANGES + 2 * k] = down(lo - slack);
             out[o + RANGES + 2 * k + 1] = up(hi + slack);
         }
-    }
-
-    private static float down(double x) {
-        float f = (float) x;
-        return f > x ? Math.nextDown(f) : f;
-    }
-
-    private static float up(double x) {
-        float f = (float) x;
-        return f < x ? Math.nextUp(f) : f;
     }
 
     private static void cross(double[] a, double[] b, double[] out, int o) {
