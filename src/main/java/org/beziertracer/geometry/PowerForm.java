@@ -74,12 +74,15 @@ public final class PowerForm {
 
     /**
      * Writes the power form of the 3-D Bézier net at {@code net[off..]} (degrees {@code n}×{@code m},
-     * {@link #has}) to {@code out[outOff .. outOff + 3(n+1)(m+1))}.
+     * {@link #has}) to {@code out[outOff .. outOff + 3(n+1)(m+1))}; false when a coefficient is not
+     * finite (a net near the largest doubles: its sums overflow where de Casteljau's convex
+     * combinations do not), and the form must not be used.
      */
-    public static void fromBezier(double[] net, int off, int n, int m, double[] out, int outOff) {
+    public static boolean fromBezier(double[] net, int off, int n, int m, double[] out, int outOff) {
         double[] tu = TO_POWER[n], tv = TO_POWER[m];
         int rowLen = 3 * (n + 1);
         double[] rows = new double[rowLen * (m + 1)]; // each row in the power basis in x
+        boolean finite = true;
         for (int l = 0; l <= m; l++) {
             for (int i = 0; i <= n; i++) {
                 for (int c = 0; c < 3; c++) {
@@ -98,8 +101,10 @@ public final class PowerForm {
                     s += tv[l * (m + 1) + j] * rows[l * rowLen + q];
                 }
                 out[outOff + j * rowLen + q] = s;
+                finite &= Double.isFinite(s);
             }
         }
+        return finite;
     }
 
     /**

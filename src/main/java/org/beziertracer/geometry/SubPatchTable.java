@@ -287,10 +287,10 @@ public final class SubPatchTable {
         patchDomain[4 * k + 2] = d.v0();
         patchDomain[4 * k + 3] = d.v1();
         int power = off + (int) patchLength(patch);
-        if (hasPower(patch, patches.size())) {
-            PowerForm.fromBezier(nets, off, n, m, nets, power);
+        if (hasPower(patch, patches.size()) && PowerForm.fromBezier(nets, off, n, m, nets, power)) {
             patchPowerOffset[k] = power;
         } else {
+            // (a net so large that its power form overflows keeps de Casteljau; its room stays unused)
             patchPowerOffset[k] = -1;
         }
         int leafBase = off + (int) ownLength(patch, patches.size());

@@ -25,7 +25,7 @@ class PowerFormTest {
             int n = 1 + rnd.nextInt(PowerForm.MAX_DEGREE), m = 1 + rnd.nextInt(PowerForm.MAX_DEGREE);
             double scale = Math.pow(10, rnd.nextInt(5) - 2);
             double[] net = TestNets.randomNet(rnd, n, m, 3, scale), a = new double[net.length];
-            PowerForm.fromBezier(net, 0, n, m, a, 0);
+            assertTrue(PowerForm.fromBezier(net, 0, n, m, a, 0), "a finite form");
             double size = TestNets.size(net, 0, net.length);
             for (int k = 0; k < 12; k++) {
                 // the corners and edges too

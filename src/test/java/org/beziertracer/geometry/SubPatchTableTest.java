@@ -91,9 +91,9 @@ class SubPatchTableTest {
         int n = patch.degreeU(), m = patch.degreeV();
         double[] net = patch.copyNet();
         int power = tab.patchPowerOffset[k];
-        if (patchCount <= SubPatchTable.POWER_PATCHES && !patch.isRational() && Math.max(n, m) <= 9) {
-            double[] expected = new double[net.length];
-            PowerForm.fromBezier(net, 0, n, m, expected, 0);
+        double[] expected = new double[net.length];
+        if (patchCount <= SubPatchTable.POWER_PATCHES && !patch.isRational() && Math.max(n, m) <= 9
+                && PowerForm.fromBezier(net, 0, n, m, expected, 0)) {
             assertTrue(power >= tab.patchNetOffset[k] + net.length, "patch " + k + "'s power form follows its net");
             assertArrayEquals(expected, Arrays.copyOfRange(tab.nets, power, power + net.length), 0,
                     "power form of patch " + k);
@@ -233,6 +233,24 @@ class SubPatchTableTest {
                 }
             }
         }
+    }
+
+    /** A net near the largest doubles, whose power form overflows, keeps de Casteljau: its evaluation stays finite. */
+    @Test
+    void aNetWhosePowerFormOverflowsKeepsDeCasteljau() {
+        Random rnd = new Random(49);
+        BezierPatch huge = new BezierPatch(5, 5, TestNets.randomNet(rnd, 5, 5, 3, 1e307));
+        BezierPatch small = new BezierPatch(3, 3, TestNets.randomNet(rnd, 3, 3, 3, 1));
+        SubPatchTable tab = SubPatchTable.build(List.of(small, huge), SplitOptions.wholePatches());
+        assertEquals(-1, tab.patchPowerOffset[1], "no power form");
+        assertTrue(tab.patchPowerOffset[0] >= 0, "the small patch keeps its own");
+        double[] out = new double[9];
+        tab.evaluatePatch(1, 0.3, 0.6, out, new double[DeCasteljau.SCRATCH_LENGTH]);
+        for (double x : Arrays.copyOf(out, 3)) {
+            assertTrue(Double.isFinite(x), "a finite point: " + Arrays.toString(out));
+        }
+        assertPowerForm(small, 2, tab, 0);
+        assertPowerForm(huge, 2, tab, 1);
     }
 
     /** A scene of more than {@link SubPatchTable#POWER_PATCHES} patches keeps no power forms (their memory). */
