@@ -14,8 +14,8 @@ import org.beziertracer.math.Processor;
  * </pre>
  * (the derivatives in hodograph form) — six multiply-adds and three differences per control
  * point, where the tensor-product de Casteljau algorithm ({@link DeCasteljau#evaluateWithDerivatives})
- * needs {@code O(n²·m)}. The sums use {@link Processor#mad} (fused where the processor has the
- * instruction), and where it has 32 floating-point registers ({@link Processor#WIDE_REGISTER_FILE})
+ * needs {@code O(n²·m)}. The sums use {@link Processor#mad} (never fused: the same bits on every
+ * processor), and where it has 32 floating-point registers ({@link Processor#WIDE_REGISTER_FILE})
  * rows are summed two at a time, so that two rows' chains of dependent additions overlap: at degree 9
  * about 10 % less time than one row at a time with separate multiplies and adds on 16 registers
  * (AVX2), about 30 % less on 32 (AVX-512); two rows at a time would spill on 16.

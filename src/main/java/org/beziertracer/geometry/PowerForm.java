@@ -1,6 +1,6 @@
 package org.beziertracer.geometry;
 
-import static org.beziertracer.math.Processor.mad;
+import org.beziertracer.math.ScalarKernel;
 
 /**
  * A polynomial patch in the power basis about its parameter square's centre,
@@ -113,23 +113,8 @@ public final class PowerForm {
      */
     public static void evaluateWithDerivatives(double[] a, int off, int n, int m, double u, double v, double[] out,
                                                int outOff) {
-        double x = u - 0.5, y = v - 0.5;
-        int rowLen = 3 * (n + 1);
-        double sx = 0, sy = 0, sz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
-        for (int j = m, row = off + m * rowLen; j >= 0; j--, row -= rowLen) {
-            int p = row + 3 * n;
-            double rx = a[p], ry = a[p + 1], rz = a[p + 2], dx = 0, dy = 0, dz = 0;
-            for (int i = n - 1; i >= 0; i--) {
-                p -= 3;
-                dx = mad(dx, x, rx); dy = mad(dy, x, ry); dz = mad(dz, x, rz);
-                rx = mad(rx, x, a[p]); ry = mad(ry, x, a[p + 1]); rz = mad(rz, x, a[p + 2]);
-            }
-            vx = mad(vx, y, sx); vy = mad(vy, y, sy); vz = mad(vz, y, sz);
-            sx = mad(sx, y, rx); sy = mad(sy, y, ry); sz = mad(sz, y, rz);
-            ux = mad(ux, y, dx); uy = mad(uy, y, dy); uz = mad(uz, y, dz);
-        }
-        out[outOff] = sx; out[outOff + 1] = sy; out[outOff + 2] = sz;
-        out[outOff + 3] = ux; out[outOff + 4] = uy; out[outOff + 5] = uz;
-        out[outOff + 6] = vx; out[outOff + 7] = vy; out[outOff + 8] = vz;
+        // the same operations as every lane of a batch's SIMD evaluation (LaneKernel), so one ray
+        // alone and one ray of a batch get the same bits
+        ScalarKernel.powerFormAt(a, off, n, m, u, v, out, outOff, 1);
     }
 }

@@ -1,0 +1,79 @@
+package org.beziertracer.math;
+
+import java.util.Locale;
+
+/**
+ * Chooses the {@link LaneKernel} once, at start: the SIMD one when the JVM was started with the
+ * incubating Vector API ({@code java --add-modules jdk.incubator.vector …}, as the README's launch
+ * command and the packaged app do), the scalar one otherwise — the optional-provider pattern of
+ * Apache Lucene's {@code VectorizationProvider}. The system property {@code beziertracer.kernel}
+ * ({@code scalar} or {@code simd}) overrides the choice (the CLI's {@code --kernel}). Both kernels
+ * give the same bits, so the choice changes speed only.
+ */
+public final class Kernels {
+    private Kernels() {}
+
+    private static final String VECTOR_MODULE = "jdk.incubator.vector";
+    private static final LaneKernel VECTOR = loadVector();
+    private static final LaneKernel BEST = choose(System.getProperty("beziertracer.kernel"));
+
+    /** The kernel chosen at start. */
+    public static LaneKernel best() {
+        return BEST;
+    }
+
+    /** The plain-Java kernel (always there). */
+    public static LaneKernel scalar() {
+        return ScalarKernel.INSTANCE;
+    }
+
+    /** True when the JVM has the Vector API module (then {@link #named}{@code ("simd")} is the SIMD kernel). */
+    public static boolean vectorModulePresent() {
+        return VECTOR != null;
+    }
+
+    /**
+     * {@code "scalar"}, {@code "simd"} or {@code "auto"} (any case).
+     *
+     * @throws IllegalArgumentException when the name is unknown, or "simd" without the module (a
+     *                                  one-line message saying how to start Java)
+     */
+    public static LaneKernel named(String name) {
+        switch (name.toLowerCase(Locale.ROOT)) {
+            case "auto":
+                return VECTOR != null ? VECTOR : ScalarKernel.INSTANCE;
+            case "scalar":
+                return ScalarKernel.INSTANCE;
+            case "simd":
+                if (VECTOR == null) {
+                    throw new IllegalArgumentException("the SIMD kernel needs Java started with --add-modules "
+                            + VECTOR_MODULE);
+                }
+                return VECTOR;
+            default:
+                throw new IllegalArgumentException("kernel must be auto, scalar or simd, found \"" + name + "\"");
+        }
+    }
+
+    private static LaneKernel choose(String property) {
+        if (property != null) {
+            try {
+                return named(property);
+            } catch (IllegalArgumentException e) {
+                System.err.println("beziertracer.kernel: " + e.getMessage() + "; using " + named("auto").description());
+            }
+        }
+        return named("auto");
+    }
+
+    private static LaneKernel loadVector() {
+        if (ModuleLayer.boot().findModule(VECTOR_MODULE).isEmpty()) {
+            return null;
+        }
+        try {
+            return (LaneKernel) Class.forName("org.beziertracer.math.VectorKernel").getDeclaredConstructor().newInstance();
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            return null; // a JVM whose module cannot run here: the scalar kernel, which gives the same bits
+        }
+    }
+}
