@@ -240,6 +240,22 @@ public final class Bvh implements Accelerator {
         return PacketTraversal.closestHitIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
     }
 
+    /**
+     * Closest hits of all {@code n} rays of a packet this hierarchy {@linkplain #gather gathered},
+     * leaf by leaf: each leaf gets the lanes that reach it together ({@link LaneIntersector}); every
+     * lane gets the answer {@link #closestHitIn} gives it alone.
+     *
+     * @param rays          per lane {@code i}: origin and reciprocal direction at {@code rays[6i .. 6i+6)}
+     * @param tMax          per lane; lowered to each lane's closest hit
+     * @param live, reached scratch of at least {@code n} ints each
+     * @throws IllegalStateException when the packet was not gathered by this hierarchy
+     */
+    public <Q> void closestHitsIn(RayPacket packet, double[] rays, int n, double tMin, double[] tMax,
+            LaneIntersector<Q> leaf, Q query, int[] live, int[] reached) {
+        requireGathered(packet);
+        PacketTraversal.closestHitsIn(this, packet, rays, n, tMin, tMax, leaf, query, live, reached);
+    }
+
     @Override
     public <Q> boolean occludedIn(RayPacket packet, double ox, double oy, double oz, double invDx,
             double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {

@@ -169,6 +169,56 @@ final class PacketTraversal {
     }
 
     /**
+     * {@link #closestHitIn} for every ray of a gathered packet at once, leaf by leaf instead of ray
+     * by ray: at each listed leaf, the lanes whose {@code tMax} has not passed its least entry and
+     * whose own slab test passes are handed to the leaf together. Each lane meets the same leaves,
+     * in the same order, with the same {@code tMax} as {@link #closestHitIn} gives it alone (a
+     * lane's answer depends on nothing but its own ray and its own {@code tMax}), so the answers are
+     * the same; a leaf just sees the lanes that reach it side by side.
+     *
+     * @param rays  per lane {@code i}, its origin and reciprocal direction at {@code rays[6i .. 6i+6)}
+     * @param n     lanes
+     * @param tMax  per lane, lowered by the leaves' hits
+     * @param live, reached  scratch of at least {@code n} ints each
+     */
+    static <Q> void closestHitsIn(Bvh bvh, RayPacket p, double[] rays, int n, double tMin, double[] tMax,
+            LaneIntersector<Q> leaf, Q query, int[] live, int[] reached) {
+        final float[] b = bvh.nodeBounds;
+        final int[] nd = bvh.nodes;
+        final int[] prims = bvh.primIndices;
+        int liveCount = 0;
+        for (int i = 0; i < n; i++) {
+            live[liveCount++] = i;
+        }
+        for (int k = 0, count = p.leafCount; k < count && liveCount > 0; k++) {
+            float entry = p.leafEntry[k];
+            int kept = 0, reach = 0;
+            int node = p.leafNodes[k];
+            for (int j = 0; j < liveCount; j++) {
+                int i = live[j];
+                if (entry > tMax[i]) {
+                    continue; // this lane is done: every later leaf starts farther still
+                }
+                live[kept++] = i;
+                int o = 6 * i;
+                double invDx = rays[o + 3], invDy = rays[o + 4], invDz = rays[o + 5];
+                if (RayBox.slab(b, 6 * node, rays[o], rays[o + 1], rays[o + 2], invDx, invDy, invDz,
+                        RayBox.nearOffset(invDx), RayBox.nearOffset(invDy), RayBox.nearOffset(invDz), tMin, tMax[i])
+                        != MISS) {
+                    reached[reach++] = i;
+                }
+            }
+            liveCount = kept;
+            if (reach == 0) {
+                continue;
+            }
+            for (int q = nd[2 * node], end = q + nd[2 * node + 1]; q < end; q++) {
+                leaf.intersect(query, prims[q], reached, reach, tMax);
+            }
+        }
+    }
+
+    /**
      * {@link Bvh#occluded} for one ray of a gathered packet: the ray's own slab test on each listed
      * leaf, and the leaf's primitives where it passes, until one occludes.
      */

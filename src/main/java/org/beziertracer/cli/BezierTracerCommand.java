@@ -17,11 +17,21 @@ import picocli.CommandLine.Command;
  * launches the desktop app, and with one argument that names no command — a model or scene file,
  * or a built-in name — launches the desktop app on it.
  */
-@Command(name = "beziertracer", mixinStandardHelpOptions = true, version = "Bézier Tracer 0.1.0",
+@Command(name = "beziertracer", mixinStandardHelpOptions = true, versionProvider = BezierTracerCommand.Version.class,
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
                 + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
         subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class})
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
+
+    /** {@code --version}: the release, the Java that runs it, and which evaluation kernel runs. */
+    static final class Version implements picocli.CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] {"Bézier Tracer 0.1.0",
+                    "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vm.name") + ")",
+                    "kernel: " + org.beziertracer.math.Kernels.best().description()};
+        }
+    }
 
     /** Exit code for a headless machine asked to open the app. */
     public static final int EXIT_NO_DISPLAY = 3;

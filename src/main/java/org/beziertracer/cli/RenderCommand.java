@@ -1,5 +1,7 @@
 package org.beziertracer.cli;
 
+import org.beziertracer.math.Kernels;
+
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -87,6 +89,11 @@ final class RenderCommand implements Callable<Integer> {
                     + "surface (0 = exact, the default; at most 1024), same BVH and shading")
     int tessellate;
 
+    @Option(names = "--kernel", paramLabel = "auto|scalar|simd", defaultValue = "auto",
+            description = "evaluation kernel: SIMD needs Java started with --add-modules jdk.incubator.vector; "
+                    + "the picture is the same either way (default: ${DEFAULT-VALUE})")
+    String kernel;
+
     @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id", description = "shading mode")
     String shading;
 
@@ -142,7 +149,8 @@ final class RenderCommand implements Callable<Integer> {
         checkArguments();
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
-                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate);
+                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
+                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel));
         SceneDocument doc = SceneFiles.load(model);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
@@ -346,6 +354,7 @@ final class RenderCommand implements Callable<Integer> {
         m.put("tessellate", job.options().tessellate());
         m.put("shading", s.shading());
         m.put("shadows", s.shadows());
+        m.put("kernel", job.intersector().options().kernel().description());
         m.put("primaryRays", last.stats().primaryRays());
         m.put("shadowRays", last.stats().shadowRays());
         m.put("secondaryRays", last.stats().secondaryRays());
@@ -353,6 +362,7 @@ final class RenderCommand implements Callable<Integer> {
         m.put("solverCalls", last.stats().work().solverCalls());
         m.put("clipSteps", last.stats().work().clipSteps());
         m.put("patchEvaluations", last.stats().work().evaluations());
+        m.put("laneEvaluations", last.stats().work().laneEvaluations());
         m.put("buildMillis", round(job.intersector().buildMillis()));
         m.put("frameMillis", Arrays.stream(frameMillis).map(RenderCommand::round).toArray());
         m.put("renderMillis", round(median));

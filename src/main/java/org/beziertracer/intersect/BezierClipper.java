@@ -108,19 +108,39 @@ final class BezierClipper {
      */
     static boolean intersect(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics,
                              LeafQuarters quarters, float[] slabs, int s, double tMin, double tMax, double tolerance) {
+        int stage = begin(ctx, tab, records, quadratics, quarters, slabs, s, tMin, tMax, tolerance);
+        if (stage != NEWTON) {
+            return stage == HIT;
+        }
+        return afterNewton(ctx, tab, slabs, s, tMin, tMax, tolerance,
+                newtonFrom(ctx, tab, s, ctx.pendingSu, ctx.pendingSv, tolerance));
+    }
+
+    /** Outcomes of {@link #begin}: the leaf is settled (a miss, or a hit in {@code ctx.root*}), or Newton is next. */
+    static final int MISS = 0, HIT = 1, NEWTON = 2;
+
+    /**
+     * {@link #intersect} up to the Newton solve on a leaf proven single-root: returns {@link #MISS}
+     * or {@link #HIT} when the leaf is settled before it (the root in {@code ctx.root*}), or
+     * {@link #NEWTON} when {@link #newtonFrom} is next, from {@code (ctx.pendingSu, ctx.pendingSv)},
+     * its outcome then handed to {@link #afterNewton}. Split there so that a batch of rays can run
+     * the Newton solves of the lanes that reach the same leaf together ({@link NewtonLanes}).
+     */
+    static int begin(TraceContext ctx, SubPatchTable tab, float[] records, float[] quadratics,
+                     LeafQuarters quarters, float[] slabs, int s, double tMin, double tMax, double tolerance) {
         int kind = NewtonSolver.MAYBE_SEVERAL;
         boolean besideFirst = false;
         // The leaf a shadow ray leaves, proven single-root by the table's own test: its one root is
         // the origin's point, behind the ray, and no record is read (nor any evaluation made)
         boolean own = s == ctx.originLeaf, originSingle = own && RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
-            return false;
+            return MISS;
         }
         if (records == null) {
             cornerStart(ctx, tab, s);
         } else if ((kind = NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance))
                 == NewtonSolver.MISS) {
-            return false; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
+            return MISS; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
         }
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
         // they prove a single root, the table's own test need not run
@@ -130,7 +150,7 @@ final class BezierClipper {
                 || !own && RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (unique && own) {
             if (!originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
-                return false; // its one root is the origin's point, behind the ray: proven unevaluated
+                return MISS; // its one root is the origin's point, behind the ray: proven unevaluated
             }
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
         } else if (unique && quadratics != null) {
@@ -144,27 +164,26 @@ final class BezierClipper {
         // search of a leaf that may hold several roots, and on a single-root one once Newton failed
         // or its start lies outside (a leaf a ray hits pays nothing for them)
         if (!unique && beside(ctx, slabs, own, s, tMin, tMax, tolerance)) {
-            return false;
+            return MISS;
         }
         if (!unique && quarters != null) {
             int settled = quarters.solve(ctx, tab, s, tMin, tMax, tolerance);
             if (settled != LeafQuarters.UNDECIDED) {
-                return settled == LeafQuarters.ROOT;
+                return settled == LeafQuarters.ROOT ? HIT : MISS;
             }
         }
         boolean windingFirst = besideFirst && polynomial;
         if (windingFirst && (beside(ctx, slabs, own, s, tMin, tMax, tolerance) || holdsNoRoot(ctx, tab, s, tolerance))) {
             ctx.besideFirst++;
-            return false;
+            return MISS;
         }
-        if (unique && newtonFrom(ctx, tab, s, su, sv, tolerance)) {
-            // The whole leaf holds at most one root and Newton found it: no clipping at all
-            return ctx.rootT > tMin && ctx.rootT < tMax;
-        }
-        if (unique && !windingFirst && (beside(ctx, slabs, own, s, tMin, tMax, tolerance)
-                || polynomial && holdsNoRoot(ctx, tab, s, tolerance))) {
-            // Newton failed because there is nothing to find: the ray passes beside the leaf
-            return false;
+        if (unique) {
+            ctx.pendingSu = su;
+            ctx.pendingSv = sv;
+            ctx.pendingOwn = own;
+            ctx.pendingWindingFirst = windingFirst;
+            ctx.pendingPolynomial = polynomial;
+            return NEWTON;
         }
         // An any-hit query needs a root, not the nearest: one that Newton finds in the leaf (its
         // iterates confined to it) answers it, without the clipping search. Not on the leaf the
@@ -177,10 +196,31 @@ final class BezierClipper {
         }
         if (anyByNewton && newtonFrom(ctx, tab, s, su, sv, tolerance) && ctx.rootT > tMin && ctx.rootT < tMax) {
             ctx.anyRootsByNewton++;
-            return true;
+            return HIT;
         }
-        return clipLeaf(ctx, tab, s, unique, tMin, tMax, tolerance);
+        return clipLeaf(ctx, tab, s, false, tMin, tMax, tolerance) ? HIT : MISS;
     }
+
+    /**
+     * The rest of {@link #intersect} once the Newton solve that {@link #begin} asked for has run
+     * ({@code converged}: its root in {@code ctx.root*}): the root when it lies in
+     * {@code (tMin, tMax)}; when Newton failed, the slabs and the winding test prove the ray passes
+     * beside the leaf, or clipping searches it.
+     */
+    static boolean afterNewton(TraceContext ctx, SubPatchTable tab, float[] slabs, int s, double tMin, double tMax,
+                               double tolerance, boolean converged) {
+        if (converged) {
+            // The whole leaf holds at most one root and Newton found it: no clipping at all
+            return ctx.rootT > tMin && ctx.rootT < tMax;
+        }
+        if (!ctx.pendingWindingFirst && (beside(ctx, slabs, ctx.pendingOwn, s, tMin, tMax, tolerance)
+                || ctx.pendingPolynomial && holdsNoRoot(ctx, tab, s, tolerance))) {
+            // Newton failed because there is nothing to find: the ray passes beside the leaf
+            return false;
+        }
+        return clipLeaf(ctx, tab, s, true, tMin, tMax, tolerance);
+    }
+
 
     /**
      * The ray misses leaf {@code s}'s {@link LeafSlabs} (when there are slabs; never on the leaf a

@@ -56,6 +56,66 @@ final class ClippingLeaves extends PatchLeaves {
         return BezierClipper.intersect(ctx, table, records, quadratics, quarters, slabs, s, tMin, tMax, tolerance);
     }
 
+    /**
+     * The lanes of a batch that reach leaf {@code s}, in stages: each lane's cull and start
+     * ({@link BezierClipper#begin}); the Newton solves of the lanes whose leaf is proven single-root,
+     * all at once ({@link NewtonLanes}: their evaluations side by side in SIMD registers); then each
+     * of those lanes' refinement and, where Newton failed, the rest of its search
+     * ({@link BezierClipper#afterNewton}). Every lane's answer, and the work it counts, is what
+     * {@link #intersect(TraceContext, int, double)} gives it alone. On a patch without a power form
+     * (rational, above degree 9) each lane is solved alone.
+     */
+    @Override
+    public void intersect(TraceContext ctx, int s, int[] lanes, int count, double[] tMax) {
+        int k = table.parent[s];
+        if (table.patchPowerOffset[k] < 0 || ctx.originLeaf >= 0) {
+            super.intersect(ctx, s, lanes, count, tMax);
+            return;
+        }
+        RayBatch batch = ctx.batch;
+        NewtonLanes newton = ctx.newtonLanes;
+        newton.ensure(count);
+        float[] bx = table.boxes;
+        double u0 = bx[4 * s], u1 = bx[4 * s + 1], v0 = bx[4 * s + 2], v1 = bx[4 * s + 3];
+        int slots = 0;
+        // Cull and start, lane by lane
+        for (int j = 0; j < count; j++) {
+            int lane = lanes[j];
+            batch.load(ctx, lane);
+            ctx.solverCalls++;
+            int stage = BezierClipper.begin(ctx, table, records, quadratics, quarters, slabs, s, ctx.tMin, tMax[lane],
+                    tolerance);
+            if (stage == BezierClipper.NEWTON) {
+                newton.lane[slots] = lane;
+                newton.nextU[slots] = u0 + (u1 - u0) * ctx.pendingSu;
+                newton.nextV[slots] = v0 + (v1 - v0) * ctx.pendingSv;
+                newton.keepPending(ctx, slots++);
+            } else if (stage == BezierClipper.HIT) {
+                tMax[lane] = recordRoot(ctx, s);
+                batch.store(ctx, lane);
+            }
+        }
+        if (slots == 0) {
+            return;
+        }
+        // Newton on the single-root lanes together
+        newton.solve(ctx, ctx.kernel, batch, table, k, slots, BezierClipper.NEWTON_STEPS, u0, u1, v0, v1, tolerance);
+        // Each lane's refinement, or the rest of its search
+        for (int j = 0; j < slots; j++) {
+            int lane = newton.lane[j];
+            batch.load(ctx, lane);
+            newton.toContext(ctx, j, k);
+            boolean converged = newton.status[j] == RayPatchNewton.CONVERGED;
+            if (converged) {
+                RayPatchNewton.refine(ctx, table, k, u0, u1, v0, v1, tolerance);
+            }
+            if (BezierClipper.afterNewton(ctx, table, slabs, s, ctx.tMin, tMax[lane], tolerance, converged)) {
+                tMax[lane] = recordRoot(ctx, s);
+                batch.store(ctx, lane);
+            }
+        }
+    }
+
     @Override
     ClippingLeaves with(SubPatchTable edited, double editedTolerance) {
         return new ClippingLeaves(edited, editedTolerance);

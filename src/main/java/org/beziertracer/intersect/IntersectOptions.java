@@ -3,6 +3,8 @@ package org.beziertracer.intersect;
 import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.geometry.SplitOptions;
 import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.math.Kernels;
+import org.beziertracer.math.LaneKernel;
 
 /**
  * How a scene is intersected.
@@ -21,13 +23,19 @@ import org.beziertracer.geometry.Tessellator;
  *                   analytic vertex normals (the "fair comparator" of the exact path)
  */
 public record IntersectOptions(Method method, boolean bvh, SplitOptions split, BvhOptions bvhOptions,
-                               int tessellate) {
+                               int tessellate, LaneKernel kernel) {
 
     public IntersectOptions {
         if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
             throw new IllegalArgumentException("tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
                     + ", got " + tessellate);
         }
+        java.util.Objects.requireNonNull(kernel, "kernel");
+    }
+
+    /** With the kernel chosen at start ({@link Kernels#best}). */
+    public IntersectOptions(Method method, boolean bvh, SplitOptions split, BvhOptions bvhOptions, int tessellate) {
+        this(method, bvh, split, bvhOptions, tessellate, Kernels.best());
     }
 
     /** Exact mode with the default BVH options. */
@@ -42,17 +50,20 @@ public record IntersectOptions(Method method, boolean bvh, SplitOptions split, B
     /** Another method; split options that were this method's default become the new method's. */
     public IntersectOptions withMethod(Method m) {
         SplitOptions s = split.equals(method.defaultSplit()) ? m.defaultSplit() : split;
-        return new IntersectOptions(m, bvh, s, bvhOptions, tessellate);
+        return new IntersectOptions(m, bvh, s, bvhOptions, tessellate, kernel);
     }
 
-    public IntersectOptions withBvh(boolean on) { return new IntersectOptions(method, on, split, bvhOptions, tessellate); }
+    public IntersectOptions withBvh(boolean on) { return new IntersectOptions(method, on, split, bvhOptions, tessellate, kernel); }
 
-    public IntersectOptions withSplit(SplitOptions s) { return new IntersectOptions(method, bvh, s, bvhOptions, tessellate); }
+    public IntersectOptions withSplit(SplitOptions s) { return new IntersectOptions(method, bvh, s, bvhOptions, tessellate, kernel); }
 
-    public IntersectOptions withBvhOptions(BvhOptions o) { return new IntersectOptions(method, bvh, split, o, tessellate); }
+    public IntersectOptions withBvhOptions(BvhOptions o) { return new IntersectOptions(method, bvh, split, o, tessellate, kernel); }
 
     /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
-    public IntersectOptions withTessellate(int k) { return new IntersectOptions(method, bvh, split, bvhOptions, k); }
+    public IntersectOptions withTessellate(int k) { return new IntersectOptions(method, bvh, split, bvhOptions, k, kernel); }
+
+    /** The same options with another SIMD/scalar kernel (the same answers, another speed). */
+    public IntersectOptions withKernel(LaneKernel k) { return new IntersectOptions(method, bvh, split, bvhOptions, tessellate, k); }
 
     /** True in tessellated (triangle mesh) mode. */
     public boolean tessellated() { return tessellate > 0; }

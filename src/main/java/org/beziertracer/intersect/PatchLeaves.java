@@ -1,5 +1,6 @@
 package org.beziertracer.intersect;
 
+import org.beziertracer.accel.LaneIntersector;
 import org.beziertracer.geometry.PatchNormals;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
@@ -18,7 +19,7 @@ import org.beziertracer.model.Scene;
  *
  * <p>Immutable; shared by render threads, each with its own {@link TraceContext}.
  */
-abstract class PatchLeaves implements Leaves {
+abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
 
     /** Root-polish residual tolerance, as a fraction of the scene size. */
     static final double RELATIVE_TOLERANCE = 1e-12;
@@ -62,6 +63,11 @@ abstract class PatchLeaves implements Leaves {
         if (!solve(ctx, s, ctx.tMin, tMax)) {
             return tMax;
         }
+        return recordRoot(ctx, s);
+    }
+
+    /** Records the solver's root ({@code ctx.root*}) on leaf {@code s} as the best hit; returns its t. */
+    final double recordRoot(TraceContext ctx, int s) {
         int k = table.parent[s];
         ctx.recordHit(k, s);
         ctx.best.u = ctx.rootU;
@@ -70,6 +76,26 @@ abstract class PatchLeaves implements Leaves {
             ctx.keepEvaluationForHit();
         }
         return ctx.rootT;
+    }
+
+    /**
+     * Leaf {@code s} against the lanes {@code lanes[0..count)} of the context's {@link RayBatch}
+     * ({@link org.beziertracer.accel.LaneIntersector}): the same answers as {@link #intersect} for
+     * each lane alone. Here each lane is solved alone in turn; a solver with stages that run across
+     * lanes ({@link ClippingLeaves}) overrides it.
+     */
+    @Override
+    public void intersect(TraceContext ctx, int s, int[] lanes, int count, double[] tMax) {
+        RayBatch batch = ctx.batch;
+        for (int j = 0; j < count; j++) {
+            int lane = lanes[j];
+            batch.load(ctx, lane);
+            double t = intersect(ctx, s, tMax[lane]);
+            if (t < tMax[lane]) {
+                tMax[lane] = t;
+                batch.store(ctx, lane);
+            }
+        }
     }
 
     @Override

@@ -141,8 +141,8 @@ public final class SceneIntersector {
                 keep ? keptEdits + 1 : 0);
     }
 
-    /** A fresh per-thread context. */
-    public TraceContext newContext() { return new TraceContext(); }
+    /** A fresh per-thread context, with this snapshot's kernel ({@link IntersectOptions#kernel}). */
+    public TraceContext newContext() { return new TraceContext(options.kernel()); }
 
     /**
      * Closest hit of the ray {@code o + t d}, {@code tMin < t < tMax}. Fills {@code hit} and
@@ -183,6 +183,15 @@ public final class SceneIntersector {
         } else if (accel.primCount() > 0) {
             best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
         }
+        return finishClosestHit(ctx, tMin, best, hit);
+    }
+
+    /**
+     * The end of a closest-hit query whose patch leaves have been searched (the context holds the
+     * ray and its best patch hit): that hit, or a nearer plane or sphere, into {@code hit}.
+     */
+    private boolean finishClosestHit(TraceContext ctx, double tMin, double best, Hit hit) {
+        double ox = ctx.ox, oy = ctx.oy, oz = ctx.oz, dx = ctx.dx, dy = ctx.dy, dz = ctx.dz;
         boolean any = ctx.found;
         if (any) {
             hit.set(ctx.best);
@@ -220,6 +229,43 @@ public final class SceneIntersector {
             }
         }
         return any;
+    }
+
+    /**
+     * Closest hits of the {@code n} rays at {@code rays[6i .. 6i+6)} (origin, direction) on
+     * {@code (tMin, tMax)}, as one {@link RayBatch}: one traversal for all of them (the packet,
+     * {@code packet}, must hold the same rays and have been {@linkplain #gather gathered} for this
+     * snapshot; otherwise each ray is traced alone), each leaf solving the lanes that reach it
+     * together. Fills {@code hits[i]}, {@code found[i]} and, for each hit, its surface point
+     * {@code points[i]} ({@link #surfacePoint}); every answer is the one {@link
+     * #closestHit(TraceContext, RayPacket, double, double, double, double, double, double, double,
+     * double, Hit)} gives the ray alone, to the bit.
+     */
+    public void closestHits(TraceContext ctx, RayPacket packet, double[] rays, int n, double tMin, double tMax,
+                            Hit[] hits, boolean[] found, SurfacePoint[] points) {
+        if (packet == null || !packet.gatheredBy(accel) || !(accel instanceof Bvh bvh)
+                || !(leaves instanceof PatchLeaves lanes)) {
+            for (int i = 0; i < n; i++) {
+                int o = 6 * i;
+                found[i] = closestHit(ctx, packet, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4],
+                        rays[o + 5], tMin, tMax, hits[i]);
+                if (found[i]) {
+                    surfacePoint(ctx, hits[i], points[i]);
+                }
+            }
+            return;
+        }
+        RayBatch batch = ctx.batch;
+        batch.set(ctx, rays, n, tMin, tMax);
+        ctx.beginClosestHit(tMin);
+        bvh.closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, lanes, ctx, batch.live, batch.reached);
+        for (int i = 0; i < n; i++) {
+            batch.load(ctx, i, false);
+            found[i] = finishClosestHit(ctx, tMin, tMax, hits[i]);
+            if (found[i]) {
+                surfacePoint(ctx, hits[i], points[i]);
+            }
+        }
     }
 
     /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */

@@ -2,6 +2,8 @@ package org.beziertracer.intersect;
 
 import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.TrimCurves;
+import org.beziertracer.math.Kernels;
+import org.beziertracer.math.LaneKernel;
 
 /**
  * Per-thread scratch for ray queries: the current ray and its ray-space frame, the BVH stack,
@@ -92,6 +94,13 @@ public final class TraceContext {
     /** Tessellated mode: barycentric weights of the hit triangle's second and third corner. */
     double rootB1, rootB2;
 
+    /**
+     * A single-root leaf whose Newton solve {@link BezierClipper#begin} left for next: its start
+     * (leaf parameters) and what {@link BezierClipper#afterNewton} needs to know of the leaf.
+     */
+    double pendingSu, pendingSv;
+    boolean pendingOwn, pendingWindingFirst, pendingPolynomial;
+
     // A solver's search over the pieces of one leaf (BezierClipper, SubdivisionSolver): the
     // nearest root so far, in the solver's own parameters
     double pieceBestT, pieceBestU, pieceBestV;
@@ -132,6 +141,11 @@ public final class TraceContext {
      * counters above, the work of a frame, which repeats exactly where times do not.
      */
     public long evaluations;
+    /**
+     * Of those, the evaluations made for several lanes of a ray batch together ({@link NewtonLanes},
+     * in SIMD registers with the vector kernel).
+     */
+    public long laneEvaluations;
     /** Any-hit queries that Newton answered on a leaf that may hold several roots ({@link BezierClipper}). */
     long anyRootsByNewton;
     /** Quarters of a shadow ray's own leaf cleared by {@link OriginRoot} ({@link LeafQuarters}). */
@@ -143,7 +157,19 @@ public final class TraceContext {
     /** Quarters of a leaf whose Newton attempt failed and the winding of their border was asked ({@link LeafQuarters}). */
     long quarterWindings;
 
-    TraceContext() {}
+    /** The kernel that evaluates a batch's lanes together ({@link NewtonLanes}). */
+    final LaneKernel kernel;
+    /** The ray batch in flight ({@link SceneIntersector#closestHits}) and its Newton lanes. */
+    final RayBatch batch = new RayBatch();
+    final NewtonLanes newtonLanes = new NewtonLanes();
+
+    TraceContext() {
+        this(Kernels.best());
+    }
+
+    TraceContext(LaneKernel kernel) {
+        this.kernel = kernel;
+    }
 
     /** Squared direction lengths strictly between these take {@link #setRay}'s unscaled path. */
     static final double SQUARES_FROM = 1e-280, SQUARES_TO = 1e280;

@@ -11,7 +11,11 @@ package org.beziertracer.math;
  * <h2>Lanes</h2>
  * Inputs and outputs are structure-of-arrays: lane {@code i} of a quantity at {@code [i]}; a
  * quantity with several components at {@code out[c·stride + i]}. {@code count} lanes are computed,
- * from lane 0; the rest of the arrays is neither read nor written.
+ * from lane 0. The lanes after them, up to {@code count} rounded up to a multiple of {@link #lanes()},
+ * are scratch where the arrays have room for them (inputs shorter, or {@code stride} smaller, than
+ * that: they are neither read nor written): a kernel may fill whole registers there, on whatever
+ * the inputs hold, and write those lanes' meaningless results. Give the arrays that room when speed
+ * matters (a partial register costs a mask).
  *
  * <p>Implementations are stateless and thread-safe; they allocate nothing per call.
  */

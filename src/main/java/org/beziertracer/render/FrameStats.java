@@ -16,8 +16,10 @@ public record FrameStats(long primaryRays, long shadowRays, long secondaryRays, 
      * first derivatives). On one thread they repeat exactly from run to run, where times on a shared
      * machine do not, so a change's effect can be counted; on several threads a little of the work
      * (which proofs a thread skips after they failed for it lately) depends on how the tiles fell.
+     * {@code laneEvaluations}: those of the evaluations made for several lanes of a ray batch at
+     * once (SIMD registers with the vector kernel; the same count with either kernel).
      */
-    public record Work(long solverCalls, long clipSteps, long evaluations) {}
+    public record Work(long solverCalls, long clipSteps, long evaluations, long laneEvaluations) {}
 
     public long totalRays() { return primaryRays + shadowRays + secondaryRays; }
 

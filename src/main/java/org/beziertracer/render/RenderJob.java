@@ -57,7 +57,7 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
     /** The intersection options {@link #prepare} builds with: method and BVH from the settings, K from the options. */
     public static IntersectOptions intersectOptions(RenderSettings settings, RenderOptions options) {
         return IntersectOptions.defaults().withMethod(Method.parse(settings.method())).withBvh(settings.bvh())
-                .withTessellate(options.tessellate());
+                .withTessellate(options.tessellate()).withKernel(options.kernel());
     }
 
     /** {@link Camera#fit} of {@link #bounds(Scene)} with the default 40° field of view. */

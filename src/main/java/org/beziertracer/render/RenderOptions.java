@@ -1,5 +1,8 @@
 package org.beziertracer.render;
 
+import org.beziertracer.math.Kernels;
+import org.beziertracer.math.LaneKernel;
+
 import org.beziertracer.geometry.Tessellator;
 
 /**
@@ -21,9 +24,12 @@ import org.beziertracer.geometry.Tessellator;
  *                           uniform {@code K×K} grid of triangle pairs with analytic vertex normals
  *                           ({@link org.beziertracer.intersect.IntersectOptions#tessellate()}), through the
  *                           same BVH and shading
+ * @param kernel             the evaluation kernel of the intersector ({@link Kernels#best} unless chosen):
+ *                           SIMD or scalar, the same picture either way
  */
 public record RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
-                            double adaptiveThreshold, double minAttenuation, long seed, int tessellate) {
+                            double adaptiveThreshold, double minAttenuation, long seed, int tessellate,
+                            LaneKernel kernel) {
 
     public static final int MAX_THREADS = 256;
 
@@ -50,6 +56,14 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
             throw new IllegalArgumentException("tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
                     + ", got " + tessellate);
         }
+        java.util.Objects.requireNonNull(kernel, "kernel");
+    }
+
+    /** With the kernel chosen at start ({@link Kernels#best}). */
+    public RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
+                         double adaptiveThreshold, double minAttenuation, long seed, int tessellate) {
+        this(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate,
+                Kernels.best());
     }
 
     /** All processors, 32-pixel tiles, progressive, every pass shown, box filter, threshold 0.05, 1/256, exact. */
@@ -59,28 +73,34 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
     }
 
     public RenderOptions withThreads(int n) {
-        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
+        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
     }
 
     public RenderOptions withProgressive(boolean on) {
-        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
+        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
     }
 
     public RenderOptions withPassesPerFrame(int n) {
-        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
+        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
     }
 
     public RenderOptions withFilter(PixelFilter f) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
     }
 
     public RenderOptions withTileSize(int size) {
-        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate);
+        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
     }
 
     /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
     public RenderOptions withTessellate(int k) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k, kernel);
+    }
+
+    /** The same options with another evaluation kernel (the same picture, another speed). */
+    public RenderOptions withKernel(LaneKernel k) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
+                seed, tessellate, k);
     }
 
     /** True in tessellated (triangle mesh) mode. */

@@ -13,7 +13,8 @@ final class RenderState {
     final FrameSink sink;
     final ProgressCounter progress;
     final LongAdder primaryRays = new LongAdder(), shadowRays = new LongAdder(), secondaryRays = new LongAdder();
-    final LongAdder solverCalls = new LongAdder(), clipSteps = new LongAdder(), evaluations = new LongAdder();
+    final LongAdder solverCalls = new LongAdder(), clipSteps = new LongAdder(), evaluations = new LongAdder(),
+            laneEvaluations = new LongAdder();
     private final AtomicInteger currentGeneration;
     final long startNanos = System.nanoTime();
     volatile Throwable failure;
@@ -40,6 +41,6 @@ final class RenderState {
     FrameStats stats() {
         return new FrameStats(primaryRays.sum(), shadowRays.sum(), secondaryRays.sum(),
                 (System.nanoTime() - startNanos) / 1e6,
-                new FrameStats.Work(solverCalls.sum(), clipSteps.sum(), evaluations.sum()));
+                new FrameStats.Work(solverCalls.sum(), clipSteps.sum(), evaluations.sum(), laneEvaluations.sum()));
     }
 }

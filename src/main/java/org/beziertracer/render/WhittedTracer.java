@@ -117,8 +117,9 @@ public final class WhittedTracer {
         st.solverCalls.add(ctx.solverCalls);
         st.clipSteps.add(ctx.clipIterations);
         st.evaluations.add(ctx.evaluations);
+        st.laneEvaluations.add(ctx.laneEvaluations);
         primaryRays = shadowRays = secondaryRays = 0;
-        ctx.solverCalls = ctx.clipIterations = ctx.evaluations = 0;
+        ctx.solverCalls = ctx.clipIterations = ctx.evaluations = ctx.laneEvaluations = 0;
     }
 
     public long shadowRays() { return shadowRays; }
@@ -154,15 +155,8 @@ public final class WhittedTracer {
      */
     void tracePacket(RayPacket primary, double[] rays, int n, double[] rgb) {
         ensurePacket(n);
-        for (int i = 0; i < n; i++) {
-            int o = 6 * i;
-            primaryRays++;
-            found[i] = si.closestHit(ctx, primary, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4],
-                    rays[o + 5], 0, Double.POSITIVE_INFINITY, hits[i]);
-            if (found[i]) {
-                si.surfacePoint(ctx, hits[i], points[i]);
-            }
-        }
+        primaryRays += n;
+        si.closestHits(ctx, primary, rays, n, 0, Double.POSITIVE_INFINITY, hits, found, points);
         if (s.mode == ShadingMode.PHONG && s.shadows) {
             for (int k = 0; k < s.lightCount; k++) {
                 shadowPacket(rays, n, k);
