@@ -81,7 +81,7 @@ final class ClippingLeaves extends PatchLeaves {
         // Cull and start, lane by lane
         for (int j = 0; j < count; j++) {
             int lane = lanes[j];
-            batch.load(ctx, lane);
+            batch.loadRay(ctx, lane);
             ctx.solverCalls++;
             int stage = BezierClipper.begin(ctx, table, records, quadratics, quarters, slabs, s, ctx.tMin, tMax[lane],
                     tolerance);
@@ -91,8 +91,7 @@ final class ClippingLeaves extends PatchLeaves {
                 newton.nextV[slots] = v0 + (v1 - v0) * ctx.pendingSv;
                 newton.keepPending(ctx, slots++);
             } else if (stage == BezierClipper.HIT) {
-                tMax[lane] = recordRoot(ctx, s);
-                batch.store(ctx, lane);
+                tMax[lane] = batch.record(ctx, lane, k, s);
             }
         }
         if (slots == 0) {
@@ -103,15 +102,14 @@ final class ClippingLeaves extends PatchLeaves {
         // Each lane's refinement, or the rest of its search
         for (int j = 0; j < slots; j++) {
             int lane = newton.lane[j];
-            batch.load(ctx, lane);
+            batch.loadRay(ctx, lane);
             newton.toContext(ctx, j, k);
             boolean converged = newton.status[j] == RayPatchNewton.CONVERGED;
             if (converged) {
                 RayPatchNewton.refine(ctx, table, k, u0, u1, v0, v1, tolerance);
             }
             if (BezierClipper.afterNewton(ctx, table, slabs, s, ctx.tMin, tMax[lane], tolerance, converged)) {
-                tMax[lane] = recordRoot(ctx, s);
-                batch.store(ctx, lane);
+                tMax[lane] = batch.record(ctx, lane, k, s);
             }
         }
     }

@@ -87,13 +87,13 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
     @Override
     public void intersect(TraceContext ctx, int s, int[] lanes, int count, double[] tMax) {
         RayBatch batch = ctx.batch;
+        int k = table.parent[s];
         for (int j = 0; j < count; j++) {
             int lane = lanes[j];
-            batch.load(ctx, lane);
-            double t = intersect(ctx, s, tMax[lane]);
-            if (t < tMax[lane]) {
-                tMax[lane] = t;
-                batch.store(ctx, lane);
+            batch.loadRay(ctx, lane);
+            ctx.solverCalls++;
+            if (solve(ctx, s, ctx.tMin, tMax[lane])) {
+                tMax[lane] = batch.record(ctx, lane, k, s);
             }
         }
     }

@@ -17,9 +17,11 @@ package org.beziertracer.intersect;
  *       {@code hitEvalPatch[i]}, {@code hitEvalU[i]}, {@code hitEvalV[i]}: the evaluation at the
  *       best hit, kept for its surface point.</li>
  * </ul>
- * A leaf solves a lane with the thread's {@link TraceContext} as its scratch: {@link #load} puts the
- * lane's ray and results there, {@link #store} takes the results back. The solvers' stages that run
- * across lanes at once ({@link NewtonLanes}) read the lanes here directly.
+ * A leaf solves a lane with the thread's {@link TraceContext} as its scratch: {@link #loadRay} puts
+ * the lane's ray there, and a hit goes straight to the lane's slots ({@link #record}); the solvers'
+ * stages that run across lanes at once ({@link NewtonLanes}) read the lanes here directly. After
+ * the traversal {@link #loadResult} hands each lane's result to the context, as a query alone
+ * leaves it.
  *
  * <p>Per-thread scratch: mutable, not thread-safe; grows (rarely) to the largest batch, and
  * allocates nothing per ray after that.
@@ -89,15 +91,11 @@ public final class RayBatch {
     }
 
     /**
-     * Makes lane {@code i}'s ray, frame and results the context's current closest-hit query (the
-     * frame made on the lane's first load, by the context, as for a ray alone).
+     * Makes lane {@code i}'s ray and frame the context's current closest-hit query, for a leaf to
+     * solve it with the context as scratch (the frame made on the lane's first load, by the context,
+     * as for a ray alone). The lane's results stay here: a hit goes to {@link #record}.
      */
-    void load(TraceContext ctx, int i) {
-        load(ctx, i, true);
-    }
-
-    /** {@link #load}; without {@code withFrame} a frame not made yet is left to the context's {@code ensurePlanes}. */
-    void load(TraceContext ctx, int i, boolean withFrame) {
+    void loadRay(TraceContext ctx, int i) {
         int o = 6 * i, f = FRAME * i;
         double[] t = traversal, fr = frame;
         ctx.ox = t[o]; ctx.oy = t[o + 1]; ctx.oz = t[o + 2];
@@ -109,8 +107,6 @@ public final class RayBatch {
             ctx.n3x = fr[f + 9]; ctx.n3y = fr[f + 10]; ctx.n3z = fr[f + 11];
             ctx.invLength = fr[f + 12];
             ctx.planesSet = true;
-        } else if (!withFrame) {
-            ctx.planesSet = false;
         } else {
             ctx.planesSet = false;
             ctx.ensurePlanes();
@@ -120,6 +116,46 @@ public final class RayBatch {
             fr[f + 12] = ctx.invLength;
             frameSet[i] = true;
         }
+        ctx.tMin = tMin;
+        ctx.anyHit = false;
+    }
+
+    /**
+     * Records the solver's root ({@code ctx.root*}, its ray the context's since {@link #loadRay}) on
+     * leaf {@code s} of patch {@code k} as lane {@code i}'s best hit, with the solver's last
+     * evaluation when it stands at that root: what {@code PatchLeaves.recordRoot} does for a ray
+     * alone. Returns the hit's t.
+     */
+    double record(TraceContext ctx, int i, int k, int s) {
+        found[i] = true;
+        Hit b = best[i];
+        b.t = ctx.rootT;
+        b.kind = Hit.PATCH;
+        b.index = k;
+        b.subPatch = s;
+        b.u = ctx.rootU;
+        b.v = ctx.rootV;
+        if (ctx.evalPatch == k && ctx.evalU == ctx.rootU && ctx.evalV == ctx.rootV) {
+            System.arraycopy(ctx.eval, 0, hitEval, 9 * i, 9);
+            hitEvalPatch[i] = k;
+            hitEvalU[i] = ctx.evalU;
+            hitEvalV[i] = ctx.evalV;
+        }
+        return ctx.rootT;
+    }
+
+    /**
+     * Makes lane {@code i}'s ray (without its frame) and results the context's, as a closest-hit
+     * query alone leaves them after its traversal: for the planes and spheres, the hit and its
+     * surface point.
+     */
+    void loadResult(TraceContext ctx, int i) {
+        int o = 6 * i, f = FRAME * i;
+        double[] t = traversal, fr = frame;
+        ctx.ox = t[o]; ctx.oy = t[o + 1]; ctx.oz = t[o + 2];
+        ctx.invDx = t[o + 3]; ctx.invDy = t[o + 4]; ctx.invDz = t[o + 5];
+        ctx.dx = fr[f]; ctx.dy = fr[f + 1]; ctx.dz = fr[f + 2];
+        ctx.planesSet = false;
         ctx.tMin = tMin;
         ctx.anyHit = false;
         ctx.found = found[i];
@@ -132,21 +168,6 @@ public final class RayBatch {
             ctx.hitEvalU = hitEvalU[i];
             ctx.hitEvalV = hitEvalV[i];
             System.arraycopy(hitEval, 9 * i, ctx.hitEval, 0, 9);
-        }
-    }
-
-    /** Takes the context's results back into lane {@code i} (after {@link #load} and a leaf's solve). */
-    void store(TraceContext ctx, int i) {
-        found[i] = ctx.found;
-        if (ctx.found) {
-            best[i].set(ctx.best);
-        }
-        int k = ctx.hitEvalPatch;
-        hitEvalPatch[i] = k;
-        if (k >= 0) {
-            hitEvalU[i] = ctx.hitEvalU;
-            hitEvalV[i] = ctx.hitEvalV;
-            System.arraycopy(ctx.hitEval, 0, hitEval, 9 * i, 9);
         }
     }
 }

@@ -260,7 +260,7 @@ public final class SceneIntersector {
         ctx.beginClosestHit(tMin);
         bvh.closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, lanes, ctx, batch.live, batch.reached);
         for (int i = 0; i < n; i++) {
-            batch.load(ctx, i, false);
+            batch.loadResult(ctx, i);
             found[i] = finishClosestHit(ctx, tMin, tMax, hits[i]);
             if (found[i]) {
                 surfacePoint(ctx, hits[i], points[i]);

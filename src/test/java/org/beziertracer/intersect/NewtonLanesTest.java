@@ -57,7 +57,7 @@ class NewtonLanesTest {
                 batch.set(together, rays, count, 0, Double.POSITIVE_INFINITY);
                 lanes.ensure(count);
                 for (int i = 0; i < count; i++) {
-                    batch.load(together, i); // the lane's frame
+                    batch.loadRay(together, i); // the lane's frame
                     lanes.lane[i] = i;
                     lanes.nextU[i] = starts[2 * i];
                     lanes.nextV[i] = starts[2 * i + 1];
@@ -75,7 +75,7 @@ class NewtonLanesTest {
                             uLo, uHi, vLo, vHi, TOLERANCE);
                     scalarEvaluations += alone.evaluations - e0;
                     outcomes[status]++;
-                    batch.load(together, i);
+                    batch.loadRay(together, i);
                     together.escapeU = together.escapeV = Double.NaN;
                     lanes.toContext(together, i, 0);
                     String where = kernel.description() + ", degree " + n + "x" + m + ", lane " + i + " of " + count
