@@ -263,6 +263,21 @@ public final class Bvh implements Accelerator {
         return PacketTraversal.occludedIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
     }
 
+    /**
+     * Any-hit answers of all {@code n} rays of a packet this hierarchy {@linkplain #gather gathered},
+     * leaf by leaf ({@link LaneOccluder}); every lane gets the answer {@link #occludedIn} gives it alone.
+     *
+     * @param rays          per lane {@code i}: origin and reciprocal direction at {@code rays[6i .. 6i+6)}
+     * @param occluded      per lane, set when blocked (lanes set on entry are not traced)
+     * @param live, reached scratch of at least {@code n} ints each
+     * @throws IllegalStateException when the packet was not gathered by this hierarchy
+     */
+    public <Q> void occludedAllIn(RayPacket packet, double[] rays, int n, double tMin, double[] tMax,
+            LaneOccluder<Q> leaf, Q query, int[] live, int[] reached, boolean[] occluded) {
+        requireGathered(packet);
+        PacketTraversal.occludedAllIn(this, packet, rays, n, tMin, tMax, leaf, query, live, reached, occluded);
+    }
+
     private void requireGathered(RayPacket packet) {
         if (!packet.gatheredBy(this)) {
             throw new IllegalStateException("the packet was not gathered by this hierarchy");

@@ -219,6 +219,59 @@ final class PacketTraversal {
     }
 
     /**
+     * {@link #occludedIn} for every ray of a gathered packet at once, leaf by leaf: at each listed
+     * leaf, the lanes not yet blocked whose {@code tMax} has not passed its least entry and whose own
+     * slab test passes go to the leaf's primitives together, a lane leaving as soon as one blocks it.
+     * Each lane meets the same primitives in the same order as {@link #occludedIn} alone, so its
+     * answer is the same.
+     *
+     * @param occluded per lane: set when blocked; a lane set on entry (blocked by something outside
+     *                 the hierarchy) is not traced
+     */
+    static <Q> void occludedAllIn(Bvh bvh, RayPacket p, double[] rays, int n, double tMin, double[] tMax,
+            LaneOccluder<Q> leaf, Q query, int[] live, int[] reached, boolean[] occluded) {
+        final float[] b = bvh.nodeBounds;
+        final int[] nd = bvh.nodes;
+        final int[] prims = bvh.primIndices;
+        int liveCount = 0;
+        for (int i = 0; i < n; i++) {
+            if (!occluded[i]) {
+                live[liveCount++] = i;
+            }
+        }
+        for (int k = 0, count = p.leafCount; k < count && liveCount > 0; k++) {
+            float entry = p.leafEntry[k];
+            int kept = 0, reach = 0;
+            int node = p.leafNodes[k];
+            for (int j = 0; j < liveCount; j++) {
+                int i = live[j];
+                if (occluded[i] || entry > tMax[i]) {
+                    continue; // blocked, or nothing left in reach: this lane is answered
+                }
+                live[kept++] = i;
+                int o = 6 * i;
+                double invDx = rays[o + 3], invDy = rays[o + 4], invDz = rays[o + 5];
+                if (RayBox.slab(b, 6 * node, rays[o], rays[o + 1], rays[o + 2], invDx, invDy, invDz,
+                        RayBox.nearOffset(invDx), RayBox.nearOffset(invDy), RayBox.nearOffset(invDz), tMin, tMax[i])
+                        != MISS) {
+                    reached[reach++] = i;
+                }
+            }
+            liveCount = kept;
+            for (int q = nd[2 * node], end = q + nd[2 * node + 1]; q < end && reach > 0; q++) {
+                leaf.occludes(query, prims[q], reached, reach, tMax, occluded);
+                int still = 0;
+                for (int j = 0; j < reach; j++) {
+                    if (!occluded[reached[j]]) {
+                        reached[still++] = reached[j];
+                    }
+                }
+                reach = still;
+            }
+        }
+    }
+
+    /**
      * {@link Bvh#occluded} for one ray of a gathered packet: the ray's own slab test on each listed
      * leaf, and the leaf's primitives where it passes, until one occludes.
      */

@@ -67,11 +67,35 @@ final class ClippingLeaves extends PatchLeaves {
      */
     @Override
     public void intersect(TraceContext ctx, int s, int[] lanes, int count, double[] tMax) {
-        int k = table.parent[s];
-        if (table.patchPowerOffset[k] < 0 || ctx.originLeaf >= 0) {
+        if (table.patchPowerOffset[table.parent[s]] < 0) {
             super.intersect(ctx, s, lanes, count, tMax);
-            return;
+        } else {
+            solveLanes(ctx, s, lanes, count, tMax, null);
         }
+    }
+
+    /**
+     * {@link #intersect(TraceContext, int, int[], int, double[])} for shadow rays: the answers of
+     * {@link #occludes(TraceContext, int, double)} for each lane alone. A lane on the leaf it leaves,
+     * or whose Newton start is the point it leaves, is solved alone (its first iterate is that
+     * point's evaluation, {@link RayPatchNewton#startsAtOrigin}).
+     */
+    @Override
+    public void occludes(TraceContext ctx, int s, int[] lanes, int count, double[] tMax, boolean[] occluded) {
+        if (table.patchPowerOffset[table.parent[s]] < 0) {
+            super.occludes(ctx, s, lanes, count, tMax, occluded);
+        } else {
+            solveLanes(ctx, s, lanes, count, tMax, occluded);
+        }
+    }
+
+    /**
+     * The stages over the lanes: closest hits when {@code occluded} is null (a hit lowers the lane's
+     * {@code tMax} and is recorded in the batch), else any hits (a hit sets {@code occluded[lane]}).
+     */
+    private void solveLanes(TraceContext ctx, int s, int[] lanes, int count, double[] tMax, boolean[] occluded) {
+        boolean anyHit = occluded != null;
+        int k = table.parent[s];
         RayBatch batch = ctx.batch;
         NewtonLanes newton = ctx.newtonLanes;
         newton.ensure(count);
@@ -81,17 +105,40 @@ final class ClippingLeaves extends PatchLeaves {
         // Cull and start, lane by lane
         for (int j = 0; j < count; j++) {
             int lane = lanes[j];
-            batch.loadRay(ctx, lane);
+            if (anyHit) {
+                batch.loadShadowRay(ctx, lane);
+            } else {
+                batch.loadRay(ctx, lane);
+            }
             ctx.solverCalls++;
+            if (anyHit && provenBehind(ctx, s)) {
+                continue; // a leaf of the patch the ray leaves, proven behind it
+            }
+            if (anyHit && s == ctx.originLeaf) {
+                // the leaf the ray leaves, solved alone (from the origin's own evaluation)
+                if (solve(ctx, s, ctx.tMin, tMax[lane])) {
+                    occluded[lane] = true;
+                }
+                continue;
+            }
             int stage = BezierClipper.begin(ctx, table, records, quadratics, quarters, slabs, s, ctx.tMin, tMax[lane],
                     tolerance);
             if (stage == BezierClipper.NEWTON) {
-                newton.lane[slots] = lane;
-                newton.nextU[slots] = u0 + (u1 - u0) * ctx.pendingSu;
-                newton.nextV[slots] = v0 + (v1 - v0) * ctx.pendingSv;
-                newton.keepPending(ctx, slots++);
-            } else if (stage == BezierClipper.HIT) {
-                tMax[lane] = batch.record(ctx, lane, k, s);
+                double u = u0 + (u1 - u0) * ctx.pendingSu, v = v0 + (v1 - v0) * ctx.pendingSv;
+                if (anyHit && RayPatchNewton.startsAtOrigin(ctx, table, k, u, v)) {
+                    stage = BezierClipper.afterNewton(ctx, table, slabs, s, ctx.tMin, tMax[lane], tolerance,
+                            BezierClipper.newtonFrom(ctx, table, s, ctx.pendingSu, ctx.pendingSv, tolerance))
+                            ? BezierClipper.HIT : BezierClipper.MISS;
+                } else {
+                    newton.lane[slots] = lane;
+                    newton.nextU[slots] = u;
+                    newton.nextV[slots] = v;
+                    newton.keepPending(ctx, slots++);
+                    continue;
+                }
+            }
+            if (stage == BezierClipper.HIT) {
+                hit(ctx, batch, lane, k, s, tMax, occluded);
             }
         }
         if (slots == 0) {
@@ -102,15 +149,28 @@ final class ClippingLeaves extends PatchLeaves {
         // Each lane's refinement, or the rest of its search
         for (int j = 0; j < slots; j++) {
             int lane = newton.lane[j];
-            batch.loadRay(ctx, lane);
+            if (anyHit) {
+                batch.loadShadowRay(ctx, lane);
+            } else {
+                batch.loadRay(ctx, lane);
+            }
             newton.toContext(ctx, j, k);
             boolean converged = newton.status[j] == RayPatchNewton.CONVERGED;
             if (converged) {
                 RayPatchNewton.refine(ctx, table, k, u0, u1, v0, v1, tolerance);
             }
             if (BezierClipper.afterNewton(ctx, table, slabs, s, ctx.tMin, tMax[lane], tolerance, converged)) {
-                tMax[lane] = batch.record(ctx, lane, k, s);
+                hit(ctx, batch, lane, k, s, tMax, occluded);
             }
+        }
+    }
+
+    /** A lane's root on leaf {@code s}: its closest hit so far, or its shadow ray blocked. */
+    private static void hit(TraceContext ctx, RayBatch batch, int lane, int k, int s, double[] tMax, boolean[] occluded) {
+        if (occluded != null) {
+            occluded[lane] = true;
+        } else {
+            tMax[lane] = batch.record(ctx, lane, k, s);
         }
     }
 

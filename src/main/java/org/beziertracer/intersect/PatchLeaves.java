@@ -1,6 +1,7 @@
 package org.beziertracer.intersect;
 
 import org.beziertracer.accel.LaneIntersector;
+import org.beziertracer.accel.LaneOccluder;
 import org.beziertracer.geometry.PatchNormals;
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.model.Scene;
@@ -19,7 +20,7 @@ import org.beziertracer.model.Scene;
  *
  * <p>Immutable; shared by render threads, each with its own {@link TraceContext}.
  */
-abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
+abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, LaneOccluder<TraceContext> {
 
     /** Root-polish residual tolerance, as a fraction of the scene size. */
     static final double RELATIVE_TOLERANCE = 1e-12;
@@ -102,14 +103,35 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
     public final boolean occludes(TraceContext ctx, int s, double tMax) {
         ctx.solverCalls++;
         ctx.ensurePlanes();
+        return !provenBehind(ctx, s) && solve(ctx, s, ctx.tMin, tMax);
+    }
+
+    /**
+     * A leaf of the patch a shadow ray leaves, provably behind it, is skipped; but one proven
+     * single-root costs less to solve (Newton, from the origin's point on its own leaf).
+     */
+    final boolean provenBehind(TraceContext ctx, int s) {
         int origin = ctx.originLeaf;
-        // A leaf of the patch a shadow ray leaves, provably behind it, is skipped; but one proven
-        // single-root costs less to solve (Newton, from the origin's point on its own leaf)
-        if (origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
-                && OriginLeaf.cannotMeet(ctx, table, s)) {
-            return false;
+        return origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
+                && OriginLeaf.cannotMeet(ctx, table, s);
+    }
+
+    /**
+     * Leaf {@code s} against the shadow-ray lanes {@code lanes[0..count)} of the context's
+     * {@link RayBatch} ({@link LaneOccluder}): the answers of {@link #occludes(TraceContext, int,
+     * double)} for each lane alone. Here each lane is solved alone in turn; {@link ClippingLeaves}
+     * overrides it.
+     */
+    @Override
+    public void occludes(TraceContext ctx, int s, int[] lanes, int count, double[] tMax, boolean[] occluded) {
+        RayBatch batch = ctx.batch;
+        for (int j = 0; j < count; j++) {
+            int lane = lanes[j];
+            batch.loadShadowRay(ctx, lane);
+            if (occludes(ctx, s, tMax[lane])) {
+                occluded[lane] = true;
+            }
         }
-        return solve(ctx, s, ctx.tMin, tMax);
     }
 
     /** A hit on a piece of a free-form surface reports the surface's own (u,v). */

@@ -37,6 +37,16 @@ public final class RayBatch {
     Hit[] best = new Hit[0];
     double[] hitEval = new double[0], hitEvalU = new double[0], hitEvalV = new double[0];
     int[] hitEvalPatch = new int[0];
+    /**
+     * A batch of shadow rays ({@link #setShadows}): per lane the hit each leaves (null: none), its
+     * surface point, the unit normal on the ray's side at {@code normal[3i ..]}, and the answer.
+     */
+    Hit[] from = new Hit[0];
+    SurfacePoint[] at = new SurfacePoint[0];
+    double[] normal = new double[0];
+    boolean[] occluded = new boolean[0];
+    /** The lane whose origin the context holds ({@link #loadShadowRay}), or -1. */
+    private int originLane = -1;
     /** Scratch for the traversal's lane lists. */
     int[] live = new int[0], reached = new int[0];
 
@@ -65,6 +75,10 @@ public final class RayBatch {
         hitEvalPatch = new int[c];
         live = new int[c];
         reached = new int[c];
+        from = new Hit[c];
+        at = new SurfacePoint[c];
+        normal = new double[3 * c];
+        occluded = new boolean[c];
         capacity = c;
     }
 
@@ -75,6 +89,7 @@ public final class RayBatch {
     void set(TraceContext ctx, double[] rays, int n, double tMin, double tMax) {
         ensure(n);
         count = n;
+        originLane = -1;
         this.tMin = tMin;
         for (int i = 0; i < n; i++) {
             int o = 6 * i, f = FRAME * i;
@@ -88,6 +103,49 @@ public final class RayBatch {
             found[i] = false;
             hitEvalPatch[i] = -1;
         }
+    }
+
+    /**
+     * Makes the batch the {@code n} shadow rays at {@code rays[6i .. 6i+6)} on {@code (tMin, tMax)},
+     * ray {@code i} leaving the hit {@code hits[i]} (null or not a patch hit: it leaves no leaf) at
+     * {@code points[i]}, on the side of the unit normal {@code normals[3i .. 3i+3)}; none blocked yet.
+     */
+    void setShadows(TraceContext ctx, double[] rays, int n, double tMin, double tMax, Hit[] hits,
+                    SurfacePoint[] points, double[] normals) {
+        set(ctx, rays, n, tMin, tMax);
+        for (int i = 0; i < n; i++) {
+            from[i] = hits[i];
+            at[i] = points[i];
+            normal[3 * i] = normals[3 * i];
+            normal[3 * i + 1] = normals[3 * i + 1];
+            normal[3 * i + 2] = normals[3 * i + 2];
+            occluded[i] = false;
+        }
+        originLane = -1;
+    }
+
+    /**
+     * {@link #loadRay} for a shadow ray of {@link #setShadows}: an any-hit query that leaves its
+     * lane's hit, as {@code SceneIntersector.occludedLeaving} sets it for the ray alone.
+     */
+    void loadShadowRay(TraceContext ctx, int i) {
+        loadRay(ctx, i);
+        ctx.anyHit = true;
+        if (originLane != i) {
+            Hit h = from[i];
+            if (h != null && h.kind == Hit.PATCH) {
+                ctx.leaving(h.subPatch, h.u, h.v, at[i], normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]);
+            } else {
+                ctx.originLeaf = -1;
+            }
+            originLane = i;
+        }
+    }
+
+    /** The context leaves no lane's origin any more (after a batch of shadow rays). */
+    void endShadows(TraceContext ctx) {
+        ctx.originLeaf = -1;
+        originLane = -1;
     }
 
     /**

@@ -96,9 +96,7 @@ final class RayPatchNewton {
      * tolerance's thousandth, {@link #extrapolate}); true when it was.
      */
     private static boolean fromOrigin(TraceContext ctx, SubPatchTable table, int k, double u, double v) {
-        int s = ctx.originLeaf;
-        if (s < 0 || !ctx.originDerivatives || u != ctx.originU || v != ctx.originV || table.parent[s] != k
-                || !SurfaceParameters.unit(table.patchDomain, k)) {
+        if (!startsAtOrigin(ctx, table, k, u, v)) {
             return false;
         }
         double[] e = ctx.eval;
@@ -107,6 +105,16 @@ final class RayPatchNewton {
         e[6] = ctx.originSvx; e[7] = ctx.originSvy; e[8] = ctx.originSvz;
         takeIterate(ctx, u, v);
         return true;
+    }
+
+    /**
+     * True when a solve on patch {@code k} from {@code (u, v)} takes its first iterate's evaluation
+     * from the point the context's shadow ray leaves ({@link #fromOrigin}) instead of evaluating.
+     */
+    static boolean startsAtOrigin(TraceContext ctx, SubPatchTable table, int k, double u, double v) {
+        int s = ctx.originLeaf;
+        return s >= 0 && ctx.originDerivatives && u == ctx.originU && v == ctx.originV && table.parent[s] == k
+                && SurfaceParameters.unit(table.patchDomain, k);
     }
 
     /**

@@ -268,6 +268,60 @@ public final class SceneIntersector {
         }
     }
 
+    /**
+     * {@link #occludedLeaving} for the {@code n} shadow rays at {@code rays[6i .. 6i+6)} on
+     * {@code (tMin, tMax)} as one {@link RayBatch}: ray {@code i} leaves the hit {@code from[i]} at
+     * {@code at[i]} on the side of the unit normal {@code normals[3i .. 3i+3)}. One traversal for
+     * all (the packet {@code packet} must hold the same rays and have been {@linkplain #gather
+     * gathered} for this snapshot; otherwise each ray is traced alone), each leaf solving the lanes
+     * that reach it together. Sets {@code blocked[i]} to each ray's answer: the one {@link
+     * #occludedLeaving} gives it alone.
+     */
+    public void occludedLeaving(TraceContext ctx, RayPacket packet, double[] rays, int n, double tMin, double tMax,
+                                Hit[] from, SurfacePoint[] at, double[] normals, boolean[] blocked) {
+        if (packet == null || !packet.gatheredBy(accel) || !(accel instanceof Bvh bvh)
+                || !(leaves instanceof PatchLeaves lanes)) {
+            for (int i = 0; i < n; i++) {
+                int o = 6 * i;
+                blocked[i] = occludedLeaving(ctx, packet, from[i], at[i], normals[3 * i], normals[3 * i + 1],
+                        normals[3 * i + 2], rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5],
+                        tMin, tMax);
+            }
+            return;
+        }
+        RayBatch batch = ctx.batch;
+        batch.setShadows(ctx, rays, n, tMin, tMax, from, at, normals);
+        for (int i = 0; i < n; i++) {
+            // the spheres and planes first, as for a ray alone
+            int o = 6 * i;
+            ctx.setTraversal(rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5]);
+            batch.occluded[i] = shapesBlock(ctx, tMin, tMax);
+        }
+        try {
+            bvh.occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, lanes, ctx, batch.live, batch.reached,
+                    batch.occluded);
+        } finally {
+            batch.endShadows(ctx);
+        }
+        System.arraycopy(batch.occluded, 0, blocked, 0, n);
+    }
+
+    /** True when a sphere or a plane blocks the context's ray on {@code (tMin, tMax)}. */
+    private boolean shapesBlock(TraceContext ctx, double tMin, double tMax) {
+        for (int k = 0; k < shapes.sphereCount; k++) {
+            if (!Double.isNaN(shapes.sphereT(k, ctx, tMin, tMax))) {
+                return true;
+            }
+        }
+        for (int k = 0; k < shapes.planeCount; k++) {
+            double t = shapes.planeT(k, ctx);
+            if (t > tMin && t < tMax) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** True when anything blocks the ray for {@code tMin < t < tMax} (any-hit query). */
     public boolean occluded(TraceContext ctx, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMin, double tMax) {
@@ -285,16 +339,8 @@ public final class SceneIntersector {
         ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
         ctx.anyHit = true;
-        for (int k = 0; k < shapes.sphereCount; k++) {
-            if (!Double.isNaN(shapes.sphereT(k, ctx, tMin, tMax))) {
-                return true;
-            }
-        }
-        for (int k = 0; k < shapes.planeCount; k++) {
-            double t = shapes.planeT(k, ctx);
-            if (t > tMin && t < tMax) {
-                return true;
-            }
+        if (shapesBlock(ctx, tMin, tMax)) {
+            return true;
         }
         leaves.beginRay(ctx);
         if (packet != null && packet.gatheredBy(accel)) {

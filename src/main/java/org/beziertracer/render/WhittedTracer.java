@@ -71,7 +71,11 @@ public final class WhittedTracer {
     private Hit[] hits = new Hit[0];
     private SurfacePoint[] points = new SurfacePoint[0];
     private boolean[] found = new boolean[0], blocked = new boolean[0];
-    private double[] shadowRay = new double[0];
+    /** A packet's shadow rays: origin and direction, the normal on their side, the hit and point each leaves, the answer. */
+    private double[] shadowRay = new double[0], shadowNormal = new double[0];
+    private Hit[] shadowFrom = new Hit[0];
+    private SurfacePoint[] shadowAt = new SurfacePoint[0];
+    private boolean[] shadowBlocked = new boolean[0];
     private int[] shadowOwner = new int[0];
     /** The packet's camera ray whose first hit is being shaded, or -1. */
     private int packetRay = -1;
@@ -201,20 +205,21 @@ public final class WhittedTracer {
                 continue;
             }
             double px = sp.px + s.eps * nx, py = sp.py + s.eps * ny, pz = sp.pz + s.eps * nz;
-            int q = 9 * count;
+            int q = 6 * count;
             shadowRay[q] = px; shadowRay[q + 1] = py; shadowRay[q + 2] = pz;
             shadowRay[q + 3] = lights[lo] - px; shadowRay[q + 4] = lights[lo + 1] - py; shadowRay[q + 5] = lights[lo + 2] - pz;
-            shadowRay[q + 6] = nx; shadowRay[q + 7] = ny; shadowRay[q + 8] = nz;
+            shadowNormal[3 * count] = nx; shadowNormal[3 * count + 1] = ny; shadowNormal[3 * count + 2] = nz;
+            shadowFrom[count] = hits[i];
+            shadowAt[count] = points[i];
             shadowOwner[count++] = i;
             shadows.add(px, py, pz, shadowRay[q + 3], shadowRay[q + 4], shadowRay[q + 5]);
         }
         RayPacket together = count > 1 && si.gather(ctx, shadows, 0, SHADOW_T_MAX) ? shadows : null;
+        shadowRays += count;
+        si.occludedLeaving(ctx, together, shadowRay, count, 0, SHADOW_T_MAX, shadowFrom, shadowAt, shadowNormal,
+                shadowBlocked);
         for (int j = 0; j < count; j++) {
-            int i = shadowOwner[j], q = 9 * j;
-            shadowRays++;
-            blocked[s.lightCount * i + k] = si.occludedLeaving(ctx, together, hits[i], points[i], shadowRay[q + 6],
-                    shadowRay[q + 7], shadowRay[q + 8], shadowRay[q], shadowRay[q + 1], shadowRay[q + 2],
-                    shadowRay[q + 3], shadowRay[q + 4], shadowRay[q + 5], 0, SHADOW_T_MAX);
+            blocked[s.lightCount * shadowOwner[j] + k] = shadowBlocked[j];
         }
     }
 
@@ -232,7 +237,11 @@ public final class WhittedTracer {
             }
             found = new boolean[size];
             shadowOwner = new int[size];
-            shadowRay = new double[9 * size];
+            shadowRay = new double[6 * size];
+            shadowNormal = new double[3 * size];
+            shadowFrom = new Hit[size];
+            shadowAt = new SurfacePoint[size];
+            shadowBlocked = new boolean[size];
         }
         if (blocked.length < n * s.lightCount) {
             blocked = new boolean[Math.max(n * s.lightCount, 2 * blocked.length)];
