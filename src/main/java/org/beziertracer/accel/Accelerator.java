@@ -40,8 +40,8 @@ public interface Accelerator {
 
     /**
      * Traverses once for a whole packet of rays ({@link RayPacket}): lists the leaves any of its
-     * rays may meet between {@code tMin} and {@code tMax}, for {@link #closestHitIn} and {@link
-     * #occludedIn} with rays whose own interval lies within those bounds. Returns false when the
+     * rays may meet between {@code tMin} and {@code tMax}, for {@link Bvh#closestHitsIn} and
+     * {@link Bvh#occludedAllIn} with rays whose own interval lies within those bounds. Returns false when the
      * packet cannot be traversed together (then trace its rays one at a time); an accelerator
      * without a hierarchy always returns false.
      *
@@ -49,28 +49,6 @@ public interface Accelerator {
      */
     default boolean gather(RayPacket packet, double tMin, double tMax, int[] stack) {
         return false;
-    }
-
-    /**
-     * {@link #closestHit} for one ray of a packet this accelerator {@linkplain #gather gathered}:
-     * the same answer, from the packet's leaves instead of a traversal of its own.
-     *
-     * @throws IllegalStateException when the packet was not gathered by this accelerator
-     */
-    default <Q> double closestHitIn(RayPacket packet, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query) {
-        throw new IllegalStateException("the packet was not gathered by this accelerator");
-    }
-
-    /**
-     * {@link #occluded} for one ray of a packet this accelerator {@linkplain #gather gathered}: the
-     * same answer, from the packet's leaves.
-     *
-     * @throws IllegalStateException when the packet was not gathered by this accelerator
-     */
-    default <Q> boolean occludedIn(RayPacket packet, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {
-        throw new IllegalStateException("the packet was not gathered by this accelerator");
     }
 
     /** Minimum length of the traversal stack a caller must pass. */

@@ -233,17 +233,10 @@ public final class Bvh implements Accelerator {
         return PacketTraversal.gather(this, packet, tMin, tMax, stack);
     }
 
-    @Override
-    public <Q> double closestHitIn(RayPacket packet, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query) {
-        requireGathered(packet);
-        return PacketTraversal.closestHitIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
-    }
-
     /**
      * Closest hits of all {@code n} rays of a packet this hierarchy {@linkplain #gather gathered},
      * leaf by leaf: each leaf gets the lanes that reach it together ({@link LaneIntersector}); every
-     * lane gets the answer {@link #closestHitIn} gives it alone.
+     * lane gets the answer a traversal of its own gives it ({@link PacketTraversal#traceLanes}).
      *
      * @param rays          per lane {@code i}: origin and reciprocal direction at {@code rays[6i .. 6i+6)}
      * @param tMax          per lane; lowered to each lane's closest hit
@@ -253,19 +246,12 @@ public final class Bvh implements Accelerator {
     public <Q> void closestHitsIn(RayPacket packet, double[] rays, int n, double tMin, double[] tMax,
             LaneIntersector<Q> leaf, Q query, int[] live, int[] reached) {
         requireGathered(packet);
-        PacketTraversal.closestHitsIn(this, packet, rays, n, tMin, tMax, leaf, query, live, reached);
-    }
-
-    @Override
-    public <Q> boolean occludedIn(RayPacket packet, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {
-        requireGathered(packet);
-        return PacketTraversal.occludedIn(this, packet, ox, oy, oz, invDx, invDy, invDz, tMin, tMax, leaf, query);
+        PacketTraversal.traceLanes(this, packet, rays, n, tMin, tMax, leaf, null, query, live, reached, null);
     }
 
     /**
      * Any-hit answers of all {@code n} rays of a packet this hierarchy {@linkplain #gather gathered},
-     * leaf by leaf ({@link LaneOccluder}); every lane gets the answer {@link #occludedIn} gives it alone.
+     * leaf by leaf ({@link LaneOccluder}); every lane gets the answer a traversal of its own gives it.
      *
      * @param rays          per lane {@code i}: origin and reciprocal direction at {@code rays[6i .. 6i+6)}
      * @param occluded      per lane, set when blocked (lanes set on entry are not traced)
@@ -275,7 +261,7 @@ public final class Bvh implements Accelerator {
     public <Q> void occludedAllIn(RayPacket packet, double[] rays, int n, double tMin, double[] tMax,
             LaneOccluder<Q> leaf, Q query, int[] live, int[] reached, boolean[] occluded) {
         requireGathered(packet);
-        PacketTraversal.occludedAllIn(this, packet, rays, n, tMin, tMax, leaf, query, live, reached, occluded);
+        PacketTraversal.traceLanes(this, packet, rays, n, tMin, tMax, null, leaf, query, live, reached, occluded);
     }
 
     private void requireGathered(RayPacket packet) {

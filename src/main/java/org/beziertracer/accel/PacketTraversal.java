@@ -6,7 +6,8 @@ import static org.beziertracer.accel.RayBox.ROBUST_EXIT;
 /**
  * The two halves of a packet query on a {@link Bvh} ({@link RayPacket}): {@link #gather} traverses
  * the tree once with the packet's interval bounds and lists the leaves it cannot rule out;
- * {@link #closestHitIn} answers one ray of the packet from that list. Stateless.
+ * {@link #traceLanes} answers the packet's rays from that list, as the lanes of a batch, closest
+ * hit or any hit (one loop for both). Stateless.
  */
 final class PacketTraversal {
 
@@ -142,100 +143,34 @@ final class PacketTraversal {
     }
 
     /**
-     * {@link Bvh#closestHit} for one ray of a gathered packet: the ray's own slab test on each
-     * listed leaf whose least entry is not beyond {@code tMax}, in list order, and the leaf's
-     * primitives where it passes.
-     */
-    static <Q> double closestHitIn(Bvh bvh, RayPacket p, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafIntersector<Q> leaf, Q query) {
-        final float[] b = bvh.nodeBounds;
-        final int[] nd = bvh.nodes;
-        final int[] prims = bvh.primIndices;
-        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
-                sz = RayBox.nearOffset(invDz);
-        for (int k = 0, count = p.leafCount; k < count; k++) {
-            if (p.leafEntry[k] > tMax) {
-                break;
-            }
-            int node = p.leafNodes[k];
-            if (RayBox.slab(b, 6 * node, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz, tMin, tMax) == MISS) {
-                continue;
-            }
-            for (int i = nd[2 * node], end = i + nd[2 * node + 1]; i < end; i++) {
-                tMax = leaf.intersect(query, prims[i], tMax);
-            }
-        }
-        return tMax;
-    }
-
-    /**
-     * {@link #closestHitIn} for every ray of a gathered packet at once, leaf by leaf instead of ray
-     * by ray: at each listed leaf, the lanes whose {@code tMax} has not passed its least entry and
-     * whose own slab test passes are handed to the leaf together. Each lane meets the same leaves,
-     * in the same order, with the same {@code tMax} as {@link #closestHitIn} gives it alone (a
-     * lane's answer depends on nothing but its own ray and its own {@code tMax}), so the answers are
-     * the same; a leaf just sees the lanes that reach it side by side.
+     * The rays of a gathered packet, as lanes of a batch, leaf by leaf: at each listed leaf (nearest
+     * least entry first), the lanes still open whose {@code tMax} has not passed the leaf's least
+     * entry and whose own slab test passes go to the leaf's primitives together. Closest hits when
+     * {@code closest} is given (a primitive lowers the {@code tMax} of the lanes it hits), any hits
+     * when {@code any} is (a lane closes as soon as a primitive blocks it, {@code occluded[lane]}).
      *
-     * @param rays  per lane {@code i}, its origin and reciprocal direction at {@code rays[6i .. 6i+6)}
-     * @param n     lanes
-     * @param tMax  per lane, lowered by the leaves' hits
+     * <p><b>Why the answers are each ray's own.</b> A lane meets the primitives a ray alone would
+     * meet with the same list: its own slab test on each listed leaf whose least entry is within its
+     * {@code tMax}, in list order, with its {@code tMax} as its own earlier primitives left it. A
+     * lane's answer depends on nothing but its own ray and {@code tMax}, so meeting the leaves side
+     * by side with other lanes changes neither the answer nor the work. The list holds every leaf a
+     * ray alone would visit ({@link RayPacket}), so the answer is the one of a traversal of its own;
+     * a batch of one is how a single ray of a packet is traced.
+     *
+     * @param rays     per lane {@code i}, its origin and reciprocal direction at {@code rays[6i .. 6i+6)}
+     * @param tMax     per lane; lowered by closest hits
+     * @param occluded per lane, any hits only (null for closest hits): set when blocked; a lane set on
+     *                 entry (blocked by something outside the hierarchy) is not traced
      * @param live, reached  scratch of at least {@code n} ints each
      */
-    static <Q> void closestHitsIn(Bvh bvh, RayPacket p, double[] rays, int n, double tMin, double[] tMax,
-            LaneIntersector<Q> leaf, Q query, int[] live, int[] reached) {
+    static <Q> void traceLanes(Bvh bvh, RayPacket p, double[] rays, int n, double tMin, double[] tMax,
+            LaneIntersector<Q> closest, LaneOccluder<Q> any, Q query, int[] live, int[] reached, boolean[] occluded) {
         final float[] b = bvh.nodeBounds;
         final int[] nd = bvh.nodes;
         final int[] prims = bvh.primIndices;
         int liveCount = 0;
         for (int i = 0; i < n; i++) {
-            live[liveCount++] = i;
-        }
-        for (int k = 0, count = p.leafCount; k < count && liveCount > 0; k++) {
-            float entry = p.leafEntry[k];
-            int kept = 0, reach = 0;
-            int node = p.leafNodes[k];
-            for (int j = 0; j < liveCount; j++) {
-                int i = live[j];
-                if (entry > tMax[i]) {
-                    continue; // this lane is done: every later leaf starts farther still
-                }
-                live[kept++] = i;
-                int o = 6 * i;
-                double invDx = rays[o + 3], invDy = rays[o + 4], invDz = rays[o + 5];
-                if (RayBox.slab(b, 6 * node, rays[o], rays[o + 1], rays[o + 2], invDx, invDy, invDz,
-                        RayBox.nearOffset(invDx), RayBox.nearOffset(invDy), RayBox.nearOffset(invDz), tMin, tMax[i])
-                        != MISS) {
-                    reached[reach++] = i;
-                }
-            }
-            liveCount = kept;
-            if (reach == 0) {
-                continue;
-            }
-            for (int q = nd[2 * node], end = q + nd[2 * node + 1]; q < end; q++) {
-                leaf.intersect(query, prims[q], reached, reach, tMax);
-            }
-        }
-    }
-
-    /**
-     * {@link #occludedIn} for every ray of a gathered packet at once, leaf by leaf: at each listed
-     * leaf, the lanes not yet blocked whose {@code tMax} has not passed its least entry and whose own
-     * slab test passes go to the leaf's primitives together, a lane leaving as soon as one blocks it.
-     * Each lane meets the same primitives in the same order as {@link #occludedIn} alone, so its
-     * answer is the same.
-     *
-     * @param occluded per lane: set when blocked; a lane set on entry (blocked by something outside
-     *                 the hierarchy) is not traced
-     */
-    static <Q> void occludedAllIn(Bvh bvh, RayPacket p, double[] rays, int n, double tMin, double[] tMax,
-            LaneOccluder<Q> leaf, Q query, int[] live, int[] reached, boolean[] occluded) {
-        final float[] b = bvh.nodeBounds;
-        final int[] nd = bvh.nodes;
-        final int[] prims = bvh.primIndices;
-        int liveCount = 0;
-        for (int i = 0; i < n; i++) {
-            if (!occluded[i]) {
+            if (any == null || !occluded[i]) {
                 live[liveCount++] = i;
             }
         }
@@ -245,8 +180,8 @@ final class PacketTraversal {
             int node = p.leafNodes[k];
             for (int j = 0; j < liveCount; j++) {
                 int i = live[j];
-                if (occluded[i] || entry > tMax[i]) {
-                    continue; // blocked, or nothing left in reach: this lane is answered
+                if (entry > tMax[i] || any != null && occluded[i]) {
+                    continue; // answered: nothing left in reach (every later leaf starts farther still), or blocked
                 }
                 live[kept++] = i;
                 int o = 6 * i;
@@ -259,7 +194,12 @@ final class PacketTraversal {
             }
             liveCount = kept;
             for (int q = nd[2 * node], end = q + nd[2 * node + 1]; q < end && reach > 0; q++) {
-                leaf.occludes(query, prims[q], reached, reach, tMax, occluded);
+                if (any == null) {
+                    closest.intersect(query, prims[q], reached, reach, tMax);
+                    continue;
+                }
+                any.occludes(query, prims[q], reached, reach, tMax, occluded);
+                // blocked lanes are answered: out of this leaf's list (and of the live list at the next leaf)
                 int still = 0;
                 for (int j = 0; j < reach; j++) {
                     if (!occluded[reached[j]]) {
@@ -269,33 +209,5 @@ final class PacketTraversal {
                 reach = still;
             }
         }
-    }
-
-    /**
-     * {@link Bvh#occluded} for one ray of a gathered packet: the ray's own slab test on each listed
-     * leaf, and the leaf's primitives where it passes, until one occludes.
-     */
-    static <Q> boolean occludedIn(Bvh bvh, RayPacket p, double ox, double oy, double oz, double invDx,
-            double invDy, double invDz, double tMin, double tMax, LeafOccluder<Q> leaf, Q query) {
-        final float[] b = bvh.nodeBounds;
-        final int[] nd = bvh.nodes;
-        final int[] prims = bvh.primIndices;
-        final int sx = RayBox.nearOffset(invDx), sy = RayBox.nearOffset(invDy),
-                sz = RayBox.nearOffset(invDz);
-        for (int k = 0, count = p.leafCount; k < count; k++) {
-            if (p.leafEntry[k] > tMax) {
-                return false;
-            }
-            int node = p.leafNodes[k];
-            if (RayBox.slab(b, 6 * node, ox, oy, oz, invDx, invDy, invDz, sx, sy, sz, tMin, tMax) == MISS) {
-                continue;
-            }
-            for (int i = nd[2 * node], end = i + nd[2 * node + 1]; i < end; i++) {
-                if (leaf.occludes(query, prims[i], tMax)) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 }

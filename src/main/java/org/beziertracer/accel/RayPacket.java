@@ -8,7 +8,7 @@ package org.beziertracer.accel;
  * Dynamic Bounding Volume Hierarchies", ACM TOG 26(1), 2007), and the leaves a traversal with those
  * bounds could not rule out ({@link Bvh#gather}), sorted by a lower bound of the distance at which
  * any ray of the packet enters them. Each ray then tests only those leaves ({@link
- * Bvh#closestHitIn}): its own slab test on each leaf box, and the leaf's primitives, nearest entry
+ * Bvh#closestHitsIn}, the rays as lanes of a batch): its own slab test on each leaf box, and the leaf's primitives, nearest entry
  * first until its {@code tMax} is passed. Neighbouring camera rays mostly meet the same few leaves,
  * so one traversal of the tree stands for the whole packet's.
  *

@@ -47,6 +47,11 @@ public final class RayBatch {
     boolean[] occluded = new boolean[0];
     /** The lane whose origin the context holds ({@link #loadShadowRay}), or -1. */
     private int originLane = -1;
+    /** A batch of one: a single ray of a gathered packet ({@code SceneIntersector.closestHit} with a packet). */
+    final double[] oneRay = new double[6], oneNormal = new double[3];
+    final Hit[] oneHit = {new Hit()}, oneFrom = new Hit[1];
+    final SurfacePoint[] oneAt = new SurfacePoint[1];
+    final boolean[] oneAnswer = new boolean[1];
     /** Scratch for the traversal's lane lists. */
     int[] live = new int[0], reached = new int[0];
 

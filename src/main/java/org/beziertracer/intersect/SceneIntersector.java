@@ -173,17 +173,34 @@ public final class SceneIntersector {
      */
     public boolean closestHit(TraceContext ctx, RayPacket packet, double ox, double oy, double oz,
                               double dx, double dy, double dz, double tMin, double tMax, Hit hit) {
+        if (batches(packet)) {
+            // a single ray of a gathered packet is a batch of one
+            RayBatch batch = ctx.batch;
+            double[] r = batch.oneRay;
+            r[0] = ox; r[1] = oy; r[2] = oz; r[3] = dx; r[4] = dy; r[5] = dz;
+            closestHits(ctx, packet, r, 1, tMin, tMax, batch.oneHit, batch.oneAnswer, null);
+            if (batch.oneAnswer[0]) {
+                hit.set(batch.oneHit[0]);
+            }
+            return batch.oneAnswer[0];
+        }
         ctx.ensureStack(accel.stackSize());
         ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.beginClosestHit(tMin);
         leaves.beginRay(ctx);
         double best = tMax;
-        if (packet != null && packet.gatheredBy(accel)) {
-            best = accel.closestHitIn(packet, ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx);
-        } else if (accel.primCount() > 0) {
+        if (accel.primCount() > 0) {
             best = accel.closestHit(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
         }
         return finishClosestHit(ctx, tMin, best, hit);
+    }
+
+    /**
+     * True when the rays of {@code packet} go as a {@link RayBatch}: the packet was gathered by this
+     * snapshot's hierarchy and the leaves solve lanes.
+     */
+    private boolean batches(RayPacket packet) {
+        return packet != null && packet.gatheredBy(accel) && accel instanceof Bvh && leaves instanceof PatchLeaves;
     }
 
     /**
@@ -243,13 +260,12 @@ public final class SceneIntersector {
      */
     public void closestHits(TraceContext ctx, RayPacket packet, double[] rays, int n, double tMin, double tMax,
                             Hit[] hits, boolean[] found, SurfacePoint[] points) {
-        if (packet == null || !packet.gatheredBy(accel) || !(accel instanceof Bvh bvh)
-                || !(leaves instanceof PatchLeaves lanes)) {
+        if (!batches(packet)) {
             for (int i = 0; i < n; i++) {
                 int o = 6 * i;
-                found[i] = closestHit(ctx, packet, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4],
+                found[i] = closestHit(ctx, null, rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4],
                         rays[o + 5], tMin, tMax, hits[i]);
-                if (found[i]) {
+                if (found[i] && points != null) {
                     surfacePoint(ctx, hits[i], points[i]);
                 }
             }
@@ -258,11 +274,12 @@ public final class SceneIntersector {
         RayBatch batch = ctx.batch;
         batch.set(ctx, rays, n, tMin, tMax);
         ctx.beginClosestHit(tMin);
-        bvh.closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, lanes, ctx, batch.live, batch.reached);
+        ((Bvh) accel).closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, (PatchLeaves) leaves, ctx,
+                batch.live, batch.reached);
         for (int i = 0; i < n; i++) {
             batch.loadResult(ctx, i);
             found[i] = finishClosestHit(ctx, tMin, tMax, hits[i]);
-            if (found[i]) {
+            if (found[i] && points != null) {
                 surfacePoint(ctx, hits[i], points[i]);
             }
         }
@@ -279,11 +296,10 @@ public final class SceneIntersector {
      */
     public void occludedLeaving(TraceContext ctx, RayPacket packet, double[] rays, int n, double tMin, double tMax,
                                 Hit[] from, SurfacePoint[] at, double[] normals, boolean[] blocked) {
-        if (packet == null || !packet.gatheredBy(accel) || !(accel instanceof Bvh bvh)
-                || !(leaves instanceof PatchLeaves lanes)) {
+        if (!batches(packet)) {
             for (int i = 0; i < n; i++) {
                 int o = 6 * i;
-                blocked[i] = occludedLeaving(ctx, packet, from[i], at[i], normals[3 * i], normals[3 * i + 1],
+                blocked[i] = occludedLeaving(ctx, null, from[i], at[i], normals[3 * i], normals[3 * i + 1],
                         normals[3 * i + 2], rays[o], rays[o + 1], rays[o + 2], rays[o + 3], rays[o + 4], rays[o + 5],
                         tMin, tMax);
             }
@@ -298,8 +314,8 @@ public final class SceneIntersector {
             batch.occluded[i] = shapesBlock(ctx, tMin, tMax);
         }
         try {
-            bvh.occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, lanes, ctx, batch.live, batch.reached,
-                    batch.occluded);
+            ((Bvh) accel).occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, (PatchLeaves) leaves, ctx,
+                    batch.live, batch.reached, batch.occluded);
         } finally {
             batch.endShadows(ctx);
         }
@@ -335,6 +351,9 @@ public final class SceneIntersector {
      */
     public boolean occluded(TraceContext ctx, RayPacket packet, double ox, double oy, double oz,
                             double dx, double dy, double dz, double tMin, double tMax) {
+        if (batches(packet)) {
+            return occludedAlone(ctx, packet, null, null, 0, 0, 0, ox, oy, oz, dx, dy, dz, tMin, tMax);
+        }
         ctx.ensureStack(accel.stackSize());
         ctx.setTraversal(ox, oy, oz, dx, dy, dz);
         ctx.tMin = tMin;
@@ -343,9 +362,6 @@ public final class SceneIntersector {
             return true;
         }
         leaves.beginRay(ctx);
-        if (packet != null && packet.gatheredBy(accel)) {
-            return accel.occludedIn(packet, ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx);
-        }
         return accel.primCount() > 0
                 && accel.occluded(ox, oy, oz, ctx.invDx, ctx.invDy, ctx.invDz, tMin, tMax, leaves, ctx, ctx.stack);
     }
@@ -366,14 +382,31 @@ public final class SceneIntersector {
     public boolean occludedLeaving(TraceContext ctx, RayPacket packet, Hit from, SurfacePoint at,
                                    double nx, double ny, double nz, double ox, double oy, double oz,
                                    double dx, double dy, double dz, double tMin, double tMax) {
+        if (batches(packet)) {
+            return occludedAlone(ctx, packet, from, at, nx, ny, nz, ox, oy, oz, dx, dy, dz, tMin, tMax);
+        }
         if (from.kind == Hit.PATCH) {
             ctx.leaving(from.subPatch, from.u, from.v, at, nx, ny, nz);
         }
         try {
-            return occluded(ctx, packet, ox, oy, oz, dx, dy, dz, tMin, tMax);
+            return occluded(ctx, null, ox, oy, oz, dx, dy, dz, tMin, tMax);
         } finally {
             ctx.originLeaf = -1;
         }
+    }
+
+    /** A single shadow ray of a gathered packet, leaving {@code from} (or nothing: null), as a batch of one. */
+    private boolean occludedAlone(TraceContext ctx, RayPacket packet, Hit from, SurfacePoint at, double nx,
+                                  double ny, double nz, double ox, double oy, double oz, double dx, double dy,
+                                  double dz, double tMin, double tMax) {
+        RayBatch batch = ctx.batch;
+        double[] r = batch.oneRay, nrm = batch.oneNormal;
+        r[0] = ox; r[1] = oy; r[2] = oz; r[3] = dx; r[4] = dy; r[5] = dz;
+        nrm[0] = nx; nrm[1] = ny; nrm[2] = nz;
+        batch.oneFrom[0] = from;
+        batch.oneAt[0] = at;
+        occludedLeaving(ctx, packet, r, 1, tMin, tMax, batch.oneFrom, batch.oneAt, nrm, batch.oneAnswer);
+        return batch.oneAnswer[0];
     }
 
     /**

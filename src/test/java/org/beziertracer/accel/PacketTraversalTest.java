@@ -110,8 +110,7 @@ class PacketTraversalTest {
                     double alone = bvh.closestHit(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
                             scene.invDz, tMin, tMax, scene, scene, stack);
                     scene.resetCalls();
-                    double together = bvh.closestHitIn(packet, scene.ox, scene.oy, scene.oz, scene.invDx,
-                            scene.invDy, scene.invDz, tMin, tMax, scene, scene);
+                    double together = closestHitIn(bvh, packet, scene, tMin, tMax);
                     assertEquals(-1, scene.calledTwice, where + ": a primitive called twice");
                     assertEquals(alone, together, 0, where + " ray " + i + ": closest hit; " + scene.ray());
                     assertEquals(scene.bruteForce(tMax), together, 0, where + ": brute force");
@@ -119,8 +118,7 @@ class PacketTraversalTest {
                     double shorter = together < tMax ? together * (0.5 + rnd.nextDouble()) : tMax;
                     assertEquals(bvh.occluded(scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
                                     tMin, shorter, scene, scene, stack),
-                            bvh.occludedIn(packet, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
-                                    scene.invDz, tMin, shorter, scene, scene), where + ": occluded");
+                            occludedIn(bvh, packet, scene, tMin, shorter), where + ": occluded");
                 }
             }
         }
@@ -159,7 +157,7 @@ class PacketTraversalTest {
 
     @Test
     void anySortedListOfLowerBoundsGivesTheClosestHit() {
-        // closestHitIn's contract, apart from gather: a list of every leaf, each with any lower
+        // the batch traversal's contract, apart from gather: a list of every leaf, each with any lower
         // bound of the ray's entry, ascending, gives the brute-force answer
         Random rnd = new Random(5);
         int checked = 0;
@@ -188,16 +186,13 @@ class PacketTraversalTest {
                 }
                 sortByEntry(p);
                 p.gatheredBy = bvh;
-                double together = bvh.closestHitIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy,
-                        scene.invDz, scene.tMin, tMax, scene, scene);
+                double together = closestHitIn(bvh, p, scene, scene.tMin, tMax);
                 assertEquals(scene.bruteForce(tMax), together, 0, "round " + round + ": " + scene.ray());
                 if (together < tMax) {
                     checked++;
                     // A shadow ray that ends just past the nearest box is blocked by it, one that ends at it is not
-                    assertTrue(bvh.occludedIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
-                            scene.tMin, Math.nextUp(together), scene, scene), "round " + round + ": " + scene.ray());
-                    assertFalse(bvh.occludedIn(p, scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz,
-                            scene.tMin, together, scene, scene), "round " + round + ": " + scene.ray());
+                    assertTrue(occludedIn(bvh, p, scene, scene.tMin, Math.nextUp(together)), "round " + round + ": " + scene.ray());
+                    assertFalse(occludedIn(bvh, p, scene, scene.tMin, together), "round " + round + ": " + scene.ray());
                 }
             }
         }
@@ -295,8 +290,8 @@ class PacketTraversalTest {
         for (double[] rays : bad) {
             assertFalse(bvh.gather(p.of(rays, 2), 0, Double.POSITIVE_INFINITY, stack));
             assertFalse(p.gatheredBy(bvh));
-            assertThrows(IllegalStateException.class, () -> bvh.closestHitIn(p, 0, 0, -20, 10, 5, 1, 0,
-                    Double.POSITIVE_INFINITY, scene, scene));
+            assertThrows(IllegalStateException.class, () -> bvh.closestHitsIn(p, new double[] {0, 0, -20, 10, 5, 1}, 1, 0,
+                    new double[] {Double.POSITIVE_INFINITY}, lanes(scene), scene, new int[1], new int[1]));
         }
         // A good packet is gathered, and adding a ray afterwards makes it stale
         double[] good = {0, 0, -20, 0.1, 0.2, 1, 0, 0, -20, 0.11, 0.2, 1};
@@ -307,7 +302,8 @@ class PacketTraversalTest {
         // A packet of one hierarchy is refused by another, and by the flat list
         assertTrue(bvh.gather(p.of(good, 2), 0, Double.POSITIVE_INFINITY, stack));
         Bvh other = Bvh.build(scene.bounds, 100);
-        assertThrows(IllegalStateException.class, () -> other.occludedIn(p, 0, 0, -20, 10, 5, 1, 0, 1, scene, scene));
+        assertThrows(IllegalStateException.class, () -> other.occludedAllIn(p, new double[] {0, 0, -20, 10, 5, 1}, 1, 0,
+                new double[] {1}, anyLanes(scene), scene, new int[1], new int[1], new boolean[1]));
         assertFalse(FlatList.build(scene.bounds, 100).gather(p, 0, Double.POSITIVE_INFINITY, null));
     }
 
@@ -329,5 +325,42 @@ class PacketTraversalTest {
         assertFalse(bvh.gather(p.of(wideSameSign, 2), 0, Double.POSITIVE_INFINITY, bvh.newStack()));
         assertEquals(RayPacket.MAX_LEAVES, p.leafCount());
         assertFalse(p.gatheredBy(bvh));
+    }
+
+    /**
+     * The closest hit of the scene's current ray, a packet's ray alone: a batch of one lane
+     * ({@link Bvh#closestHitsIn}), the scene's own leaf test for it.
+     */
+    static double closestHitIn(Bvh bvh, RayPacket p, BoxScene scene, double tMin, double tMax) {
+        double[] t = {tMax};
+        bvh.closestHitsIn(p, new double[] {scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz}, 1,
+                tMin, t, lanes(scene), scene, new int[1], new int[1]);
+        return t[0];
+    }
+
+    /** {@link #closestHitIn} for an any-hit query ({@link Bvh#occludedAllIn}). */
+    static boolean occludedIn(Bvh bvh, RayPacket p, BoxScene scene, double tMin, double tMax) {
+        boolean[] blocked = {false};
+        bvh.occludedAllIn(p, new double[] {scene.ox, scene.oy, scene.oz, scene.invDx, scene.invDy, scene.invDz}, 1,
+                tMin, new double[] {tMax}, anyLanes(scene), scene, new int[1], new int[1], blocked);
+        return blocked[0];
+    }
+
+    /** The scene's closest-hit leaf test over lanes (one lane: the scene's current ray). */
+    static LaneIntersector<BoxScene> lanes(BoxScene scene) {
+        return (q, prim, lanes, count, tMax) -> {
+            for (int j = 0; j < count; j++) {
+                tMax[lanes[j]] = q.intersect(q, prim, tMax[lanes[j]]);
+            }
+        };
+    }
+
+    /** The scene's any-hit leaf test over lanes (one lane: the scene's current ray). */
+    static LaneOccluder<BoxScene> anyLanes(BoxScene scene) {
+        return (q, prim, lanes, count, tMax, occluded) -> {
+            for (int j = 0; j < count; j++) {
+                occluded[lanes[j]] |= q.occludes(q, prim, tMax[lanes[j]]);
+            }
+        };
     }
 }
