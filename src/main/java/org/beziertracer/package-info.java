@@ -6,8 +6,8 @@
  *
  * <p>The hot path, in reading order (a packet of camera rays, see {@code RayPacket}):
  * {@code RenderWorker.renderTile → PixelSampler.offset → Camera.generateRay →
- * WhittedTracer.tracePacket → SceneIntersector.gather → SceneIntersector.closestHit →
- * Bvh.closestHitIn → PatchLeaves.intersect → ClippingLeaves.solve → BezierClipper.intersect →
+ * WhittedTracer.tracePacket → SceneIntersector.gather → SceneIntersector.closestHits →
+ * Bvh.closestHitsIn → ClippingLeaves.intersect (lanes) → BezierClipper.begin → NewtonLanes.solve →
  * SceneIntersector.surfacePoint → PatchLeaves.surfacePoint → (per light: SceneIntersector.gather,
  * SceneIntersector.occludedLeaving) → WhittedTracer.shadeHit → Film.addSample}
  */
