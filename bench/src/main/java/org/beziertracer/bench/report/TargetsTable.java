@@ -142,6 +142,7 @@ public final class TargetsTable {
     }
 
     private static final Pattern HEAP_FRAME = Pattern.compile("build ([0-9,]+) ms \\+ frame ([0-9,]+) ms");
+    private static final Pattern HEAP_CPU = Pattern.compile("CPU time build [0-9,]+ ms, frame ([0-9,]+) ms");
     private static final Pattern HEAP_BYTES = Pattern.compile("together ([0-9,]+) a patch");
     private static final Pattern HEAP_BUILD = Pattern.compile("build \\(split \\+ BVH\\): ([0-9,]+) ms");
 
@@ -184,9 +185,11 @@ public final class TargetsTable {
         singleRow(sb, "teapot vs Sunflow subdivs 16 (same run)", sunflow, "0.48×", "≤ 0.3×", null);
         singleRow(sb, "Sunflow's curved bicubic patch with shadows vs Sunflow", sunflow, "0.60×", "≤ 0.4×", null);
 
-        Double heapFrame = find(HEAP_FRAME, heap, 2);
+        Double heapFrame = find(HEAP_FRAME, heap, 2), heapCpu = find(HEAP_CPU, heap, 1);
         singleRow(sb, "100k-patch bumpy surface (`BigModels` body): the frame itself",
-                heapFrame == null ? "not measured" : ms(heapFrame) + " (first frame, one wall-clock run)",
+                heapFrame == null ? "not measured" : ms(heapFrame) + " wall clock"
+                        + (heapCpu == null ? "" : ", " + ms(heapCpu) + " CPU time of the process")
+                        + " (the first frame, JIT still warming; one run)",
                 "1.35–2.1 s", "≤ 0.5 s", heapFrame == null ? null : heapFrame <= 500);
 
         Double d0 = drag.get(key("dragFrame", "scene", "wavy10", "tessellate", "0"));
