@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # One run, one machine: builds the benchmarks, runs the report set of JMH benchmarks one after
-# another, and writes docs/perf/report.md (stamped with date, commit, machine, JDK and load) with
-# its plots in docs/perf/report-*.png and the JMH JSON in bench/results/report/.
+# another (with the SIMD kernel, and FrameBench once more with the scalar kernel), the 100k-patch
+# heap report, and writes docs/performance.md — the issue 32 targets table, then the other
+# benchmark sections — stamped with date, commit, CPU, cores, JDK, kernel and load, with its plots
+# in docs/perf/report-*.png and what feeds its tables in bench/results/report/.
 #
 #   bench/report.sh            # the whole set (about 30 minutes on 2 cores)
 #   bench/report.sh --quick    # one iteration each (a smoke run: the numbers mean little)
 #
-# Run it on a quiet machine; the load average at start and end is written into the report.
+# Run it on a quiet machine; the load average at start and end is written into the page.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=false
@@ -17,66 +19,115 @@ else
   iter=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 fi
 out=bench/results/report
+page=docs/performance.md
 mkdir -p "$out" docs/perf
 ./mvnw -B -q -f bench/pom.xml package
 jar=bench/target/benchmarks.jar
+vector=--add-modules=jdk.incubator.vector
+declare -A fork_args=([simd]="$vector" [scalar]="$vector -Dbeziertracer.kernel=scalar")
+started=$(date +%s)
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
-# name | JMH selector and parameters | plot title | plot options
+# name | JMH selector and parameters | plot title | plot options | kernel (simd or scalar)
 sets=(
-  "scene|SceneBench -p patchCount=32|Teapot: closestHit and occluded, sub-patch BVH on/off|--rays"
-  "raypatch|RayPatchBench|One patch: each solver by degree and ray kind|--rays"
-  "methods|MethodBench -p scene=teapot,3,6,9,15|closestHit per method (teapot, height fields of degree 3..15)|--rays"
-  "freeform|FreeFormBench|Polynomial, rational and trimmed surfaces|--rays"
-  "tessellation|TessellationBench.closestHit|Exact (0) vs tessellated K (teapot)|--rays"
-  "kernel|KernelBench|de Casteljau kernel by degree|"
-  "build|SceneBuildBench -p model=teapots3200,teapots32000,body100000,grid10|Split + BVH build, and an edit|"
-  "frame|FrameBench -p threads=2|Frame 800x600, 1 spp, Phong + shadows (median, min..p90)|"
-  "degree|DegreeSweep|Cost versus degree: the wavy grid of degree 1..15, exact and tessellated at equal accuracy|"
+  "frame|FrameBench -p threads=2|Frame 800x600, 1 spp, Phong + shadows, SIMD kernel (median, min..p90)||simd"
+  "frame-scalar|FrameBench -p threads=2|Frame 800x600, 1 spp, Phong + shadows, scalar kernel (median, min..p90)||scalar"
+  "drag|DragBench -p scene=wavy10|Drag on the 10x10 grid: one edit + the full frame (median, min..p90)||simd"
+  "build|SceneBuildBench -p model=teapots3200,teapots32000,body100000,grid10|Split + BVH build, and an edit||simd"
+  "scene|SceneBench -p patchCount=32|Teapot: closestHit and occluded, sub-patch BVH on/off|--rays|simd"
+  "raypatch|RayPatchBench|One patch: each solver by degree and ray kind|--rays|simd"
+  "methods|MethodBench -p scene=teapot,3,6,9,15|closestHit per method (teapot, height fields of degree 3..15)|--rays|simd"
+  "freeform|FreeFormBench|Polynomial, rational and trimmed surfaces|--rays|simd"
+  "tessellation|TessellationBench.closestHit|Exact (0) vs tessellated K (teapot)|--rays|simd"
+  "kernel|KernelBench|de Casteljau kernel by degree||simd"
+  "degree|DegreeSweep|Cost versus degree: the wavy grid of degree 1..15, exact and tessellated at equal accuracy||simd"
 )
 for s in "${sets[@]}"; do
-  IFS='|' read -r name selector title opts <<<"$s"
-  echo "report: $name ($selector)" >&2
+  IFS='|' read -r name selector title opts kernel <<<"$s"
+  echo "report: $name ($selector, $kernel kernel)" >&2
   # shellcheck disable=SC2086
-  java -jar "$jar" $selector "${iter[@]}" -rf json -rff "$out/$name.json" >"$out/$name.log" 2>&1 \
-    || { echo "report: $name failed, see $out/$name.log" >&2; exit 1; }
+  java -jar "$jar" $selector "${iter[@]}" -jvmArgsAppend "${fork_args[$kernel]}" -rf json -rff "$out/$name.json" \
+    >"$out/$name.log" 2>&1 || { echo "report: $name failed, see $out/$name.log" >&2; exit 1; }
 done
+echo "report: heap report, 100k-patch body" >&2
+java -Xmx4g "$vector" -cp "$jar" org.beziertracer.bench.report.HeapReport body 100000 render \
+  >"$out/heap-body100000.txt" 2>"$out/heap.log" || { echo "report: heap report failed, see $out/heap.log" >&2; exit 1; }
 load_end=$(cut -d' ' -f1-3 /proc/loadavg)
+minutes=$(( ($(date +%s) - started + 59) / 60 ))
+kernel_simd=$(java "$vector" -cp "$jar" org.beziertracer.bench.report.TargetsTable --kernel 2>/dev/null)
+kernel_scalar=$(java "$vector" -Dbeziertracer.kernel=scalar -cp "$jar" org.beziertracer.bench.report.TargetsTable --kernel 2>/dev/null)
+report() { java -cp "$jar" org.beziertracer.bench.report."$@"; }
 {
-  echo "# Benchmark report"
+  echo "# Performance"
   echo
-  echo "Generated by \`bench/report.sh\`$($quick && echo ' --quick') in one run on one machine; do not edit by hand."
+  if $quick; then
+    echo "> **Smoke run (\`bench/report.sh --quick\`, one iteration each): the numbers mean little.** Regenerate"
+    echo "> with \`bench/report.sh\` on a quiet machine before quoting anything from this page."
+    echo
+  fi
+  echo "Current figures of Bézier Tracer, generated by \`bench/report.sh$($quick && echo ' --quick')\` in one run on one"
+  echo "machine; do not edit by hand. The dated optimisation passes and the figures quoted in earlier"
+  echo "issues are in the [performance journal](performance-journal.md)."
   echo
-  echo "| | |"
+  echo "## How to reproduce"
+  echo
+  echo '```sh'
+  echo "bench/report.sh            # builds bench/target/benchmarks.jar, runs everything, rewrites this page (about 30 minutes on 2 cores)"
+  echo "bench/report.sh --quick    # one iteration each: a smoke run of the whole pipeline"
+  echo '```'
+  echo
+  echo "Every JMH fork starts with \`-jvmArgsAppend \"$vector\"\` (the SIMD kernel, as the README's"
+  echo "launch command gives); the scalar columns add \`-Dbeziertracer.kernel=scalar\`. Pictures are the same"
+  echo "to the byte with either kernel. Details of each benchmark: [bench/README.md](../bench/README.md)."
+  echo
+  echo "| stamp | |"
   echo "|---|---|"
-  echo "| date | $(date -u '+%Y-%m-%d %H:%M UTC') |"
+  echo "| date | $(date -u '+%Y-%m-%d %H:%M UTC') (the run took about $minutes min) |"
   echo "| commit | $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- src bench/src || echo ' (with uncommitted changes)') |"
-  echo "| machine | $(nproc) cores, $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo) |"
+  echo "| CPU | $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1) |"
+  echo "| cores, memory | $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo) |"
   echo "| JDK | $(java -version 2>&1 | head -1) |"
+  echo "| kernel | $kernel_simd (default columns); scalar columns: $(echo "$kernel_scalar" | cut -d: -f1) |"
+  echo "| fork JVM arguments (from the JSON) | SIMD: \`$(report TargetsTable --jvm-args "$out/frame.json")\`; scalar: \`$(report TargetsTable --jvm-args "$out/frame-scalar.json")\` |"
   echo "| JMH settings | ${iter[*]} |"
   echo "| load average (1, 5, 15 min) | at start $load_start; at end $load_end |"
+  echo
+  echo "## Issue 32 targets"
+  echo
+  echo "2 cores, 800×600, 1 spp, Phong + shadow rays, exact against \`--tessellate K\` (the case's"
+  echo "equal-accuracy K: the smallest K whose silhouette is within 0.5 px of the exact one) in one run:"
+  echo "\`FrameBench -p threads=2\`, median ms a frame. Drag: \`DragBench -p scene=wavy10\` (one edit plus"
+  echo "the full frame), pictures a second = 1000 / median. Builds: \`SceneBuildBench\` \`build\`, median"
+  echo "(\`teapots3200\`, \`teapots32000\`, \`body100000\`). The 100k-patch frame and bytes a patch:"
+  echo "\`HeapReport body 100000 render\` (one wall-clock run; retained heap of model + acceleration data"
+  echo "after full collections; its output is [bench/results/report/heap-body100000.txt](../bench/results/report/heap-body100000.txt))."
+  echo "Status is judged on the SIMD column."
+  echo
+  report TargetsTable "$out/frame.json" "$out/frame-scalar.json" "$out/drag.json" "$out/build.json" "$out/heap-body100000.txt"
+  echo
+  echo "Plots: [frames, SIMD](perf/report-frame.png), [frames, scalar](perf/report-frame-scalar.png),"
+  echo "[drag](perf/report-drag.png), [builds](perf/report-build.png)."
+  echo
+  echo "## The report set"
   echo
   echo "Read the median and min columns: on a shared machine the mean's error is wide."
   echo
   for s in "${sets[@]}"; do
-    IFS='|' read -r name selector title opts <<<"$s"
+    IFS='|' read -r name selector title opts kernel <<<"$s"
+    echo "### $title"
+    echo
+    echo "\`$selector\`, $kernel kernel."
+    echo
     if [ "$name" = degree ]; then
-      echo "## $title"
-      echo
-      java -cp "$jar" org.beziertracer.bench.report.DegreeCurve "$out/$name.json" "docs/perf/report-$name.png"
-      echo
-      echo "![$name](report-$name.png)"
-      echo
-      continue
+      report DegreeCurve "$out/$name.json" "docs/perf/report-$name.png"
+    else
+      # shellcheck disable=SC2086
+      report Plots $opts --title "$title" "$out/$name.json" "docs/perf/report-$name.png" >&2
+      report Summary "$out/$name.json" | sed '1d'
     fi
-    # shellcheck disable=SC2086
-    java -cp "$jar" org.beziertracer.bench.report.Plots $opts --title "$title" "$out/$name.json" "docs/perf/report-$name.png" >&2
-    echo "## $title"
     echo
-    java -cp "$jar" org.beziertracer.bench.report.Summary "$out/$name.json" | sed '1d'
-    echo
-    echo "![$name](report-$name.png)"
+    echo "![$name](perf/report-$name.png)"
     echo
   done
-} >docs/perf/report.md
+} >"$page"
 rm -f "$out"/*.log
-echo "report: docs/perf/report.md" >&2
+echo "report: $page" >&2

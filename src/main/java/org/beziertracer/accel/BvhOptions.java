@@ -15,14 +15,14 @@ public record BvhOptions(int maxLeafSize, int binCount, int mortonPrims) {
     /** Largest accepted {@link #binCount()}. */
     public static final int MAX_BIN_COUNT = 256;
 
-    /** Default {@link #mortonPrims()}: the binned SAH up to this size (see docs/performance.md). */
+    /** Default {@link #mortonPrims()}: the binned SAH up to this size (see docs/performance-journal.md). */
     public static final int MORTON_PRIMS = 1 << 18;
 
     /**
      * Builds over at least this many primitives in groups of four or more on average (a big
      * scene's patches, split into sub-patches) use the two-level {@link Bvh#build(double[], int,
      * int[], BvhOptions)}; below it the one tree over all primitives is built fast enough and
-     * traces a little faster (docs/performance.md, "Fifth pass").
+     * traces a little faster (docs/performance-journal.md, "Fifth pass").
      */
     public static final int GROUPED_PRIMS = 1 << 16;
 

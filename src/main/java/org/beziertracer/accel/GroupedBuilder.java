@@ -17,7 +17,7 @@ import java.util.stream.IntStream;
  * one tree, since the groups are not instances. A group's few tens of sub-patches lie side by side
  * on one patch, where a median split costs a fraction of a binned SAH's sweep per node and loses
  * little: on the 100-teapot scene (93,400 sub-patches) the build takes 8–11 instead of 42–54 ms for
- * trees 5 % dearer by the SAH that traced its frame faster (docs/performance.md, "Fifth pass"). A
+ * trees 5 % dearer by the SAH that traced its frame faster (docs/performance-journal.md, "Fifth pass"). A
  * tree cannot mix the sub-patches of neighbouring patches, so it is used only for big scenes
  * ({@link BvhOptions#groupsPay}).
  *

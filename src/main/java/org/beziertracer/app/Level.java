@@ -18,7 +18,7 @@ public enum Level {
     /**
      * K of the tessellated mode: K×K cells per patch. The default 16 is the first offered choice
      * whose teapot silhouette stays within 0.5 px of the exact one at 800×600 (0.32 px; the
-     * smallest such K is 15; docs/performance.md, "Exact vs tessellated at equal accuracy").
+     * smallest such K is 15; docs/performance-journal.md, "Exact vs tessellated at equal accuracy").
      */
     TESSELLATION("tessellation", 1, Tessellator.MAX_SEGMENTS, 16, 4, 8, 16, 32, 64),
     /** Control points along u of the grid that Reset Control Points makes. */

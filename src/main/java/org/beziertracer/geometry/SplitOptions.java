@@ -47,7 +47,7 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
      * bicubic arch (32 leaves at the base tolerance, 142 at the fine one) the clipping searches and
      * Newton's evaluations fall by more than the deeper traversal costs (one thread, min of 14
      * frames, alternating: 182–183 against 140–151 ms; the teapot, 1,566 leaves against 6,468:
-     * 151–153 against 144–149 ms). See docs/performance.md, "Sixth pass".
+     * 151–153 against 144–149 ms). See docs/performance-journal.md, "Sixth pass".
      */
     public static final double FINE_FLATNESS = 0.4;
     /** Extra halvings of the fine split ({@link #FINE_FLATNESS}). */
@@ -68,7 +68,7 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
 
     /**
      * Adaptive splitting with the defaults tuned for Bézier clipping on the teapot (see
-     * docs/performance.md, "Sub-patch tuning"): flatness 0.05 of the box diagonal, at most 6
+     * docs/performance-journal.md, "Sub-patch tuning"): flatness 0.05 of the box diagonal, at most 6
      * halvings, and the {@link #fine} split up to bicubic in scenes of at most
      * {@link #FINE_PATCHES} patches (the figures below are without it). Against the former
      * 0.05 / 8 it makes 1,566 instead of 3,856 teapot sub-patches for the same work per ray (1.18
@@ -86,7 +86,7 @@ public record SplitOptions(boolean enabled, double flatnessTolerance, int maxDep
      * (a clip iteration projects and restricts {@code (n+1)(m+1)} points, a Newton step evaluates
      * them), while a flatter leaf is more often proved single-root and solved by Newton from its
      * corners without clipping: on the 10×10-point wavy grid (degree 9) this cut the exact frame by
-     * about a third (see docs/performance.md, "Issue 9"). A split with a solver's own
+     * about a third (see docs/performance-journal.md, "Issue 9"). A split with a solver's own
      * {@link #criterion} (Newton's refinement, which halves the waves of a high-degree patch itself)
      * keeps its tolerance.
      */

@@ -53,7 +53,7 @@ public final class FrameScenes {
     /**
      * Smallest K whose silhouette is within 0.5 px of the exact one on each case's view
      * (measured by {@code report.SilhouetteAccuracy -s 16 --scene NAME --first …}; tables in
-     * docs/performance.md, "Equal accuracy per case"). The default patch is a flat square: two
+     * docs/performance-journal.md, "Equal accuracy per case"). The default patch is a flat square: two
      * triangles (K = 1) are exact.
      */
     public static int equalK(String name) {
