@@ -107,6 +107,7 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
         // single-root costs less to solve (Newton, from the origin's point on its own leaf)
         if (origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
                 && OriginLeaf.cannotMeet(ctx, table, s)) {
+            ctx.originCannotMeet++;
             return false;
         }
         return solve(ctx, s, ctx.tMin, tMax);
@@ -140,6 +141,8 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
             ctx.evalPatch = -1;
             table.evaluatePatch(k, u, v, e, ctx.scratch);
             ctx.evaluations++;
+        } else {
+            ctx.hitEvaluations++;
         }
         double du = plain ? 1 : 1 / (domain[4 * k + 1] - domain[4 * k]);
         double dv = plain ? 1 : 1 / (domain[4 * k + 3] - domain[4 * k + 2]);
