@@ -134,12 +134,14 @@ final class BezierClipper {
         // the origin's point, behind the ray, and no record is read (nor any evaluation made)
         boolean own = s == ctx.originLeaf, originSingle = own && RootUniqueness.atMostOneRoot(ctx, tab, s);
         if (originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
+            ctx.originBehind++;
             return MISS;
         }
         if (records == null) {
             cornerStart(ctx, tab, s);
         } else if ((kind = NewtonSolver.start(ctx, records, NewtonLeafRecords.STRIDE * s, tMin, tMax, tolerance))
                 == NewtonSolver.MISS) {
+            ctx.recordMisses++;
             return MISS; // the leaf lies in its enclosure, which the ray misses in (tMin, tMax)
         }
         // The record's balls bound a polynomial leaf's derivatives (not a rational one's): when
@@ -148,16 +150,25 @@ final class BezierClipper {
         // (on the ray's own leaf the table's test has run above)
         boolean unique = originSingle || kind == NewtonSolver.SINGLE_ROOT && polynomial
                 || !own && RootUniqueness.atMostOneRoot(ctx, tab, s);
+        if (unique) {
+            ctx.singleRootLeaves++;
+        }
         if (unique && own) {
             if (!originSingle && OriginRoot.behind(ctx, tab, s, tMin, tolerance)) {
+                ctx.originBehind++;
                 return MISS; // its one root is the origin's point, behind the ray: proven unevaluated
             }
             OriginLeaf.startAtOrigin(ctx, tab, s); // a shadow ray's own leaf: its one root is the origin's point
+            ctx.originStarts++;
         } else if (unique && quadratics != null) {
             // A nearer start, when the model's lies in the leaf. When it lies outside, the ray
             // nearly always passes beside the leaf (wavy10: 14,400 of 14,750 such leaves a frame),
             // and the winding test, which settles a single-root leaf either way, goes before Newton
-            besideFirst = !LeafQuadratics.start(ctx, quadratics, s) && LeafQuadratics.has(quadratics, s);
+            boolean modelStart = LeafQuadratics.start(ctx, quadratics, s);
+            if (modelStart) {
+                ctx.quadraticStarts++;
+            }
+            besideFirst = !modelStart && LeafQuadratics.has(quadratics, s);
         }
         double su = ctx.clip[0], sv = ctx.clip[1]; // (the quarters' own starts overwrite ctx.clip)
         // The leaf's slabs are tried where the ray would cost more than their test: before any
@@ -169,6 +180,7 @@ final class BezierClipper {
         if (!unique && quarters != null) {
             int settled = quarters.solve(ctx, tab, s, tMin, tMax, tolerance);
             if (settled != LeafQuarters.UNDECIDED) {
+                ctx.quarterLeaves++;
                 return settled == LeafQuarters.ROOT ? HIT : MISS;
             }
         }
@@ -228,7 +240,11 @@ final class BezierClipper {
      */
     private static boolean beside(TraceContext ctx, float[] slabs, boolean own, int s, double tMin, double tMax,
                                   double tolerance) {
-        return slabs != null && !own && LeafSlabs.misses(ctx, slabs, s, tMin, tMax, windingMargin(ctx, tolerance));
+        if (slabs != null && !own && LeafSlabs.misses(ctx, slabs, s, tMin, tMax, windingMargin(ctx, tolerance))) {
+            ctx.slabMisses++;
+            return true;
+        }
+        return false;
     }
 
     /**
@@ -236,7 +252,11 @@ final class BezierClipper {
      * {@code s} holds no root ({@link BoundaryWinding}).
      */
     private static boolean holdsNoRoot(TraceContext ctx, SubPatchTable tab, int s, double tolerance) {
-        return BoundaryWinding.holdsNoRoot(ctx, tab, s, windingMargin(ctx, tolerance));
+        if (BoundaryWinding.holdsNoRoot(ctx, tab, s, windingMargin(ctx, tolerance))) {
+            ctx.windingMisses++;
+            return true;
+        }
+        return false;
     }
 
     /** The winding test's margin: the tolerance and the rounding of the projection about the ray's origin. */

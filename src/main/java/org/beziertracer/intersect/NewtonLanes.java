@@ -37,6 +37,8 @@ final class NewtonLanes {
     double[] residual1 = new double[0], residual2 = new double[0], rootT = new double[0];
     double[] escapeU = new double[0], escapeV = new double[0];
     /** The slots to evaluate this round, their points, and the kernel's output (component-major). */
+    /** Newton's last steps taken without an evaluation ({@link #extrapolate}), cumulative: a work counter. */
+    long extrapolations;
     private int[] due = new int[0];
     private double[] dueU = new double[0], dueV = new double[0], out = new double[0];
 
@@ -196,6 +198,7 @@ final class NewtonLanes {
         u[j] = nu;
         v[j] = nv;
         takeIterate(batch, j);
+        extrapolations++;
         return true;
     }
 

@@ -112,8 +112,12 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
      */
     final boolean provenBehind(TraceContext ctx, int s) {
         int origin = ctx.originLeaf;
-        return origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
-                && OriginLeaf.cannotMeet(ctx, table, s);
+        if (origin >= 0 && table.parent[s] == table.parent[origin] && !RootUniqueness.atMostOneRoot(ctx, table, s)
+                && OriginLeaf.cannotMeet(ctx, table, s)) {
+            ctx.originCannotMeet++;
+            return true;
+        }
+        return false;
     }
 
     /**
@@ -162,6 +166,8 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
             ctx.evalPatch = -1;
             table.evaluatePatch(k, u, v, e, ctx.scratch);
             ctx.evaluations++;
+        } else {
+            ctx.hitEvaluations++;
         }
         double du = plain ? 1 : 1 / (domain[4 * k + 1] - domain[4 * k]);
         double dv = plain ? 1 : 1 / (domain[4 * k + 3] - domain[4 * k + 2]);

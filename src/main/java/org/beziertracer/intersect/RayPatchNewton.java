@@ -104,6 +104,7 @@ final class RayPatchNewton {
         e[3] = ctx.originSux; e[4] = ctx.originSuy; e[5] = ctx.originSuz;
         e[6] = ctx.originSvx; e[7] = ctx.originSvy; e[8] = ctx.originSvz;
         takeIterate(ctx, u, v);
+        ctx.originEvaluations++;
         return true;
     }
 
@@ -181,6 +182,7 @@ final class RayPatchNewton {
         e[1] = py;
         e[2] = pz;
         takeIterate(ctx, u, v);
+        ctx.extrapolations++;
         return true;
     }
 

@@ -156,6 +156,30 @@ public final class TraceContext {
     long besideFirst;
     /** Quarters of a leaf whose Newton attempt failed and the winding of their border was asked ({@link LeafQuarters}). */
     long quarterWindings;
+    /** Leaves whose record rejected the ray, no evaluation made ({@link NewtonSolver#start} returning MISS). */
+    long recordMisses;
+    /** Leaves the ray misses by their {@link LeafSlabs} ({@code BezierClipper.beside}). */
+    long slabMisses;
+    /** Single-root leaves the winding of their border proved empty ({@code BezierClipper.holdsNoRoot}). */
+    long windingMisses;
+    /** Newton starts where the ray meets the leaf's quadratic model ({@link LeafQuadratics#start} true). */
+    long quadraticStarts;
+    /** Leaves proven single-root for the ray before any search (by the record or {@link RootUniqueness}). */
+    long singleRootLeaves;
+    /** Leaves {@link LeafQuarters} settled (a miss or a root) before any clipping. */
+    long quarterLeaves;
+    /** Newton's last steps taken without an evaluation ({@link RayPatchNewton#extrapolate} true). */
+    long extrapolations;
+    /** A shadow ray's own leaves proven to hold only the origin's point, behind it ({@link OriginRoot#behind}). */
+    long originBehind;
+    /** Leaves of the patch a shadow ray leaves skipped as provably behind it ({@link OriginLeaf#cannotMeet}). */
+    long originCannotMeet;
+    /** Newton starts on a shadow ray's own leaf at the origin's point ({@link OriginLeaf#startAtOrigin}). */
+    long originStarts;
+    /** Newton's first evaluations taken from the origin's point ({@code RayPatchNewton.fromOrigin}). */
+    long originEvaluations;
+    /** Surface points at a hit made from the solver's last evaluation ({@link PatchLeaves#surfacePoint}). */
+    long hitEvaluations;
 
     /** The kernel that evaluates a batch's lanes together ({@link NewtonLanes}). */
     final LaneKernel kernel;
@@ -169,6 +193,34 @@ public final class TraceContext {
 
     TraceContext(LaneKernel kernel) {
         this.kernel = kernel;
+    }
+
+    /**
+     * The work counters of the shortcuts (those above besides the public ones, and the lanes'
+     * {@link NewtonLanes#extrapolations}) by name, cumulative over this context's life: tests pin
+     * the work of fixed frames by them (each shortcut only saves work, never changes an answer).
+     */
+    public java.util.Map<String, Long> shortcutCounts() {
+        java.util.Map<String, Long> m = new java.util.LinkedHashMap<>();
+        m.put("recordMisses", recordMisses);
+        m.put("slabMisses", slabMisses);
+        m.put("windingMisses", windingMisses);
+        m.put("quadraticStarts", quadraticStarts);
+        m.put("besideFirst", besideFirst);
+        m.put("singleRootLeaves", singleRootLeaves);
+        m.put("quarterLeaves", quarterLeaves);
+        m.put("quarterWindings", quarterWindings);
+        m.put("extrapolations", extrapolations);
+        m.put("laneExtrapolations", newtonLanes.extrapolations);
+        m.put("originBehind", originBehind);
+        m.put("originQuarters", originQuarters);
+        m.put("originCannotMeet", originCannotMeet);
+        m.put("originStarts", originStarts);
+        m.put("nearOriginStarts", nearOriginStarts);
+        m.put("anyRootsByNewton", anyRootsByNewton);
+        m.put("originEvaluations", originEvaluations);
+        m.put("hitEvaluations", hitEvaluations);
+        return m;
     }
 
     /** Squared direction lengths strictly between these take {@link #setRay}'s unscaled path. */

@@ -89,6 +89,11 @@ final class RenderWorker {
         return true;
     }
 
+    /** The tracer's query context (tests read its work counters). */
+    org.beziertracer.intersect.TraceContext context() {
+        return tracer.context();
+    }
+
     /** Makes the camera ray of sample {@code s} of pixel {@code (x, y)} the packet's ray {@code n}; returns n + 1. */
     private int addRay(RenderState st, Camera camera, int x, int y, int s, int n) {
         if (6 * n + 6 > rays.length) {

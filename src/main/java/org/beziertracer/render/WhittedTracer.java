@@ -110,6 +110,9 @@ public final class WhittedTracer {
 
     public long primaryRays() { return primaryRays; }
 
+    /** The tracer's query context (tests read its work counters, {@link TraceContext#shortcutCounts}). */
+    TraceContext context() { return ctx; }
+
     /**
      * Adds the rays traced and the intersector's work since the last call to {@code st}'s counters,
      * and starts counting again.
