@@ -159,11 +159,9 @@ public final class RayBatch {
      * as for a ray alone). The lane's results stay here: a hit goes to {@link #record}.
      */
     void loadRay(TraceContext ctx, int i) {
-        int o = 6 * i, f = FRAME * i;
-        double[] t = traversal, fr = frame;
-        ctx.ox = t[o]; ctx.oy = t[o + 1]; ctx.oz = t[o + 2];
-        ctx.invDx = t[o + 3]; ctx.invDy = t[o + 4]; ctx.invDz = t[o + 5];
-        ctx.dx = fr[f]; ctx.dy = fr[f + 1]; ctx.dz = fr[f + 2];
+        int f = FRAME * i;
+        double[] fr = frame;
+        loadTraversal(ctx, i);
         if (frameSet[i]) {
             ctx.n1x = fr[f + 3]; ctx.n1y = fr[f + 4]; ctx.n1z = fr[f + 5];
             ctx.n2x = fr[f + 6]; ctx.n2y = fr[f + 7]; ctx.n2z = fr[f + 8];
@@ -181,6 +179,15 @@ public final class RayBatch {
         }
         ctx.tMin = tMin;
         ctx.anyHit = false;
+    }
+
+    /** Lane {@code i}'s origin, direction and reciprocal direction into the context. */
+    private void loadTraversal(TraceContext ctx, int i) {
+        int o = 6 * i, f = FRAME * i;
+        double[] t = traversal, fr = frame;
+        ctx.ox = t[o]; ctx.oy = t[o + 1]; ctx.oz = t[o + 2];
+        ctx.invDx = t[o + 3]; ctx.invDy = t[o + 4]; ctx.invDz = t[o + 5];
+        ctx.dx = fr[f]; ctx.dy = fr[f + 1]; ctx.dz = fr[f + 2];
     }
 
     /**
@@ -213,11 +220,7 @@ public final class RayBatch {
      * surface point.
      */
     void loadResult(TraceContext ctx, int i) {
-        int o = 6 * i, f = FRAME * i;
-        double[] t = traversal, fr = frame;
-        ctx.ox = t[o]; ctx.oy = t[o + 1]; ctx.oz = t[o + 2];
-        ctx.invDx = t[o + 3]; ctx.invDy = t[o + 4]; ctx.invDz = t[o + 5];
-        ctx.dx = fr[f]; ctx.dy = fr[f + 1]; ctx.dz = fr[f + 2];
+        loadTraversal(ctx, i);
         ctx.planesSet = false;
         ctx.tMin = tMin;
         ctx.anyHit = false;
