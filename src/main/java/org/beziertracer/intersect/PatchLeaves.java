@@ -66,6 +66,9 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext> {
         return recordRoot(ctx, s);
     }
 
+    @Override
+    public final org.beziertracer.accel.LaneIntersector<TraceContext> lanes() { return this; }
+
     /** Records the solver's root ({@code ctx.root*}) on leaf {@code s} as the best hit; returns its t. */
     final double recordRoot(TraceContext ctx, int s) {
         int k = table.parent[s];

@@ -302,6 +302,15 @@ public final class TraceContext {
         best.subPatch = prim;
     }
 
+    /** {@link #recordHit(int, int)} for a primitive of another kind ({@link Hit#kind}) and its {@code index}. */
+    void recordHit(int kind, int index, int prim) {
+        found = true;
+        best.t = rootT;
+        best.kind = kind;
+        best.index = index;
+        best.subPatch = prim;
+    }
+
     /**
      * Keeps the solver's last evaluation ({@link #eval}, at {@code (evalU, evalV)} of patch
      * {@code evalPatch}) as the evaluation at the best hit.
