@@ -227,6 +227,8 @@ public final class SceneIntersector {
             }
         }
         if (analytic) {
+            hit.b1 = 0;
+            hit.b2 = 0;
             double px = ox + hit.t * dx, py = oy + hit.t * dy, pz = oz + hit.t * dz;
             if (hit.kind == Hit.PLANE) {
                 shapes.planeUv(hit.index, px, py, pz, hit);
