@@ -63,7 +63,7 @@ public final class AppModel {
         SceneDocument start = ModelLoader.builtIn("patch");
         document = new Document(start.scene(), "patch");
         settings = new SettingsModel(s -> settingsChanged());
-        view = new ViewModel(ViewModel.home(start.scene(), start.scene().controlBounds(), settings.current().fovDegrees()),
+        view = new ViewModel(ViewModel.home(start.scene(), start.scene().bounds(), settings.current().fovDegrees()),
                 this::viewMoved, this::viewMoved);
         status = new StatusModel(threads.ui(), this::notifyListeners);
         overlay = new OverlayModel(threads.overlay(), threads.ui(), view::repaint, this::notifyListeners,
@@ -131,7 +131,7 @@ public final class AppModel {
     public void resetView() {
         Scene s = document.scene();
         double fov = settings.current().fovDegrees();
-        viewTasks.submit("framing", () -> ViewModel.home(s, s.controlBounds(), fov), home -> {
+        viewTasks.submit("framing", () -> ViewModel.home(s, s.bounds(), fov), home -> {
             view.replace(home);
             viewMoved();
             notifyListeners();

@@ -50,7 +50,7 @@ final class DocumentLoader {
         target.status().task(task);
         io.submit(task, () -> {
             SceneDocument doc = read.call();
-            return new Loaded(name, source, doc, doc.scene().controlBounds());
+            return new Loaded(name, source, doc, doc.scene().bounds());
         }, loaded -> {
             ended(task);
             target.opened(loaded);

@@ -39,7 +39,7 @@ final class SnapshotCache {
         if (prev == scene) {
             return old;
         }
-        if (prev.patchCount() != scene.patchCount() || !prev.planes().equals(scene.planes())
+        if (prev.patchCount() != scene.patchCount() || !sameMeshes(prev, scene) || !prev.planes().equals(scene.planes())
                 || !prev.spheres().equals(scene.spheres()) || !prev.lights().equals(scene.lights())
                 || !prev.materials().equals(scene.materials()) || !prev.camera().equals(scene.camera())) {
             return SceneIntersector.build(scene, io);
@@ -59,5 +59,18 @@ final class SnapshotCache {
             }
         }
         return count == 0 ? old : old.withPatches(scene, java.util.Arrays.copyOf(changed, count));
+    }
+
+    /** True when both scenes hold the same mesh objects with the same materials (meshes are not edited). */
+    private static boolean sameMeshes(Scene a, Scene b) {
+        if (a.meshes().size() != b.meshes().size()) {
+            return false;
+        }
+        for (int k = 0; k < a.meshes().size(); k++) {
+            if (a.meshes().get(k) != b.meshes().get(k) || a.meshMaterial(k) != b.meshMaterial(k)) {
+                return false;
+            }
+        }
+        return true;
     }
 }

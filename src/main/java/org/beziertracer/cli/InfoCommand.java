@@ -62,6 +62,10 @@ final class InfoCommand implements Callable<Integer> {
         out.println("degrees: " + degreeHistogram(scene));
         SurfaceSummary.lines(scene).forEach(out::println);
         out.println("control-point bounds: " + (scene.patchCount() == 0 ? "none" : scene.controlBounds()));
+        if (!scene.meshes().isEmpty()) {
+            out.println("meshes: " + count(scene.meshes().size(), "mesh") + ", " + scene.triangleCount()
+                    + (scene.triangleCount() == 1 ? " triangle" : " triangles") + ", bounds " + meshBounds(scene));
+        }
         if (!scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.lights().isEmpty()) {
             out.println("objects: " + count(scene.planes().size(), "plane") + ", "
                     + count(scene.spheres().size(), "sphere") + ", " + count(scene.lights().size(), "light"));
@@ -69,11 +73,23 @@ final class InfoCommand implements Callable<Integer> {
         HeapBudget.require(model, scene, IntersectOptions.defaults());
         SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
         out.println("sub-patches: " + si.subPatchCount());
+        if (!scene.meshes().isEmpty() || !scene.spheres().isEmpty()) {
+            out.println("bvh primitives: " + si.primitiveCount() + " (sub-patches, mesh triangles and spheres)");
+        }
         out.println("bvh: " + si.nodeCount() + " nodes, depth " + si.depth());
         out.println(String.format(java.util.Locale.ROOT, "build: %.1f ms (split + BVH)", si.buildMillis()));
         out.println(heldLine(si, scene.patchCount()));
         out.flush();
         return 0;
+    }
+
+    /** The box of every mesh's vertices. */
+    private static org.beziertracer.math.Aabb meshBounds(Scene scene) {
+        org.beziertracer.math.Aabb box = org.beziertracer.math.Aabb.EMPTY;
+        for (var m : scene.meshes()) {
+            box = box.union(m.bounds());
+        }
+        return box;
     }
 
     /**

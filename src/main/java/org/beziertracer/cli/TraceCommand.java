@@ -47,7 +47,7 @@ final class TraceCommand implements Callable<Integer> {
 
     static final String HEADER = "index,hit,t,patch,u,v,x,y,z,nx,ny,nz";
 
-    private static final String[] KINDS = {"patch", "plane", "sphere"};
+    private static final String[] KINDS = {"patch", "plane", "sphere", "mesh"};
 
     @Spec
     CommandSpec spec;
@@ -90,7 +90,7 @@ final class TraceCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
         Scene scene = SceneFiles.load(model).scene();
-        boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty();
+        boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.meshes().isEmpty();
         IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
         HeapBudget.require(model, scene, io);
         SceneIntersector si = SceneIntersector.build(scene, io);
@@ -191,15 +191,15 @@ final class TraceCommand implements Callable<Integer> {
         return Files.newInputStream(input);
     }
 
-    /** The box random rays aim into: the patches' control points and the spheres. */
+    /** The box random rays aim into: the patches' control points, the meshes and the spheres. */
     static Aabb aimBox(Scene scene) {
-        Aabb box = scene.controlBounds();
+        Aabb box = scene.bounds();
         for (Sphere s : scene.spheres()) {
             double r = s.radius();
             box = box.union(s.center().add(new Vec3(-r, -r, -r))).union(s.center().add(new Vec3(r, r, r)));
         }
         if (box.isEmpty()) {
-            throw new IllegalArgumentException("--random needs patches or spheres to aim at; this scene has"
+            throw new IllegalArgumentException("--random needs patches, meshes or spheres to aim at; this scene has"
                     + " only planes");
         }
         return box;

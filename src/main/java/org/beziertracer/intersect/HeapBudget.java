@@ -31,6 +31,19 @@ public final class HeapBudget {
 
     /** About the most heap {@link SceneIntersector#build} holds at once for {@code scene}, in bytes. */
     public static long estimateBytes(Scene scene, IntersectOptions options) {
+        long vertices = 0, triangles = 0;
+        for (var mesh : scene.meshes()) {
+            vertices += mesh.vertexCount();
+            triangles += mesh.triangleCount();
+        }
+        long others = triangles + scene.spheres().size();
+        long meshes = triangles == 0 ? 0 : MeshLeaves.estimateBytes(vertices, triangles) + 6 * 8 * others
+                + Bvh.estimateBytes(others);
+        return patchBytes(scene, options) + meshes;
+    }
+
+    /** {@link #estimateBytes} of the patches' leaves alone. */
+    private static long patchBytes(Scene scene, IntersectOptions options) {
         var patches = scene.patches();
         if (options.tessellated()) {
             long triangles = 2L * options.tessellate() * options.tessellate() * patches.size();

@@ -7,24 +7,26 @@ package org.beziertracer.intersect;
  */
 public final class Hit {
     /** Primitive kinds. */
-    public static final int PATCH = 0, PLANE = 1, SPHERE = 2;
+    public static final int PATCH = 0, PLANE = 1, SPHERE = 2, TRIANGLE = 3;
 
     /** Ray parameter along the direction as given (not normalised). */
     public double t;
     /** Surface parameters: for a patch, its own [0,1]² domain; for planes and spheres, texture coordinates. */
     public double u, v;
-    /** {@link #PATCH}, {@link #PLANE} or {@link #SPHERE}. */
+    /** {@link #PATCH}, {@link #PLANE}, {@link #SPHERE} or {@link #TRIANGLE} (a triangle of one of the scene's meshes). */
     public int kind;
-    /** Index of the patch, plane or sphere in the scene. */
+    /** Index of the patch, plane, sphere or mesh in the scene. */
     public int index;
     /**
-     * Sub-patch (BVH leaf) that produced a patch hit; in tessellated mode the triangle; -1 for
-     * planes and spheres.
+     * Sub-patch (BVH leaf) that produced a patch hit; in tessellated mode the triangle; for a
+     * mesh triangle the triangle among all the scene's mesh triangles; for a sphere the sphere;
+     * -1 for planes.
      */
     public int subPatch;
     /**
-     * Tessellated mode only: barycentric weights of the hit triangle's second and third corner
-     * (the first is {@code 1 - b1 - b2}); {@code u, v} are interpolated with them.
+     * Triangle hits (tessellated mode, {@link #TRIANGLE}): barycentric weights of the hit
+     * triangle's second and third corner (the first is {@code 1 - b1 - b2}); {@code u, v} are
+     * interpolated with them.
      */
     public double b1, b2;
 

@@ -12,19 +12,24 @@ import org.beziertracer.model.Scene;
  *   <li>{@link PatchLeaves}: sub-patches of Bézier patches, one subclass per solver
  *       ({@link ClippingLeaves}, {@link NewtonLeaves}, {@link SubdivisionLeaves}; the
  *       {@link Method} names which);</li>
- *   <li>{@link TriangleLeaves}: the triangles of the tessellated mode.</li>
+ *   <li>{@link TriangleLeaves}: the triangles of the tessellated mode;</li>
+ *   <li>{@link MeshLeaves}: the triangles of the scene's meshes;</li>
+ *   <li>{@link SphereLeaves}: the scene's spheres.</li>
  * </ul>
- * The kind is chosen once, by {@link #of}, when a {@link SceneIntersector} is built; nothing on
- * the per-ray path asks which kind it is. A new kind of leaf (rational or trimmed patches, a new
- * solver, a faster start) is a new class here and one choice in {@link #of} or one
- * {@link Method} constant, not a new branch in the queries.
+ * The leaves are chosen once, by {@link #of}, when a {@link SceneIntersector} is built: a scene
+ * of patches only (and planes) gets its patch leaves alone, as it always did; a scene with meshes
+ * or spheres gets one {@link LeafKind} per kind it holds, in consecutive ranges of one BVH
+ * ({@link MixedLeaves}, or the one kind alone). Nothing on the per-ray path asks which kind it
+ * is beyond the range a primitive falls in. A new solver is one {@link PatchLeaves} class and one
+ * {@link Method} constant; a new kind of primitive is one {@code Leaves} class and one
+ * {@link LeafKind} constant, not a new branch in the queries.
  *
  * <h2>Contract</h2>
  * A query runs, for one ray set in the caller's {@link TraceContext}: {@link #beginRay} once,
  * then the accelerator's per-primitive callbacks ({@link LeafIntersector#intersect} for a
  * closest hit, {@link LeafOccluder#occludes} for an any hit), with the context as the query
  * state. A closest-hit callback that finds a hit nearer than its {@code tMax} (and beyond
- * {@code ctx.tMin}) records it in {@code ctx.best} (kind {@link Hit#PATCH}, the patch index, the
+ * {@code ctx.tMin}) records it in {@code ctx.best} (its {@link Hit#kind}, the patch, mesh or sphere index, the
  * primitive, t and whatever it needs later), sets {@code ctx.found} and returns the hit's t. After
  * the traversal the winner goes once through {@link #completeHit}, and on demand through
  * {@link #surfacePoint}. Primitives are indexed {@code 0..count()-1} with the boxes of
@@ -43,6 +48,14 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
      *                  solver tolerances
      */
     static Leaves of(Scene scene, IntersectOptions options, double sceneSize) {
+        if (scene.meshes().isEmpty() && scene.spheres().isEmpty()) {
+            return patchLeaves(scene, options, sceneSize);
+        }
+        return MixedLeaves.of(scene, options, sceneSize);
+    }
+
+    /** The patch leaves alone: the triangles of the tessellated mode, else the pre-split sub-patches. */
+    static Leaves patchLeaves(Scene scene, IntersectOptions options, double sceneSize) {
         if (options.tessellated() && !scene.patches().isEmpty()) {
             return TriangleLeaves.build(scene, options.tessellate());
         }
@@ -69,6 +82,44 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
 
     /** Completes the winning hit of a closest-hit query (fields its leaves left out); nothing by default. */
     default void completeHit(Hit hit) {}
+
+    /**
+     * {@link #completeHit(Hit)}, with the query's context (its ray) for leaves that need it; the
+     * queries call this one.
+     */
+    default void completeHit(TraceContext ctx, Hit hit) {
+        completeHit(hit);
+    }
+
+    /** True when the scene's spheres are among these leaves (then the queries do not test them apart). */
+    default boolean holdsSpheres() { return false; }
+
+    /** These leaves as the callback of a batch query ({@link SceneIntersector#closestHits}), or null. */
+    default org.beziertracer.accel.LaneIntersector<TraceContext> lanes() { return null; }
+
+    /**
+     * The batch callback for shadow rays ({@link org.beziertracer.accel.LaneOccluder}), or null when
+     * these leaves solve no lanes (then a batch's rays are traced one at a time); given with
+     * {@link #lanes()}.
+     */
+    default org.beziertracer.accel.LaneOccluder<TraceContext> anyLanes() { return null; }
+
+    /**
+     * The groups of a two-level build ({@link org.beziertracer.accel.Bvh#build(double[], int, int[],
+     * org.beziertracer.accel.BvhOptions)}): the first leaf of each of the {@code patches} patches,
+     * then of any further group, then {@link #count()}.
+     */
+    default int[] groupFirst(int patches) {
+        int[] groupFirst = new int[patches + 1];
+        for (int k = 0; k < patches; k++) {
+            groupFirst[k] = firstLeaf(k);
+        }
+        groupFirst[patches] = count();
+        return groupFirst;
+    }
+
+    /** The leaves that belong to patches (all of them, unless other kinds share the BVH). */
+    default int patchLeafCount() { return count(); }
 
     /**
      * The geometry at {@code hit}, one of these leaves' hits: position, dp/du, dp/dv and the unit

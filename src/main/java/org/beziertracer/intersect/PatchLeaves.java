@@ -67,6 +67,12 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
         return recordRoot(ctx, s);
     }
 
+    @Override
+    public final org.beziertracer.accel.LaneIntersector<TraceContext> lanes() { return this; }
+
+    @Override
+    public final LaneOccluder<TraceContext> anyLanes() { return this; }
+
     /** Records the solver's root ({@code ctx.root*}) on leaf {@code s} as the best hit; returns its t. */
     final double recordRoot(TraceContext ctx, int s) {
         int k = table.parent[s];

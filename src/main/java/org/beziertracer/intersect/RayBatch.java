@@ -215,6 +215,15 @@ public final class RayBatch {
     }
 
     /**
+     * Keeps the context's best hit ({@code ctx.best}, recorded by a leaf of another kind than
+     * patches, after {@link #loadRay}) as lane {@code i}'s.
+     */
+    void recordBest(TraceContext ctx, int i) {
+        found[i] = true;
+        best[i].set(ctx.best);
+    }
+
+    /**
      * Makes lane {@code i}'s ray (without its frame) and results the context's, as a closest-hit
      * query alone leaves them after its traversal: for the planes and spheres, the hit and its
      * surface point.

@@ -10,7 +10,9 @@ import org.beziertracer.model.Scene;
 
 /**
  * The whole-scene ray queries: {@link #closestHit} and {@link #occluded} over Bézier patches
- * (sub-patch BVH, then the chosen solver at the leaves: {@link Leaves}), planes and spheres.
+ * (sub-patch BVH, then the chosen solver at the leaves: {@link Leaves}), triangle meshes and
+ * spheres (leaves of the same BVH when the scene holds them: {@link MixedLeaves}) and planes
+ * (unbounded: tested apart, after the BVH).
  *
  * <p>Immutable snapshot: build once per scene, share between render threads, each with its own
  * {@link TraceContext}. An edit of one patch makes a new snapshot with {@link #withPatch}, which
@@ -29,7 +31,10 @@ public final class SceneIntersector {
     final Leaves leaves;
     final Accelerator accel;
     final IntersectOptions options;
+    /** The planes, and the spheres unless the leaves hold them ({@link #spheresInLeaves}). */
     final AnalyticShapes shapes;
+    /** True when the spheres are leaves of the BVH ({@link Leaves#holdsSpheres}). */
+    final boolean spheresInLeaves;
     final double sceneSize;
     final double buildMillis;
     /**
@@ -47,7 +52,10 @@ public final class SceneIntersector {
         this.leaves = leaves;
         this.accel = accel;
         this.options = options;
-        this.shapes = new AnalyticShapes(scene.planes(), scene.spheres());
+        // Spheres in the BVH (a scene of more than one kind, MixedLeaves) are not tested apart;
+        // planes are unbounded and always are
+        this.spheresInLeaves = leaves.holdsSpheres();
+        this.shapes = new AnalyticShapes(scene.planes(), spheresInLeaves ? java.util.List.of() : scene.spheres());
         this.sceneSize = sceneSize;
         this.buildMillis = buildMillis;
         this.keptEdits = keptEdits;
@@ -79,13 +87,8 @@ public final class SceneIntersector {
         if (!options.bvh()) {
             return FlatList.build(bounds, count);
         }
-        if (BvhOptions.groupsPay(count, patches)) {
-            int[] groupFirst = new int[patches + 1];
-            for (int k = 0; k < patches; k++) {
-                groupFirst[k] = leaves.firstLeaf(k);
-            }
-            groupFirst[patches] = count;
-            return Bvh.build(bounds, count, groupFirst, options.bvhOptions());
+        if (BvhOptions.groupsPay(leaves.patchLeafCount(), patches)) {
+            return Bvh.build(bounds, count, leaves.groupFirst(patches), options.bvhOptions());
         }
         return Bvh.build(bounds, count, options.bvhOptions());
     }
@@ -200,7 +203,8 @@ public final class SceneIntersector {
      * snapshot's hierarchy and the leaves solve lanes.
      */
     private boolean batches(RayPacket packet) {
-        return packet != null && packet.gatheredBy(accel) && accel instanceof Bvh && leaves instanceof PatchLeaves;
+        return packet != null && packet.gatheredBy(accel) && accel instanceof Bvh && leaves.lanes() != null
+                && leaves.anyLanes() != null;
     }
 
     /**
@@ -210,9 +214,10 @@ public final class SceneIntersector {
     private boolean finishClosestHit(TraceContext ctx, double tMin, double best, Hit hit) {
         double ox = ctx.ox, oy = ctx.oy, oz = ctx.oz, dx = ctx.dx, dy = ctx.dy, dz = ctx.dz;
         boolean any = ctx.found;
+        boolean analytic = false;
         if (any) {
             hit.set(ctx.best);
-            leaves.completeHit(hit);
+            leaves.completeHit(ctx, hit);
             best = hit.t;
         }
         for (int k = 0; k < shapes.planeCount; k++) {
@@ -220,6 +225,7 @@ public final class SceneIntersector {
             if (t > tMin && t < best) {
                 best = t;
                 any = true;
+                analytic = true;
                 hit.t = t;
                 hit.kind = Hit.PLANE;
                 hit.index = k;
@@ -231,13 +237,16 @@ public final class SceneIntersector {
             if (t > tMin && t < best) {
                 best = t;
                 any = true;
+                analytic = true;
                 hit.t = t;
                 hit.kind = Hit.SPHERE;
                 hit.index = k;
                 hit.subPatch = -1;
             }
         }
-        if (any && hit.kind != Hit.PATCH) {
+        if (analytic) {
+            hit.b1 = 0;
+            hit.b2 = 0;
             double px = ox + hit.t * dx, py = oy + hit.t * dy, pz = oz + hit.t * dz;
             if (hit.kind == Hit.PLANE) {
                 shapes.planeUv(hit.index, px, py, pz, hit);
@@ -274,8 +283,8 @@ public final class SceneIntersector {
         RayBatch batch = ctx.batch;
         batch.set(ctx, rays, n, tMin, tMax);
         ctx.beginClosestHit(tMin);
-        ((Bvh) accel).closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, (PatchLeaves) leaves, ctx,
-                batch.live, batch.reached);
+        ((Bvh) accel).closestHitsIn(packet, batch.traversal, n, tMin, batch.tMax, leaves.lanes(), ctx, batch.live,
+                batch.reached);
         for (int i = 0; i < n; i++) {
             batch.loadResult(ctx, i);
             found[i] = finishClosestHit(ctx, tMin, tMax, hits[i]);
@@ -314,7 +323,7 @@ public final class SceneIntersector {
             batch.occluded[i] = shapesBlock(ctx, tMin, tMax);
         }
         try {
-            ((Bvh) accel).occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, (PatchLeaves) leaves, ctx,
+            ((Bvh) accel).occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, leaves.anyLanes(), ctx,
                     batch.live, batch.reached, batch.occluded);
         } finally {
             batch.endShadows(ctx);
@@ -420,7 +429,7 @@ public final class SceneIntersector {
         sp.v = hit.v;
         sp.kind = hit.kind;
         sp.index = hit.index;
-        if (hit.kind == Hit.PATCH) {
+        if (hit.kind == Hit.PATCH || hit.kind == Hit.TRIANGLE || hit.kind == Hit.SPHERE && spheresInLeaves) {
             leaves.surfacePoint(ctx, hit, sp);
         } else if (hit.kind == Hit.PLANE) {
             shapes.planePoint(hit.index, hit, ctx, sp);
@@ -436,10 +445,13 @@ public final class SceneIntersector {
     /** Sub-patches in exact mode (whole patches with the BVH off). */
     public int subPatchCount() { return leaves.subPatchCount(); }
 
-    /** Triangles in tessellated mode, 0 in exact mode. */
+    /** Triangles in the BVH: of the tessellated mode and of the scene's meshes; 0 for exact patches alone. */
     public int triangleCount() { return leaves.triangleCount(); }
 
-    /** Primitives in the acceleration structure: sub-patches, or triangles in tessellated mode. */
+    /**
+     * Primitives in the acceleration structure: sub-patches, or triangles in tessellated mode, and
+     * the meshes' triangles and the spheres of a scene that holds them.
+     */
     public int primitiveCount() { return accel.primCount(); }
 
     public int nodeCount() { return accel.nodeCount(); }

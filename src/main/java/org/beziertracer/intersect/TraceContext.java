@@ -352,6 +352,19 @@ public final class TraceContext {
         best.kind = Hit.PATCH;
         best.index = patch;
         best.subPatch = prim;
+        best.b1 = 0;                                        // only triangles have barycentrics
+        best.b2 = 0;
+    }
+
+    /** {@link #recordHit(int, int)} for a primitive of another kind ({@link Hit#kind}) and its {@code index}. */
+    void recordHit(int kind, int index, int prim) {
+        found = true;
+        best.t = rootT;
+        best.kind = kind;
+        best.index = index;
+        best.subPatch = prim;
+        best.b1 = 0;
+        best.b2 = 0;
     }
 
     /**

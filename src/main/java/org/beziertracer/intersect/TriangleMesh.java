@@ -83,6 +83,15 @@ final class TriangleMesh {
                 + HeapBytes.of(corners) + HeapBytes.of(bounds) + HeapBytes.of(patchOf);
     }
 
+    /**
+     * The triangles of {@code mesh} as they are (a scene's meshes joined into one, the source
+     * index of each triangle's mesh in its patch tags): {@link #segments} 0, and only
+     * {@link #intersect} and the arrays are used ({@link MeshLeaves} shades them).
+     */
+    static TriangleMesh of(Mesh mesh) {
+        return new TriangleMesh(0, mesh);
+    }
+
     /** Tessellates every patch with {@code k×k} cells (build time; allocates). */
     static TriangleMesh build(List<BezierPatch> patches, int k) {
         return new TriangleMesh(k, Tessellator.tessellate(patches, k));

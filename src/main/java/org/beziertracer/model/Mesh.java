@@ -2,6 +2,8 @@ package org.beziertracer.model;
 
 import java.util.Arrays;
 
+import org.beziertracer.math.Aabb;
+
 /**
  * An immutable indexed triangle mesh, e.g. a tessellation of Bézier patches for export.
  *
@@ -19,6 +21,9 @@ import java.util.Arrays;
  *   <li>{@code patchOfTriangle}: {@code triangleCount} indices of the source patch of each
  *       triangle.</li>
  * </ul>
+ * A mesh read from polygon faces ({@link #faces}) may have no normals (then the face normal
+ * shades it) or no uvs: the array is then empty ({@link #hasNormals()}, {@link #hasUvs()}), and
+ * every triangle's "patch" is 0.
  *
  * <p>The constructor copies every array and the accessors return copies, so instances are
  * immutable and safe to share between threads. For loops over large meshes use the indexed
@@ -41,7 +46,8 @@ public final class Mesh {
             throw new IllegalArgumentException("positions length must be a multiple of 3, got " + positions.length);
         }
         int vertexCount = positions.length / 3;
-        if (normals.length != 3 * vertexCount || uvs.length != 2 * vertexCount) {
+        if (normals.length != 3 * vertexCount && normals.length != 0
+                || uvs.length != 2 * vertexCount && uvs.length != 0) {
             throw new IllegalArgumentException("for " + vertexCount + " vertices expected " + 3 * vertexCount
                     + " normal and " + 2 * vertexCount + " uv values, got " + normals.length + " and " + uvs.length);
         }
@@ -63,6 +69,39 @@ public final class Mesh {
         this.uvs = uvs.clone();
         this.triangles = triangles.clone();
         this.patchOfTriangle = patchOfTriangle.clone();
+    }
+
+    /**
+     * A mesh of polygon faces already cut into triangles: vertex positions, optional unit normals
+     * and uvs ({@code null} when the faces give none), and the triangles' vertex indices.
+     *
+     * @throws IllegalArgumentException as the constructor
+     */
+    public static Mesh faces(double[] positions, double[] normals, double[] uvs, int[] triangles) {
+        return new Mesh(positions, normals == null ? new double[0] : normals, uvs == null ? new double[0] : uvs,
+                triangles, new int[triangles.length / 3]);
+    }
+
+    /** True when every vertex has a normal ({@link #normal}); false for faces that gave none. */
+    public boolean hasNormals() { return normals.length > 0 || positions.length == 0; }
+
+    /** True when every vertex has (u,v) ({@link #uv}); false for faces that gave none. */
+    public boolean hasUvs() { return uvs.length > 0 || positions.length == 0; }
+
+    /** The box of the vertex positions ({@link Aabb#EMPTY} without vertices). */
+    public Aabb bounds() {
+        if (positions.length == 0) {
+            return Aabb.EMPTY;
+        }
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int k = 0; k < positions.length; k += 3) {
+            for (int c = 0; c < 3; c++) {
+                lo[c] = Math.min(lo[c], positions[k + c]);
+                hi[c] = Math.max(hi[c], positions[k + c]);
+            }
+        }
+        return new Aabb(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     }
 
     private static void checkFinite(String what, double[] a) {

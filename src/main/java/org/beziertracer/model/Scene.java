@@ -7,8 +7,9 @@ import java.util.Optional;
 import org.beziertracer.math.Aabb;
 
 /**
- * An immutable scene: Bézier patches (each with a material index), analytic planes and spheres,
- * materials, point lights and an optional camera.
+ * An immutable scene: Bézier patches (each with a material index), triangle meshes (each with a
+ * material index; an OBJ file's polygon faces), analytic planes and spheres, materials, point
+ * lights and an optional camera.
  *
  * <p>All lists are copied and unmodifiable, so a {@code Scene} is a snapshot that render threads
  * may share. An edit builds a new {@code Scene} ({@link #withPatch}, {@link #toBuilder}).
@@ -21,6 +22,8 @@ public final class Scene {
 
     private final List<BezierPatch> patches;
     private final int[] patchMaterial;
+    private final List<Mesh> meshes;
+    private final int[] meshMaterial;
     private final List<Plane> planes;
     private final List<Sphere> spheres;
     private final List<Material> materials;
@@ -39,6 +42,7 @@ public final class Scene {
 
     private Scene(Builder b) {
         this.patches = List.copyOf(b.patches);
+        this.meshes = List.copyOf(b.meshes);
         this.planes = List.copyOf(b.planes);
         this.spheres = List.copyOf(b.spheres);
         this.materials = List.copyOf(b.materials.isEmpty() ? List.of(Material.DEFAULT) : b.materials);
@@ -47,13 +51,18 @@ public final class Scene {
         if (b.requirePatches && patches.isEmpty()) {
             throw new IllegalArgumentException("a model needs at least one patch");
         }
-        if (patches.isEmpty() && planes.isEmpty() && spheres.isEmpty()) {
-            throw new IllegalArgumentException("a scene needs at least one patch, plane or sphere");
+        if (patches.isEmpty() && planes.isEmpty() && spheres.isEmpty() && meshes.isEmpty()) {
+            throw new IllegalArgumentException("a scene needs at least one patch, mesh, plane or sphere");
         }
         patchMaterial = new int[patches.size()];
         for (int k = 0; k < patchMaterial.length; k++) {
             patchMaterial[k] = k < b.patchMaterial.size() ? b.patchMaterial.get(k) : 0;
             checkMaterial("patch " + k, patchMaterial[k]);
+        }
+        meshMaterial = new int[meshes.size()];
+        for (int k = 0; k < meshMaterial.length; k++) {
+            meshMaterial[k] = b.meshMaterial.get(k);
+            checkMaterial("mesh " + k, meshMaterial[k]);
         }
         for (int k = 0; k < planes.size(); k++) {
             checkMaterial("plane " + k, planes.get(k).material());
@@ -71,6 +80,21 @@ public final class Scene {
     }
 
     public List<BezierPatch> patches() { return patches; }
+
+    /** Triangle meshes (an OBJ file's polygon faces), beside the patches. */
+    public List<Mesh> meshes() { return meshes; }
+
+    /** Material index of mesh {@code k}. */
+    public int meshMaterial(int k) { return meshMaterial[k]; }
+
+    /** Triangles of every mesh. */
+    public long triangleCount() {
+        long n = 0;
+        for (Mesh m : meshes) {
+            n += m.triangleCount();
+        }
+        return n;
+    }
 
     public List<Plane> planes() { return planes; }
 
@@ -104,11 +128,27 @@ public final class Scene {
         return box;
     }
 
+    /**
+     * The finite part of the model: the patches' control boxes and the meshes' vertex boxes
+     * (empty when there are neither). Framing and extents use it; the patch solvers' scale
+     * ({@link #controlBounds()}) does not count the meshes.
+     */
+    public Aabb bounds() {
+        Aabb box = controlBounds();
+        for (Mesh m : meshes) {
+            box = box.union(m.bounds());
+        }
+        return box;
+    }
+
     public Builder toBuilder() {
         Builder b = builder().patches(patches).planes(planes).spheres(spheres).lights(lights).camera(camera);
         b.materials.addAll(materials);
         for (int m : patchMaterial) {
             b.patchMaterial.add(m);
+        }
+        for (int k = 0; k < meshes.size(); k++) {
+            b.addMesh(meshes.get(k), meshMaterial[k]);
         }
         return b;
     }
@@ -119,6 +159,8 @@ public final class Scene {
     public static final class Builder {
         private final List<BezierPatch> patches = new ArrayList<>();
         private final List<Integer> patchMaterial = new ArrayList<>();
+        private final List<Mesh> meshes = new ArrayList<>();
+        private final List<Integer> meshMaterial = new ArrayList<>();
         private final List<Plane> planes = new ArrayList<>();
         private final List<Sphere> spheres = new ArrayList<>();
         private final List<Material> materials = new ArrayList<>();
@@ -142,6 +184,20 @@ public final class Scene {
                 patches.add(p);
                 patchMaterial.add(material);
             }
+            return this;
+        }
+
+        /** Adds a triangle mesh with material {@code material}. */
+        public Builder addMesh(Mesh mesh, int material) {
+            meshes.add(java.util.Objects.requireNonNull(mesh, "mesh"));
+            meshMaterial.add(material);
+            return this;
+        }
+
+        /** Removes every mesh. */
+        public Builder clearMeshes() {
+            meshes.clear();
+            meshMaterial.clear();
             return this;
         }
 

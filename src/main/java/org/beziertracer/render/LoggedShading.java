@@ -68,7 +68,7 @@ final class LoggedShading implements ShadingEvents {
     }
 
     private static String kindName(int kind) {
-        return kind == Hit.PATCH ? "patch" : kind == Hit.PLANE ? "plane" : "sphere";
+        return kind == Hit.PATCH ? "patch" : kind == Hit.PLANE ? "plane" : kind == Hit.TRIANGLE ? "triangle" : "sphere";
     }
 
     private static String indent(int depth) {

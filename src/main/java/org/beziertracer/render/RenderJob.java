@@ -66,11 +66,11 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
     }
 
     /**
-     * The finite part of the scene: control boxes of the patches and boxes of the spheres (planes are
+     * The finite part of the scene: control boxes of the patches, boxes of the meshes and of the spheres (planes are
      * infinite; a scene of planes only gets the unit box around the first plane's point).
      */
     public static Aabb bounds(Scene scene) {
-        Aabb box = scene.controlBounds();
+        Aabb box = scene.bounds();
         for (Sphere s : scene.spheres()) {
             Vec3 r = new Vec3(s.radius(), s.radius(), s.radius());
             box = box.union(s.center().sub(r)).union(s.center().add(r));

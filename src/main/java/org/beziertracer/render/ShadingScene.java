@@ -2,6 +2,7 @@ package org.beziertracer.render;
 
 import java.util.List;
 
+import org.beziertracer.intersect.Hit;
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.PointLight;
@@ -12,7 +13,7 @@ import org.beziertracer.model.Scene;
  *
  * <p>Layouts: {@code materials[MAT_STRIDE * k + …] = r, g, b, ka, kd, ks, shininess, kr, kt, ior,
  * checkerSquares, r2, g2, b2}; {@code lights[6 * k + …] = x, y, z, r, g, b}. Primitive materials:
- * {@code patchMaterial[k]}, {@code planeMaterial[k]}, {@code sphereMaterial[k]}.
+ * {@code patchMaterial[k]}, {@code planeMaterial[k]}, {@code sphereMaterial[k]}, {@code meshMaterial[k]}.
  *
  * <p>The job's own lights, when it has them, replace the scene's. With no lights in the scene there
  * is one white light at the camera's eye (the memoir's light at the centre of projection), so it
@@ -29,7 +30,7 @@ final class ShadingScene {
 
     final SceneIntersector intersector;
     final double[] materials;
-    final int[] patchMaterial, planeMaterial, sphereMaterial;
+    final int[] patchMaterial, planeMaterial, sphereMaterial, meshMaterial;
     final double[] lights;
     final int lightCount;
     final ShadingMode mode;
@@ -61,6 +62,10 @@ final class ShadingScene {
         }
         planeMaterial = scene.planes().stream().mapToInt(p -> p.material()).toArray();
         sphereMaterial = scene.spheres().stream().mapToInt(s -> s.material()).toArray();
+        meshMaterial = new int[scene.meshes().size()];
+        for (int k = 0; k < meshMaterial.length; k++) {
+            meshMaterial[k] = scene.meshMaterial(k);
+        }
         List<PointLight> ls = job.lights() != null ? job.lights()
                 : scene.lights().isEmpty() ? List.of(new PointLight(job.camera().eye())) : scene.lights();
         lightCount = ls.size();
@@ -81,7 +86,8 @@ final class ShadingScene {
 
     /** Offset into {@link #materials} of the material of the primitive {@code (kind, index)}. */
     int materialOffset(int kind, int index) {
-        int m = kind == 0 ? patchMaterial[index] : kind == 1 ? planeMaterial[index] : sphereMaterial[index];
+        int m = kind == Hit.PATCH ? patchMaterial[index] : kind == Hit.PLANE ? planeMaterial[index]
+                : kind == Hit.SPHERE ? sphereMaterial[index] : meshMaterial[index];
         return MAT_STRIDE * m;
     }
 }

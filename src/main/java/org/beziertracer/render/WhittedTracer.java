@@ -472,10 +472,10 @@ public final class WhittedTracer {
         }
     }
 
-    /** A distinct, stable colour per patch (golden-ratio hues); planes grey, spheres white. */
+    /** A distinct, stable colour per patch (golden-ratio hues); planes dark grey, mesh triangles grey, spheres white. */
     static void patchIdColour(int kind, int index, double[] out) {
         if (kind != Hit.PATCH) {
-            double g = kind == Hit.PLANE ? 0.3 : 0.9;
+            double g = kind == Hit.PLANE ? 0.3 : kind == Hit.TRIANGLE ? 0.6 : 0.9;
             out[0] = g; out[1] = g; out[2] = g;
             return;
         }

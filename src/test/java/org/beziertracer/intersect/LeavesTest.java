@@ -44,11 +44,12 @@ class LeavesTest {
     }
 
     @Test
-    void aSceneWithoutPatchesHasNoLeavesInEitherMode() {
+    void aSceneWithoutPatchesHasItsSpheresAsLeavesInEitherMode() {
         Scene sphereOnly = new Scene(List.of(), List.of(), List.of(new Sphere(new Vec3(0, 0, 0), 1)));
         for (int k : new int[] {0, 4}) {
             SceneIntersector si = SceneIntersector.build(sphereOnly, IntersectOptions.defaults().withTessellate(k));
-            assertEquals(0, si.primitiveCount(), "tessellate " + k);
+            assertInstanceOf(SphereLeaves.class, si.leaves, "tessellate " + k);
+            assertEquals(1, si.primitiveCount(), "tessellate " + k);
             assertEquals(0, si.triangleCount(), "tessellate " + k);
             TraceContext ctx = si.newContext();
             Hit hit = new Hit();

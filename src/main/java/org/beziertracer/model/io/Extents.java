@@ -14,10 +14,10 @@ final class Extents {
 
     /** @throws IllegalArgumentException naming the box, when its size overflows */
     static void requireFinite(Scene scene) {
-        if (scene.patches().isEmpty()) {
+        if (scene.patches().isEmpty() && scene.meshes().isEmpty()) {
             return;
         }
-        Aabb b = scene.controlBounds();
+        Aabb b = scene.bounds();
         if (!Double.isFinite(b.diagonal())) {
             throw new IllegalArgumentException("the control points span x[" + NumberText.show(b.minX()) + ","
                     + NumberText.show(b.maxX()) + "] y[" + NumberText.show(b.minY()) + "," + NumberText.show(b.maxY())

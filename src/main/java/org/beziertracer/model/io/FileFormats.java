@@ -29,9 +29,9 @@ public final class FileFormats {
     public static final FileFormat BPT = FileFormat.model("BPT", "Bézier patch text", List.of("bpt"),
             BptReader::readScene, (out, scene) -> BptWriter.write(out, scene.patches()));
 
-    /** Wavefront OBJ free-form surfaces ({@link ObjReader}, {@link ObjWriter}). */
+    /** Wavefront OBJ free-form surfaces and polygon faces ({@link ObjReader}, {@link ObjWriter}). */
     public static final FileFormat OBJ = FileFormat.model("OBJ", "Wavefront OBJ free-form surfaces", List.of("obj"),
-            ObjReader::readScene, (out, scene) -> ObjWriter.write(out, scene.patches()));
+            ObjReader::readScene, ObjWriter::write);
 
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),

@@ -1,6 +1,7 @@
 package org.beziertracer.model.io;
 
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Mesh;
 
 /**
  * The affine placement of a model in a scene file: {@code p' = T + Rz·Ry·Rx·(S·p)} — scale
@@ -53,6 +54,45 @@ record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees
             System.arraycopy(p, 0, net, k, 3);
         }
         return patch.withNet(net); // weights and domain kept: a rational patch is affinely invariant too
+    }
+
+    /**
+     * The mesh with every vertex mapped, and its normals by the inverse transpose (the scale's
+     * inverse, then the rotations), made unit again.
+     *
+     * @throws IllegalArgumentException naming the step, the coordinate and the values when one overflows
+     */
+    Mesh apply(Mesh mesh) {
+        if (isIdentity()) {
+            return mesh;
+        }
+        double[] positions = mesh.positions();
+        double[] p = new double[3];
+        for (int k = 0; k < positions.length; k += 3) {
+            System.arraycopy(positions, k, p, 0, 3);
+            Overflow o = applyInPlace(p);
+            if (o != null) {
+                throw new IllegalArgumentException("the " + o.step() + " overflows the " + "xyz".charAt(o.axis())
+                        + " coordinate of mesh vertex " + (k / 3 + 1) + ": " + o.values() + " is " + NumberText.BEYOND);
+            }
+            System.arraycopy(p, 0, positions, k, 3);
+        }
+        double[] normals = null;
+        if (mesh.hasNormals()) {
+            normals = mesh.normals();
+            ModelTransform turn = new ModelTransform(new double[3],
+                    new double[] {1 / scale[0], 1 / scale[1], 1 / scale[2]}, rotateDegrees);
+            for (int k = 0; k < normals.length; k += 3) {
+                System.arraycopy(normals, k, p, 0, 3);
+                turn.applyInPlace(p);
+                double len = Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                double f = len > 0 && Double.isFinite(len) ? 1 / len : 0;
+                for (int c = 0; c < 3; c++) {
+                    normals[k + c] = Double.isFinite(p[c] * f) ? p[c] * f : 0;
+                }
+            }
+        }
+        return Mesh.faces(positions, normals, mesh.hasUvs() ? mesh.uvs() : null, mesh.triangles());
     }
 
     /** Maps the point {@code p} (x, y, z) in place; null, or the step that overflowed (p is then partly mapped). */

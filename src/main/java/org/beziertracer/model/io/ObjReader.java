@@ -6,11 +6,12 @@ import java.util.List;
 import java.util.Set;
 
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
 
 /**
- * Reads Wavefront OBJ free-form geometry: Bézier and B-spline surfaces, rational or not, with
- * trim loops and holes.
+ * Reads Wavefront OBJ free-form geometry — Bézier and B-spline surfaces, rational or not, with
+ * trim loops and holes — and polygon faces, which load as one triangle mesh beside the surfaces.
  *
  * <h2>Supported</h2>
  * <ul>
@@ -28,17 +29,22 @@ import org.beziertracer.model.Scene;
  *       in file order; {@code trim u0 u1 c …} and {@code hole u0 u1 c …} inside a surf block:
  *       an outer loop or a hole made of curve pieces (a negative {@code c} counts back);</li>
  *   <li>{@code end}; {@code #} comments; a trailing backslash continues a statement on the next
- *       line.</li>
+ *       line;</li>
+ *   <li>{@code vt u [v [w]]}, {@code vn x y z} and {@code f} (or {@code fo}) faces of 3 or more
+ *       corners {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn} (1-based or negative):
+ *       every face of the file goes into one {@link Mesh}, cut into fans of triangles
+ *       ({@link ObjFaces}), with uvs when every corner names a {@code vt} and normals when every
+ *       corner names a {@code vn}.</li>
  * </ul>
  * Each surface is kept as read ({@link org.beziertracer.model.FreeFormSurface}) and becomes its
  * Bézier pieces by knot insertion, in the order v piece major, u piece fastest; each piece
  * reports its part of the surface's parameter range (the {@code surf} range, which may be any
- * part of the knot range) and carries the trim loops. Polygon and grouping statements
- * ({@code f}, {@code vt}, {@code vn}, {@code g}, {@code o}, {@code s}, {@code usemtl},
- * {@code mtllib}, …) and display hints ({@code ctech}, {@code stech}) are skipped. Basis-matrix,
+ * part of the knot range) and carries the trim loops. Points and lines ({@code p}, {@code l}),
+ * grouping statements ({@code g}, {@code o}, {@code s}, {@code usemtl}, {@code mtllib}, …) and
+ * display hints ({@code ctech}, {@code stech}) are skipped. Basis-matrix,
  * Cardinal and Taylor forms, 3-D curves ({@code curv}), special curves and points
  * ({@code scrv}, {@code sp}) and connectivity ({@code con}) get a one-line "unsupported: …" error
- * with the line number. A file without any surface is an error.
+ * with the line number. A file without any surface or face is an error.
  *
  * <p>Every error is a one-line {@link ModelFormatException} whose line number is the first
  * physical line of the statement ({@link ObjFreeForm} lists the free-form ones). The caps of
@@ -50,7 +56,7 @@ import org.beziertracer.model.Scene;
 public final class ObjReader {
     private ObjReader() {}
 
-    private static final Set<String> SKIPPED = Set.of("f", "fo", "p", "l", "vt", "vn", "g", "o", "s", "mg",
+    private static final Set<String> SKIPPED = Set.of("p", "l", "g", "o", "s", "mg",
             "usemtl", "mtllib", "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "maplib",
             "usemap", "ctech", "stech", "call", "csh");
     private static final Set<String> UNSUPPORTED = Set.of("curv", "scrv", "sp", "con",
@@ -68,19 +74,50 @@ public final class ObjReader {
         }
     }
 
-    /** The patches of {@code text} as a scene (the reader {@link FileFormats#OBJ} declares). */
+    /** What an OBJ file holds: its surfaces' Bézier patches and its faces' mesh (null without faces). */
+    public record Model(List<BezierPatch> patches, Mesh mesh) {}
+
+    /**
+     * The patches and the mesh of {@code text} as a scene, both with material 0 (the reader
+     * {@link FileFormats#OBJ} declares).
+     */
     static Scene readScene(TextSource text) throws IOException {
-        return new Scene(read(text));
+        Model model = readModel(text);
+        Scene.Builder b = Scene.builder().patches(model.patches());
+        if (model.mesh() != null) {
+            b.addMesh(model.mesh(), 0);
+        }
+        return b.build();
     }
 
     /**
-     * Reads OBJ text.
+     * Reads OBJ text: surfaces and faces.
+     *
+     * @throws ModelFormatException for any syntax, range, cap or unsupported-element problem,
+     *                              naming {@link TextSource#fileName()}
+     */
+    public static Model readModel(TextSource text) throws IOException {
+        return new Parser(text).parse();
+    }
+
+    /** {@link #readModel(TextSource)} of in-memory text; for tests. */
+    public static Model readModel(String text, String fileName) {
+        try {
+            return readModel(TextSource.of(text, fileName));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * Reads OBJ text; the patches of its surfaces (none for a file of faces only, whose mesh
+     * {@link #readModel(TextSource)} returns).
      *
      * @throws ModelFormatException for any syntax, range, cap or unsupported-element problem,
      *                              naming {@link TextSource#fileName()}
      */
     public static List<BezierPatch> read(TextSource text) throws IOException {
-        return new Parser(text).parse();
+        return readModel(text).patches();
     }
 
     /** One parse: the vertex tables and the free-form state ({@link ObjFreeForm}). */
@@ -90,6 +127,7 @@ public final class ObjReader {
         private final String file;
         private final ObjVertices vertices = new ObjVertices();
         private final ObjFreeForm freeForm;
+        private final ObjFaces faces;
         private int line;
 
         Parser(TextSource text) {
@@ -97,9 +135,10 @@ public final class ObjReader {
             this.limits = text.limits();
             this.file = text.fileName();
             this.freeForm = new ObjFreeForm(file, vertices, limits);
+            this.faces = new ObjFaces(file, limits);
         }
 
-        List<BezierPatch> parse() throws IOException {
+        Model parse() throws IOException {
             int physical = 0;
             String raw;
             StringBuilder statement = new StringBuilder();
@@ -136,11 +175,11 @@ public final class ObjReader {
             line = Math.max(physical, 1);
             freeForm.finish(line);
             List<BezierPatch> patches = freeForm.patches();
-            if (patches.isEmpty()) {
-                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end), found "
+            if (patches.isEmpty() && !faces.any()) {
+                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
                         + (physical == 0 ? "an empty file" : "none"));
             }
-            return patches;
+            return new Model(patches, faces.mesh(vertices));
         }
 
         private void statement(String[] t) {
@@ -149,16 +188,22 @@ public final class ObjReader {
                 freeForm.statement(t, line);
                 return;
             }
-            if (keyword.equals("v")) {
-                vertex(t);
-                return;
+            switch (keyword) {
+                case "v" -> vertex(t);
+                case "vt" -> faces.textureVertex(t, line);
+                case "vn" -> faces.normal(t, line);
+                case "f", "fo" -> faces.face(t, line, vertices.count());
+                default -> other(keyword);
             }
+        }
+
+        private void other(String keyword) {
             if (UNSUPPORTED.contains(keyword)) {
                 throw error("unsupported: " + keyword + " (" + explain(keyword)
                         + "); Bézier and B-spline surfaces, curv2 trim curves, trim and hole are read");
             }
             if (!SKIPPED.contains(keyword)) {
-                throw error("expected an OBJ statement (v, vp, cstype, deg, surf, curv2, parm, trim, hole, end, …), found "
+                throw error("expected an OBJ statement (v, vp, cstype, deg, surf, curv2, parm, trim, hole, end, f, …), found "
                         + NumberText.describe(keyword));
             }
         }

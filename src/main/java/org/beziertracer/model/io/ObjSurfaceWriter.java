@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Mesh;
 import org.beziertracer.model.FreeFormSurface;
 import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.PatchOrigin;
@@ -27,13 +28,14 @@ import org.beziertracer.model.TrimRegion;
  * surface over its {@link PatchDomain} (so a piece keeps its parameters and its trim loops),
  * {@code cstype rat bezier} with {@code v x y z w} when it is rational. Trim curves are written
  * once each, as {@code vp} points and a {@code curv2 … end} block, before the first surface that
- * uses them.
+ * uses them. The scene's meshes follow the surfaces as {@code v}, {@code vt}, {@code vn} and
+ * {@code f} statements.
  */
 final class ObjSurfaceWriter {
     private final Writer out;
     private final StringBuilder sb = new StringBuilder(256);
     private final Map<TrimCurve, Integer> curveNumbers = new IdentityHashMap<>();
-    private int nextVertex = 1, nextParamVertex = 1;
+    private int nextVertex = 1, nextParamVertex = 1, nextTexture = 1, nextNormal = 1;
     private String cstype = "bezier";
 
     ObjSurfaceWriter(Writer out) {
@@ -41,7 +43,17 @@ final class ObjSurfaceWriter {
     }
 
     void write(List<BezierPatch> patches) throws IOException {
-        sb.append("# Bézier Tracer: ").append(patches.size()).append(" Bézier patches\n");
+        write(patches, List.of());
+    }
+
+    /** The patches, then each mesh's vertices and faces ({@link #mesh}). */
+    void write(List<BezierPatch> patches, List<Mesh> meshes) throws IOException {
+        sb.append("# Bézier Tracer: ").append(patches.size()).append(" Bézier patches");
+        if (!meshes.isEmpty()) {
+            long triangles = meshes.stream().mapToLong(Mesh::triangleCount).sum();
+            sb.append(", ").append(triangles).append(" triangles of faces");
+        }
+        sb.append('\n');
         sb.append("cstype bezier\n");
         flush();
         Map<FreeFormSurface, BitSet> present = new IdentityHashMap<>();
@@ -64,7 +76,72 @@ final class ObjSurfaceWriter {
             }
             number++;
         }
+        for (int k = 0; k < meshes.size(); k++) {
+            mesh(meshes.get(k), k + 1);
+        }
         out.flush();
+    }
+
+    /**
+     * A mesh as polygon statements: a {@code v} per vertex, a {@code vt} and a {@code vn} per
+     * vertex when it has uvs and normals, and an {@code f} per triangle naming each corner's
+     * v (and vt, vn) by its 1-based number in the file, so that reading gives the mesh back.
+     */
+    private void mesh(Mesh m, int number) throws IOException {
+        sb.append("# mesh ").append(number).append(": ").append(m.vertexCount()).append(" vertices, ")
+                .append(m.triangleCount()).append(" triangles\n");
+        int firstV = nextVertex, firstVt = nextTexture, firstVn = nextNormal;
+        int n = m.vertexCount();
+        for (int k = 0; k < n; k++) {
+            sb.append("v ").append(NumberText.format(m.position(k, 0))).append(' ')
+                    .append(NumberText.format(m.position(k, 1))).append(' ')
+                    .append(NumberText.format(m.position(k, 2))).append('\n');
+            flushSome();
+        }
+        nextVertex += n;
+        if (m.hasUvs()) {
+            for (int k = 0; k < n; k++) {
+                sb.append("vt ").append(NumberText.format(m.uv(k, 0))).append(' ')
+                        .append(NumberText.format(m.uv(k, 1))).append('\n');
+                flushSome();
+            }
+            nextTexture += n;
+        }
+        if (m.hasNormals()) {
+            for (int k = 0; k < n; k++) {
+                sb.append("vn ").append(NumberText.format(m.normal(k, 0))).append(' ')
+                        .append(NumberText.format(m.normal(k, 1))).append(' ')
+                        .append(NumberText.format(m.normal(k, 2))).append('\n');
+                flushSome();
+            }
+            nextNormal += n;
+        }
+        for (int t = 0; t < m.triangleCount(); t++) {
+            sb.append('f');
+            for (int c = 0; c < 3; c++) {
+                int v = m.triangleVertex(t, c);
+                sb.append(' ').append(firstV + v);
+                if (m.hasUvs() || m.hasNormals()) {
+                    sb.append('/');
+                    if (m.hasUvs()) {
+                        sb.append(firstVt + v);
+                    }
+                    if (m.hasNormals()) {
+                        sb.append('/').append(firstVn + v);
+                    }
+                }
+            }
+            sb.append('\n');
+            flushSome();
+        }
+        flush();
+    }
+
+    /** Writes the buffer out once it holds a few kilobytes. */
+    private void flushSome() throws IOException {
+        if (sb.length() > 1 << 14) {
+            flush();
+        }
     }
 
     private void patch(BezierPatch p, int number) throws IOException {

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Scene;
 
 /**
  * Writes patches as Wavefront OBJ free-form surfaces, the form read by {@link ObjReader}. A plain
@@ -42,5 +43,24 @@ public final class ObjWriter {
     /** Writes OBJ text to {@code out} (not closed). */
     public static void write(Writer out, List<BezierPatch> patches) throws IOException {
         new ObjSurfaceWriter(out).write(patches);
+    }
+
+    /**
+     * Writes the scene's patches and, after them, its meshes as {@code v}/{@code vt}/{@code vn}
+     * and {@code f} statements (all in one file: reading it back gives the patches and one mesh
+     * of all the triangles).
+     */
+    public static void write(Writer out, Scene scene) throws IOException {
+        new ObjSurfaceWriter(out).write(scene.patches(), scene.meshes());
+    }
+
+    /** Writes the scene's patches and meshes to {@code file} atomically (see {@link AtomicFiles}). */
+    public static void write(Path file, Scene scene) throws IOException {
+        AtomicFiles.write(file, out -> write(out, scene));
+    }
+
+    /** The OBJ text of the scene's patches and meshes. */
+    public static String toString(Scene scene) {
+        return AtomicFiles.toText(out -> write(out, scene));
     }
 }

@@ -14,6 +14,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -136,14 +137,20 @@ final class SceneReader {
     // Models
 
     private void model(JsonNode m) {
-        m.object("file", "builtin", "patches", "transform", "material");
-        int sources = (m.has("file") ? 1 : 0) + (m.has("builtin") ? 1 : 0) + (m.has("patches") ? 1 : 0);
+        m.object("file", "builtin", "patches", "mesh", "transform", "material");
+        int sources = (m.has("file") ? 1 : 0) + (m.has("builtin") ? 1 : 0) + (m.has("patches") ? 1 : 0)
+                + (m.has("mesh") ? 1 : 0);
         if (sources != 1) {
-            throw m.error("expected exactly one of \"file\", \"builtin\" or \"patches\", found " + sources);
+            throw m.error("expected exactly one of \"file\", \"builtin\", \"patches\" or \"mesh\", found " + sources);
         }
         List<BezierPatch> patches;
+        Mesh mesh = null;
         if (m.has("file")) {
-            patches = loadFile(m.get("file"));
+            Scene file = loadFile(m.get("file"));
+            patches = file.patches();
+            if (!file.meshes().isEmpty()) {
+                mesh = file.meshes().get(0);
+            }
         } else if (m.has("builtin")) {
             JsonNode b = m.get("builtin");
             Optional<BuiltIns.BuiltIn> model = BuiltIns.find(b.asString())
@@ -153,6 +160,9 @@ final class SceneReader {
                         + String.join(", ", BuiltIns.names(FileFormat.Holds.MODEL)) + ")");
             }
             patches = model.get().load().scene().patches();
+        } else if (m.has("mesh")) {
+            patches = List.of();
+            mesh = inlineMesh(m.get("mesh"));
         } else {
             patches = inlinePatches(m.get("patches"));
         }
@@ -169,10 +179,15 @@ final class SceneReader {
             int number = k + 1;
             placed.add(build(t != null ? t : m, () -> transform.apply(p, number)));
         }
-        builder.addPatches(placed, materialRef(m.get("material")));
+        int material = materialRef(m.get("material"));
+        builder.addPatches(placed, material);
+        if (mesh != null) {
+            Mesh source = mesh;
+            builder.addMesh(build(t != null ? t : m, () -> transform.apply(source)), material);
+        }
     }
 
-    private List<BezierPatch> loadFile(JsonNode f) {
+    private Scene loadFile(JsonNode f) {
         String name = f.asString();
         if (name.isBlank()) {
             throw f.expected("a model file name");
@@ -194,10 +209,63 @@ final class SceneReader {
                     ? "" : " in " + baseDir));
         }
         try {
-            return format.get().read(file).scene().patches();
+            return format.get().read(file).scene();
         } catch (ModelFormatException e) {
             throw f.error(e.getMessage());
         }
+    }
+
+    /**
+     * An inline triangle mesh: {@code "positions"} ([x, y, z] each), {@code "triangles"} (three
+     * 0-based vertex indices each), optional {@code "normals"} ([x, y, z] per vertex) and
+     * {@code "uvs"} ([u, v] per vertex).
+     */
+    private Mesh inlineMesh(JsonNode mesh) {
+        mesh.object("positions", "triangles", "normals", "uvs");
+        double[] positions = rows(mesh.require("positions"), 3);
+        int vertices = positions.length / 3;
+        JsonNode tris = mesh.require("triangles");
+        List<JsonNode> rows = tris.array();
+        if ((long) rows.size() > limits.vertices()) {
+            throw tris.error(rows.size() + " triangles, more than the " + limits.vertices() + " a mesh may hold");
+        }
+        int[] triangles = new int[3 * rows.size()];
+        for (int k = 0; k < rows.size(); k++) {
+            List<JsonNode> corner = rows.get(k).array();
+            if (corner.size() != 3) {
+                throw rows.get(k).expected("an array of 3 vertex indices");
+            }
+            for (int c = 0; c < 3; c++) {
+                int index = corner.get(c).asInt();
+                if (index < 0 || index >= vertices) {
+                    throw corner.get(c).error("vertex index " + index + " out of range 0.." + (vertices - 1));
+                }
+                triangles[3 * k + c] = index;
+            }
+        }
+        double[] normals = mesh.has("normals") ? rows(mesh.get("normals"), 3) : null;
+        double[] uvs = mesh.has("uvs") ? rows(mesh.get("uvs"), 2) : null;
+        if (normals != null && normals.length != positions.length) {
+            throw mesh.get("normals").error("expected one normal per position (" + vertices + "), found "
+                    + normals.length / 3);
+        }
+        if (uvs != null && uvs.length / 2 != vertices) {
+            throw mesh.get("uvs").error("expected one uv per position (" + vertices + "), found " + uvs.length / 2);
+        }
+        return build(mesh, () -> Mesh.faces(positions, normals, uvs, triangles));
+    }
+
+    /** An array of rows of {@code width} finite numbers, flat. */
+    private double[] rows(JsonNode list, int width) {
+        List<JsonNode> items = list.array();
+        if ((long) items.size() > limits.vertices()) {
+            throw list.error(items.size() + " rows, more than the " + limits.vertices() + " a mesh may hold");
+        }
+        double[] out = new double[width * items.size()];
+        for (int k = 0; k < items.size(); k++) {
+            System.arraycopy(items.get(k).asNumbers(width), 0, out, width * k, width);
+        }
+        return out;
     }
 
     private static List<BezierPatch> inlinePatches(JsonNode list) {

@@ -12,6 +12,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -23,7 +24,8 @@ import org.beziertracer.model.Sphere;
  * an equal document: every material is named {@code m0, m1, …} in scene order and referenced by
  * name, patches are written inline ({@code "patches"}, one model per run of patches sharing a
  * material; a rational patch with its {@code "weights"}, a piece of a free-form surface with its
- * {@code "domain"} and {@code "trim"}, {@link SceneFreeForm}),
+ * {@code "domain"} and {@code "trim"}, {@link SceneFreeForm}), each mesh as an inline
+ * {@code "mesh"} model,
  * numbers use the shortest text that parses back to the same double
  * ({@link NumberText#format}). Arrays of numbers stay on one line. Stateless.
  */
@@ -70,7 +72,43 @@ final class SceneWriter {
             models.add(model);
             start = end;
         }
+        for (int k = 0; k < scene.meshes().size(); k++) {
+            JsonObject model = new JsonObject();
+            model.add("mesh", mesh(scene.meshes().get(k)));
+            model.addProperty("material", "m" + scene.meshMaterial(k));
+            models.add(model);
+        }
         return models;
+    }
+
+    /** An inline mesh: positions, triangles (0-based), and normals and uvs when it has them. */
+    private static JsonObject mesh(Mesh m) {
+        JsonObject o = new JsonObject();
+        JsonArray positions = new JsonArray();
+        JsonArray normals = new JsonArray();
+        JsonArray uvs = new JsonArray();
+        for (int k = 0; k < m.vertexCount(); k++) {
+            positions.add(numbers(m.position(k, 0), m.position(k, 1), m.position(k, 2)));
+            if (m.hasNormals()) {
+                normals.add(numbers(m.normal(k, 0), m.normal(k, 1), m.normal(k, 2)));
+            }
+            if (m.hasUvs()) {
+                uvs.add(numbers(m.uv(k, 0), m.uv(k, 1)));
+            }
+        }
+        JsonArray triangles = new JsonArray();
+        for (int t = 0; t < m.triangleCount(); t++) {
+            triangles.add(numbers(m.triangleVertex(t, 0), m.triangleVertex(t, 1), m.triangleVertex(t, 2)));
+        }
+        o.add("positions", positions);
+        o.add("triangles", triangles);
+        if (m.hasNormals()) {
+            o.add("normals", normals);
+        }
+        if (m.hasUvs()) {
+            o.add("uvs", uvs);
+        }
+        return o;
     }
 
     private static JsonArray planes(Scene scene) {

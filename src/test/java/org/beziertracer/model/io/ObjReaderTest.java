@@ -175,9 +175,9 @@ class ObjReaderTest {
     }
 
     @Test
-    void aFileWithoutSurfacesIsAnError() {
-        assertMessage(fails(VERTICES + "f 1 2 3\n", "poly.obj"), "poly.obj:5: ", "expected at least one Bézier surface",
-                "found none");
+    void aFileWithoutSurfacesOrFacesIsAnError() {
+        assertMessage(fails(VERTICES + "l 1 2\n", "poly.obj"), "poly.obj:5: ", "expected at least one Bézier surface",
+                "or face (f)", "found none");
         assertMessage(fails("", "empty.obj"), "empty.obj:1: ", "expected at least one Bézier surface",
                 "found an empty file");
     }

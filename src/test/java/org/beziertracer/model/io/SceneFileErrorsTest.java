@@ -71,7 +71,7 @@ class SceneFileErrorsTest {
                 "{\"version\": 1, \"models\": [{\"builtin\": \"patch\", \"material\": \"gold\"}]}");
         assertMessage("models[0].builtin: unknown built-in model \"kettle\"",
                 "{\"version\": 1, \"models\": [{\"builtin\": \"kettle\"}]}");
-        assertMessage("models[0]: expected exactly one of \"file\", \"builtin\" or \"patches\", found 2",
+        assertMessage("models[0]: expected exactly one of \"file\", \"builtin\", \"patches\" or \"mesh\", found 2",
                 "{\"version\": 1, \"models\": [{\"builtin\": \"patch\", \"file\": \"a.bpt\"}]}");
         assertMessage("lights[0]: missing key \"position\"",
                 "{\"version\": 1, " + SPHERE + ", \"lights\": [{}]}");
@@ -141,7 +141,7 @@ class SceneFileErrorsTest {
                 "{\"version\": 1, " + SPHERE + ", \"camera\": {\"eye\": [1, 1, 1], \"target\": [1, 1, 1]}}");
         assertMessage("room.json: planes[0]: plane normal must be finite and non-zero",
                 "{\"version\": 1, \"planes\": [{\"point\": [0, 0, 0], \"normal\": [0, 0, 0]}]}");
-        assertMessage("room.json: a scene needs at least one patch, plane or sphere", "{\"version\": 1}");
+        assertMessage("room.json: a scene needs at least one patch, mesh, plane or sphere", "{\"version\": 1}");
         assertMessage("models[0].patches[0].points: a degree 1x1 patch needs 4 points",
                 "{\"version\": 1, \"models\": [{\"patches\": [{\"degree\": [1, 1], \"points\": [[0, 0, 0]]}]}]}");
         assertMessage("models[0].patches[0].degree: degree in u must be 1..15, got 0",

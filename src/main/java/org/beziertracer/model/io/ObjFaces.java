@@ -1,0 +1,194 @@
+package org.beziertracer.model.io;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+import org.beziertracer.model.Mesh;
+
+/**
+ * The polygon statements of one OBJ parse ({@link ObjReader} hands them over): {@code vt u [v [w]]}
+ * texture coordinates, {@code vn x y z} normals and {@code f} faces whose corners are {@code v},
+ * {@code v/vt}, {@code v//vn} or {@code v/vt/vn} references (1-based, or negative counting back from
+ * the last one defined so far). A face of n ≥ 3 corners is cut into the fan of triangles
+ * {@code (1, k, k+1)}, keeping its winding. Every distinct corner (v, vt, vn) becomes one vertex of
+ * the {@link Mesh}; the mesh has uvs when every corner gave a {@code vt}, and normals (made unit)
+ * when every corner gave a {@code vn}, else none (then the face normal shades it).
+ *
+ * <p>Errors are one-line {@link ModelFormatException}s naming the file and the statement's line:
+ * fewer than 3 corners, a malformed reference, an index out of range, a coordinate that is not a
+ * finite number, more items than {@link ReadLimits#vertices()}.
+ */
+final class ObjFaces {
+
+    private record Corner(int v, int vt, int vn) {}
+
+    private final String file;
+    private final ReadLimits limits;
+    private double[] uvs = new double[2 * 16];
+    private int uvCount;
+    private double[] normals = new double[3 * 16];
+    private int normalCount;
+    /** Per mesh vertex its corner: v, vt, vn (-1 when not given). */
+    private int[] corners = new int[3 * 64];
+    private int vertexCount;
+    private int[] triangles = new int[3 * 64];
+    private int triangleCount;
+    private final Map<Corner, Integer> index = new HashMap<>();
+    private boolean allUvs = true, allNormals = true;
+    private int line;
+
+    ObjFaces(String file, ReadLimits limits) {
+        this.file = file;
+        this.limits = limits;
+    }
+
+    /** True when at least one face was read. */
+    boolean any() { return triangleCount > 0; }
+
+    /** {@code vt u [v [w]]}. */
+    void textureVertex(String[] t, int lineNumber) {
+        line = lineNumber;
+        if (t.length < 2 || t.length > 4) {
+            throw error("expected 1 to 3 texture coordinates after vt (u, v and w), found " + (t.length - 1) + " values");
+        }
+        if (uvCount >= limits.vertices()) {
+            throw error("a file may have at most " + limits.vertices() + " texture vertices (vt); this is one more");
+        }
+        int number = uvCount + 1;
+        double u = NumberText.parseFinite(t[1], "u of texture vertex " + number, file, line);
+        double v = t.length > 2 ? NumberText.parseFinite(t[2], "v of texture vertex " + number, file, line) : 0;
+        if (t.length > 3) {
+            NumberText.parseFinite(t[3], "w of texture vertex " + number, file, line);
+        }
+        if (2 * uvCount + 2 > uvs.length) {
+            uvs = Arrays.copyOf(uvs, 2 * uvs.length);
+        }
+        uvs[2 * uvCount] = u;
+        uvs[2 * uvCount + 1] = v;
+        uvCount++;
+    }
+
+    /** {@code vn x y z}. */
+    void normal(String[] t, int lineNumber) {
+        line = lineNumber;
+        if (t.length != 4) {
+            throw error("expected 3 coordinates after vn, found " + (t.length - 1) + " values");
+        }
+        if (normalCount >= limits.vertices()) {
+            throw error("a file may have at most " + limits.vertices() + " normals (vn); this is one more");
+        }
+        if (3 * normalCount + 3 > normals.length) {
+            normals = Arrays.copyOf(normals, 2 * normals.length);
+        }
+        int number = normalCount + 1;
+        for (int c = 0; c < 3; c++) {
+            normals[3 * normalCount + c] = NumberText.parseFinite(t[c + 1],
+                    "the " + "xyz".charAt(c) + " coordinate of normal " + number, file, line);
+        }
+        normalCount++;
+    }
+
+    /** {@code f c1 c2 c3 …}: a polygon over the {@code defined} vertices read so far, cut into a fan. */
+    void face(String[] t, int lineNumber, int defined) {
+        line = lineNumber;
+        int n = t.length - 1;
+        if (n < 3) {
+            throw error("expected at least 3 vertex references after " + t[0] + " (a polygon), found " + n);
+        }
+        if ((long) triangleCount + n - 2 > limits.vertices()) {
+            throw error("a file may have at most " + limits.vertices() + " triangles of faces; this face makes more");
+        }
+        int first = corner(t[1], 1, defined), previous = corner(t[2], 2, defined);
+        for (int k = 3; k <= n; k++) {
+            int current = corner(t[k], k, defined);
+            if (3 * triangleCount + 3 > triangles.length) {
+                triangles = Arrays.copyOf(triangles, 2 * triangles.length);
+            }
+            triangles[3 * triangleCount] = first;
+            triangles[3 * triangleCount + 1] = previous;
+            triangles[3 * triangleCount + 2] = current;
+            triangleCount++;
+            previous = current;
+        }
+    }
+
+    /** The mesh vertex of one face corner. */
+    private int corner(String token, int position, int defined) {
+        String[] parts = token.split("/", -1);
+        if (parts.length > 3 || parts[0].isEmpty() || parts.length == 3 && parts[2].isEmpty()
+                || parts.length == 2 && parts[1].isEmpty()) {
+            throw error("expected a vertex reference (v, v/vt, v//vn or v/vt/vn) for corner " + position
+                    + " of the face, found " + NumberText.describe(token));
+        }
+        int v = reference(parts[0], token, position, defined, "vertex", "v");
+        int vt = parts.length > 1 && !parts[1].isEmpty()
+                ? reference(parts[1], token, position, uvCount, "texture vertex", "vt") : -1;
+        int vn = parts.length > 2 ? reference(parts[2], token, position, normalCount, "normal", "vn") : -1;
+        allUvs &= vt >= 0;
+        allNormals &= vn >= 0;
+        Corner key = new Corner(v, vt, vn);
+        Integer known = index.get(key);
+        if (known != null) {
+            return known;
+        }
+        if (3 * vertexCount + 3 > corners.length) {
+            corners = Arrays.copyOf(corners, 2 * corners.length);
+        }
+        corners[3 * vertexCount] = v;
+        corners[3 * vertexCount + 1] = vt;
+        corners[3 * vertexCount + 2] = vn;
+        index.put(key, vertexCount);
+        return vertexCount++;
+    }
+
+    private int reference(String text, String token, int position, int defined, String what, String keyword) {
+        if (!NumberText.isWhole(text)) {
+            throw error("expected a " + what + " index for corner " + position + " of the face, found "
+                    + NumberText.describe(token));
+        }
+        if (defined == 0) {
+            throw error("expected a " + what + " index for corner " + position + " of the face, found "
+                    + NumberText.describe(token) + " but no " + what + " (" + keyword + ") is defined before this line");
+        }
+        int i = ObjVertices.resolve(NumberText.parseWhole(text), defined);
+        if (i < 0) {
+            throw error("expected a " + what + " index for corner " + position + " of the face in 1.." + defined
+                    + " or -" + defined + "..-1, found " + NumberText.describe(token) + ": index out of range");
+        }
+        return i;
+    }
+
+    /** The faces read, as one mesh over {@code vertices}; null when there were none. */
+    Mesh mesh(ObjVertices vertices) {
+        if (triangleCount == 0) {
+            return null;
+        }
+        double[] positions = new double[3 * vertexCount];
+        double[] uv = allUvs ? new double[2 * vertexCount] : null;
+        double[] nrm = allNormals ? new double[3 * vertexCount] : null;
+        for (int k = 0; k < vertexCount; k++) {
+            int v = corners[3 * k], vt = corners[3 * k + 1], vn = corners[3 * k + 2];
+            for (int c = 0; c < 3; c++) {
+                positions[3 * k + c] = vertices.vertex(v, c);
+            }
+            if (uv != null) {
+                uv[2 * k] = uvs[2 * vt];
+                uv[2 * k + 1] = uvs[2 * vt + 1];
+            }
+            if (nrm != null) {
+                double x = normals[3 * vn], y = normals[3 * vn + 1], z = normals[3 * vn + 2];
+                double len = Math.sqrt(x * x + y * y + z * z);
+                double s = len > 0 && Double.isFinite(len) ? 1 / len : 0;
+                nrm[3 * k] = x * s;
+                nrm[3 * k + 1] = y * s;
+                nrm[3 * k + 2] = z * s;
+            }
+        }
+        return Mesh.faces(positions, nrm, uv, Arrays.copyOf(triangles, 3 * triangleCount));
+    }
+
+    private ModelFormatException error(String detail) {
+        return new ModelFormatException(file, line, detail);
+    }
+}
