@@ -14,8 +14,9 @@ import org.beziertracer.math.LaneKernel;
  * <p>Each lane runs exactly the scalar solve's sequence of operations — the same evaluations (the
  * kernels give the scalar bits), the same steps, tests and extrapolation, in the same order — so
  * its outcome, root, last evaluation and residuals are the scalar solve's to the bit, and so is the
- * count of evaluations; only the order in which lanes are evaluated differs. Not for the iterate a
- * shadow ray leaves from (the scalar solve's {@code fromOrigin}): closest-hit queries only.
+ * count of evaluations; only the order in which lanes are evaluated differs. Not for a solve whose
+ * first iterate is the point a shadow ray leaves (the scalar solve's {@code fromOrigin},
+ * {@link RayPatchNewton#startsAtOrigin}): such a lane is solved alone.
  *
  * <h2>Layout</h2>
  * Slot {@code j} (the {@code j}-th lane handed in): {@code lane[j]} its lane of the batch,
@@ -36,9 +37,9 @@ final class NewtonLanes {
     double[] u = new double[0], v = new double[0], nextU = new double[0], nextV = new double[0], eval = new double[0];
     double[] residual1 = new double[0], residual2 = new double[0], rootT = new double[0];
     double[] escapeU = new double[0], escapeV = new double[0];
-    /** The slots to evaluate this round, their points, and the kernel's output (component-major). */
     /** Newton's last steps taken without an evaluation ({@link #extrapolate}), cumulative: a work counter. */
     long extrapolations;
+    /** The slots to evaluate this round, their points, and the kernel's output (component-major). */
     private int[] due = new int[0];
     private double[] dueU = new double[0], dueV = new double[0], out = new double[0];
 

@@ -205,6 +205,8 @@ public final class RayBatch {
         b.subPatch = s;
         b.u = ctx.rootU;
         b.v = ctx.rootV;
+        b.b1 = 0; // only triangles have barycentrics
+        b.b2 = 0;
         if (ctx.evalPatch == k && ctx.evalU == ctx.rootU && ctx.evalV == ctx.rootV) {
             System.arraycopy(ctx.eval, 0, hitEval, 9 * i, 9);
             hitEvalPatch[i] = k;

@@ -94,10 +94,8 @@ public final class AppFrame extends JFrame {
     }
 
     private void about() {
-        JOptionPane.showMessageDialog(this, "Bézier Tracer — ray tracing Bézier surfaces directly.\n"
-                + "Drag control points, drag empty space to rotate, wheel to zoom.\n\n"
-                + "Java " + System.getProperty("java.version") + "; kernel: "
-                + org.beziertracer.math.Kernels.best().description(), "About", JOptionPane.INFORMATION_MESSAGE);
+        JOptionPane.showMessageDialog(this, org.beziertracer.app.AboutText.text(), "About",
+                JOptionPane.INFORMATION_MESSAGE);
     }
 
     /** Asks about unsaved edits, then stops the app's threads and disposes the window. */
