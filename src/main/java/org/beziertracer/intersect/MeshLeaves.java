@@ -129,26 +129,14 @@ final class MeshLeaves implements Leaves {
         double e1x = p[o + 3] - p[o], e1y = p[o + 4] - p[o + 1], e1z = p[o + 5] - p[o + 2];
         double e2x = p[o + 6] - p[o], e2y = p[o + 7] - p[o + 1], e2z = p[o + 8] - p[o + 2];
         int i0 = m.triangleVertex(t, 0), i1 = m.triangleVertex(t, 1), i2 = m.triangleVertex(t, 2);
-        double det = 0, du1 = 0, dv1 = 0, du2 = 0, dv2 = 0;
+        double du1 = 0, dv1 = 0, du2 = 0, dv2 = 0; // without uvs: a degenerate (u,v) triangle, the edges
         if (m.hasUvs()) {
             du1 = m.uv(i1, 0) - m.uv(i0, 0);
             dv1 = m.uv(i1, 1) - m.uv(i0, 1);
             du2 = m.uv(i2, 0) - m.uv(i0, 0);
             dv2 = m.uv(i2, 1) - m.uv(i0, 1);
-            det = du1 * dv2 - dv1 * du2;
         }
-        if (det != 0) {
-            double inv = 1 / det;
-            sp.dpdux = (dv2 * e1x - dv1 * e2x) * inv;
-            sp.dpduy = (dv2 * e1y - dv1 * e2y) * inv;
-            sp.dpduz = (dv2 * e1z - dv1 * e2z) * inv;
-            sp.dpdvx = (du1 * e2x - du2 * e1x) * inv;
-            sp.dpdvy = (du1 * e2y - du2 * e1y) * inv;
-            sp.dpdvz = (du1 * e2z - du2 * e1z) * inv;
-        } else {
-            sp.dpdux = e1x; sp.dpduy = e1y; sp.dpduz = e1z;
-            sp.dpdvx = e2x; sp.dpdvy = e2y; sp.dpdvz = e2z;
-        }
+        TriangleMesh.derivatives(sp, e1x, e1y, e1z, e2x, e2y, e2z, du1, dv1, du2, dv2);
         double nx = 0, ny = 0, nz = 0, len = 0;
         if (m.hasNormals()) {
             nx = b0 * m.normal(i0, 0) + b1 * m.normal(i1, 0) + b2 * m.normal(i2, 0);

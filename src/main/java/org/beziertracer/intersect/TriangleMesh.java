@@ -197,19 +197,7 @@ final class TriangleMesh {
         double e2x = p[o + 6] - p[o], e2y = p[o + 7] - p[o + 1], e2z = p[o + 8] - p[o + 2];
         double du1 = mesh.uv(i1, 0) - mesh.uv(i0, 0), dv1 = mesh.uv(i1, 1) - mesh.uv(i0, 1);
         double du2 = mesh.uv(i2, 0) - mesh.uv(i0, 0), dv2 = mesh.uv(i2, 1) - mesh.uv(i0, 1);
-        double det = du1 * dv2 - dv1 * du2;
-        if (det != 0) {
-            double inv = 1 / det;
-            sp.dpdux = (dv2 * e1x - dv1 * e2x) * inv;
-            sp.dpduy = (dv2 * e1y - dv1 * e2y) * inv;
-            sp.dpduz = (dv2 * e1z - dv1 * e2z) * inv;
-            sp.dpdvx = (du1 * e2x - du2 * e1x) * inv;
-            sp.dpdvy = (du1 * e2y - du2 * e1y) * inv;
-            sp.dpdvz = (du1 * e2z - du2 * e1z) * inv;
-        } else {
-            sp.dpdux = e1x; sp.dpduy = e1y; sp.dpduz = e1z;
-            sp.dpdvx = e2x; sp.dpdvy = e2y; sp.dpdvz = e2z;
-        }
+        derivatives(sp, e1x, e1y, e1z, e2x, e2y, e2z, du1, dv1, du2, dv2);
         // Shading normal: interpolated analytic vertex normals
         double nx = b0 * mesh.normal(i0, 0) + b1 * mesh.normal(i1, 0) + b2 * mesh.normal(i2, 0);
         double ny = b0 * mesh.normal(i0, 1) + b1 * mesh.normal(i1, 1) + b2 * mesh.normal(i2, 1);
@@ -225,6 +213,28 @@ final class TriangleMesh {
             sp.nx = nx / len; sp.ny = ny / len; sp.nz = nz / len;
         } else {
             sp.nx = 0; sp.ny = 0; sp.nz = 1;
+        }
+    }
+
+    /**
+     * The flat triangle's derivatives into {@code sp}: solves {@code [e1 e2] = [dpdu dpdv] [du1 du2;
+     * dv1 dv2]} for the edges {@code e1, e2} and their steps in (u,v); the edges themselves when the
+     * (u,v) triangle is degenerate.
+     */
+    static void derivatives(SurfacePoint sp, double e1x, double e1y, double e1z, double e2x, double e2y,
+                            double e2z, double du1, double dv1, double du2, double dv2) {
+        double det = du1 * dv2 - dv1 * du2;
+        if (det != 0) {
+            double inv = 1 / det;
+            sp.dpdux = (dv2 * e1x - dv1 * e2x) * inv;
+            sp.dpduy = (dv2 * e1y - dv1 * e2y) * inv;
+            sp.dpduz = (dv2 * e1z - dv1 * e2z) * inv;
+            sp.dpdvx = (du1 * e2x - du2 * e1x) * inv;
+            sp.dpdvy = (du1 * e2y - du2 * e1y) * inv;
+            sp.dpdvz = (du1 * e2z - du2 * e1z) * inv;
+        } else {
+            sp.dpdux = e1x; sp.dpduy = e1y; sp.dpduz = e1z;
+            sp.dpdvx = e2x; sp.dpdvy = e2y; sp.dpdvz = e2z;
         }
     }
 }
