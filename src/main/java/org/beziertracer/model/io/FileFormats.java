@@ -27,7 +27,16 @@ public final class FileFormats {
 
     /** Bézier patch text ({@link BptReader}, {@link BptWriter}). */
     public static final FileFormat BPT = FileFormat.model("BPT", "Bézier patch text", List.of("bpt"),
-            BptReader::readScene, (out, scene) -> BptWriter.write(out, scene.patches()));
+            BptReader::readScene, (out, scene) -> {
+                // a BPT file holds Bézier patches only: a mesh would be lost without a word
+                int meshes = scene.meshes().size();
+                if (meshes > 0) {
+                    throw new IllegalArgumentException("a BPT file holds Bézier patches only but the model has "
+                            + meshes + (meshes == 1 ? " triangle mesh" : " triangle meshes")
+                            + "; save the model as .obj");
+                }
+                BptWriter.write(out, scene.patches());
+            });
 
     /** Wavefront OBJ free-form surfaces and polygon faces ({@link ObjReader}, {@link ObjWriter}). */
     public static final FileFormat OBJ = FileFormat.model("OBJ", "Wavefront OBJ free-form surfaces", List.of("obj"),

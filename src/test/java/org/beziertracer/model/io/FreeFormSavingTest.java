@@ -45,6 +45,19 @@ class FreeFormSavingTest {
     }
 
     @Test
+    void bptRefusesAModelWithATriangleMeshWithOneLineAndWritesNothing() {
+        Path file = dir.resolve("floor.bpt");
+        org.beziertracer.model.Mesh floor = org.beziertracer.model.Mesh.faces(
+                new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, null, null, new int[] {0, 1, 2});
+        Scene scene = Models.load("patch").toBuilder().addMesh(floor, 0).build();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> FileFormats.BPT.write(file, new SceneDocument(scene, RenderSettings.defaults())));
+        assertEquals("a BPT file holds Bézier patches only but the model has 1 triangle mesh; save the model as .obj",
+                e.getMessage());
+        assertFalse(Files.exists(file));
+    }
+
+    @Test
     void sceneFilesKeepWeightsDomainsAndTrims() {
         Scene sphere = Models.load("sphere");
         String json = SceneFiles.toJson(new SceneDocument(sphere, RenderSettings.defaults()));
