@@ -18,7 +18,7 @@ import org.beziertracer.model.Scene;
  * <p>An edit of the scene's patches keeps these leaves as they are. Immutable; shared by render
  * threads, each with its own {@link TraceContext}.
  */
-final class MeshLeaves implements Leaves {
+final class MeshLeaves implements FixedLeaves {
 
     final TriangleMesh triangles;
     private final Mesh[] meshes;
@@ -137,35 +137,14 @@ final class MeshLeaves implements Leaves {
             dv2 = m.uv(i2, 1) - m.uv(i0, 1);
         }
         TriangleMesh.derivatives(sp, e1x, e1y, e1z, e2x, e2y, e2z, du1, dv1, du2, dv2);
-        double nx = 0, ny = 0, nz = 0, len = 0;
+        double nx = 0, ny = 0, nz = 0; // without vertex normals: the face normal
         if (m.hasNormals()) {
             nx = b0 * m.normal(i0, 0) + b1 * m.normal(i1, 0) + b2 * m.normal(i2, 0);
             ny = b0 * m.normal(i0, 1) + b1 * m.normal(i1, 1) + b2 * m.normal(i2, 1);
             nz = b0 * m.normal(i0, 2) + b1 * m.normal(i1, 2) + b2 * m.normal(i2, 2);
-            len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         }
-        if (!(len > 1e-300)) {
-            nx = e1y * e2z - e1z * e2y;
-            ny = e1z * e2x - e1x * e2z;
-            nz = e1x * e2y - e1y * e2x;
-            len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        }
-        if (len > 0) {
-            sp.nx = nx / len; sp.ny = ny / len; sp.nz = nz / len;
-        } else {
-            sp.nx = 0; sp.ny = 0; sp.nz = 1;
-        }
+        TriangleMesh.shadingNormal(sp, nx, ny, nz, e1x, e1y, e1z, e2x, e2y, e2z);
     }
-
-    /** The meshes do not change when patches are edited. */
-    @Override
-    public MeshLeaves withPatch(Scene edited, int index, double sceneSize) { return this; }
-
-    @Override
-    public MeshLeaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit) { return this; }
-
-    @Override
-    public boolean keepsUntouchedLeaves(Leaves before) { return before == this; }
 
     @Override
     public long bytes() {

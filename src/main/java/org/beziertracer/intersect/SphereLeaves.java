@@ -13,7 +13,7 @@ import org.beziertracer.model.Scene;
  * <p>An edit of the scene's patches keeps these leaves as they are. Immutable; shared by render
  * threads.
  */
-final class SphereLeaves implements Leaves {
+final class SphereLeaves implements FixedLeaves {
 
     final AnalyticShapes shapes;
 
@@ -55,15 +55,6 @@ final class SphereLeaves implements Leaves {
 
     @Override
     public boolean holdsSpheres() { return true; }
-
-    @Override
-    public SphereLeaves withPatch(Scene edited, int index, double sceneSize) { return this; }
-
-    @Override
-    public SphereLeaves withPatches(Scene edited, int[] indices, double sceneSize, boolean keepSplit) { return this; }
-
-    @Override
-    public boolean keepsUntouchedLeaves(Leaves before) { return before == this; }
 
     @Override
     public long bytes() { return org.beziertracer.math.HeapBytes.of(shapes.spheres); }

@@ -202,6 +202,16 @@ final class TriangleMesh {
         double nx = b0 * mesh.normal(i0, 0) + b1 * mesh.normal(i1, 0) + b2 * mesh.normal(i2, 0);
         double ny = b0 * mesh.normal(i0, 1) + b1 * mesh.normal(i1, 1) + b2 * mesh.normal(i2, 1);
         double nz = b0 * mesh.normal(i0, 2) + b1 * mesh.normal(i1, 2) + b2 * mesh.normal(i2, 2);
+        shadingNormal(sp, nx, ny, nz, e1x, e1y, e1z, e2x, e2y, e2z);
+    }
+
+    /**
+     * The unit shading normal into {@code sp}: the interpolated vertex normal {@code n}, or, where it
+     * vanishes (none given, or opposite normals cancelling), the face normal {@code e1 × e2}; +z for a
+     * degenerate triangle.
+     */
+    static void shadingNormal(SurfacePoint sp, double nx, double ny, double nz, double e1x, double e1y, double e1z,
+                              double e2x, double e2y, double e2z) {
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         if (!(len > 1e-300)) {
             nx = e1y * e2z - e1z * e2y;
