@@ -7,6 +7,8 @@ import java.util.stream.IntStream;
 import org.beziertracer.math.Bounds;
 import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Instance;
+import org.beziertracer.model.Placement;
 import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.TrimRegion;
 
@@ -79,6 +81,11 @@ public final class SubPatchTable {
     private final SplitOptions options;
     private final double minSize;
     public final int count;
+    /**
+     * Work of the build: the patches that went through {@link PatchSplitter} (a model used several
+     * times counts once; an edit counts the patches it re-split).
+     */
+    public final int splitPatches;
     public final int[] parent;
     public final byte[] degreeU;
     public final byte[] degreeV;
@@ -129,8 +136,9 @@ public final class SubPatchTable {
 
     /** Empty arrays for {@code patchCount} patches and {@code leaves} leaves, nets of {@code netDoubles}. */
     private SubPatchTable(List<BezierPatch> patches, SplitOptions options, double minSize, int leaves,
-                          int netDoubles, boolean rational, TrimCurves[] trims) {
+                          int netDoubles, boolean rational, TrimCurves[] trims, int splitPatches) {
         this.patches = List.copyOf(patches);
+        this.splitPatches = splitPatches;
         this.options = options;
         this.minSize = minSize;
         int patchCount = patches.size();
@@ -172,27 +180,79 @@ public final class SubPatchTable {
      * {@code requested} says for a scene of this many patches ({@link SplitOptions#forPatches}).
      */
     public static SubPatchTable build(List<BezierPatch> patches, SplitOptions requested) {
+        return build(patches, requested, List.of());
+    }
+
+    /**
+     * As {@link #build(List, SplitOptions)}, splitting each distinct model of {@code instances}
+     * once: the pieces of a patch placed by a {@linkplain Placement#similarity() similarity} are
+     * its model patch's pieces, their nets mapped by the placement (de Casteljau's points are
+     * affine combinations of the net, so this is the same split of the placed patch, up to
+     * rounding; the leaves' boxes are made from the mapped nets, so they still hold the surface).
+     * Other placements (a scale that differs between axes) split their patches themselves, as
+     * the scene's own: their flatness and the Newton leaves' refinement are not kept by the map.
+     */
+    public static SubPatchTable build(List<BezierPatch> patches, SplitOptions requested, List<Instance> instances) {
         SplitOptions options = requested.forPatches(patches.size());
         double minSize = minSize(patches, options);
         TrimCurves[] trims = TrimCurves.forPatches(patches);
         // The pieces that are not the patch itself only: a patch that stays whole is copied from
         // itself, so a model of a million small patches holds no second copy of its nets while built
         PatchPieces[] pieces = new PatchPieces[patches.size()];
+        Instance[] placedBy = new Instance[patches.size()];
+        for (Instance in : instances) {
+            if (in.placement().similarity()) {
+                Arrays.fill(placedBy, in.first(), in.first() + in.count(), in);
+            }
+        }
         boolean parallel = pieces.length >= PARALLEL_PATCHES;
         // In runs of patches, each with one working memory of the splitter
         IntStream runs = IntStream.range(0, (pieces.length + SPLIT_RUN - 1) / SPLIT_RUN);
+        java.util.concurrent.atomic.AtomicInteger split = new java.util.concurrent.atomic.AtomicInteger();
         (parallel ? runs.parallel() : runs).forEach(r -> {
             PatchSplitter.Workspace w = new PatchSplitter.Workspace();
             for (int k = r * SPLIT_RUN, end = Math.min(pieces.length, k + SPLIT_RUN); k < end; k++) {
-                pieces[k] = kept(PatchSplitter.split(patches.get(k), options, trims[k], minSize, w));
+                if (placedBy[k] == null) {
+                    pieces[k] = kept(PatchSplitter.split(patches.get(k), options, trims[k], minSize, w));
+                    split.incrementAndGet();
+                }
             }
         });
-        return assemble(patches, options, minSize, trims, pieces, parallel);
+        // Each distinct model once (its patches carry the trim regions of their placed copies),
+        // then every placed patch from its model patch's pieces
+        var models = new java.util.IdentityHashMap<List<BezierPatch>, PatchPieces[]>();
+        for (Instance in : instances) {
+            if (in.placement().similarity() && !models.containsKey(in.model())) {
+                PatchPieces[] own = new PatchPieces[in.count()];
+                IntStream js = IntStream.range(0, own.length);
+                (own.length >= PARALLEL_PATCHES ? js.parallel() : js).forEach(j -> own[j] = kept(PatchSplitter.split(
+                        in.model().get(j), options, trims[in.first() + j], minSize, new PatchSplitter.Workspace())));
+                split.addAndGet(own.length);
+                models.put(in.model(), own);
+            }
+        }
+        IntStream placed = IntStream.range(0, pieces.length).filter(k -> placedBy[k] != null);
+        (parallel ? placed.parallel() : placed).forEach(k -> {
+            Instance in = placedBy[k];
+            pieces[k] = mapped(models.get(in.model())[k - in.first()], in.placement());
+        });
+        return assemble(patches, options, minSize, trims, pieces, parallel, split.get());
+    }
+
+    /** {@code p}'s pieces with their nets mapped by {@code placement} (null: a whole leaf stays whole). */
+    private static PatchPieces mapped(PatchPieces p, Placement placement) {
+        if (p == null) {
+            return null;
+        }
+        double[] nets = p.nets().clone();
+        placement.mapPoints(nets, 0, nets.length / 3);
+        return new PatchPieces(p.degreeU(), p.degreeV(), p.count(), nets, p.boxes(), p.weights(), p.trimTest());
     }
 
     /** The table of {@code patches} split into {@code pieces} (null: a whole leaf sharing the patch's net). */
     private static SubPatchTable assemble(List<BezierPatch> patches, SplitOptions options, double minSize,
-                                          TrimCurves[] trims, PatchPieces[] pieces, boolean parallel) {
+                                          TrimCurves[] trims, PatchPieces[] pieces, boolean parallel,
+                                          int splitPatches) {
         int leaves = 0;
         long doubles = 0;
         boolean rational = false;
@@ -201,7 +261,8 @@ public final class SubPatchTable {
             doubles += regionLength(patches.get(k), pieces[k], pieces.length);
             rational |= patches.get(k).isRational();
         }
-        SubPatchTable t = new SubPatchTable(patches, options, minSize, leaves, checkedLength(doubles), rational, trims);
+        SubPatchTable t = new SubPatchTable(patches, options, minSize, leaves, checkedLength(doubles), rational, trims,
+                splitPatches);
         int s = 0, off = 0;
         for (int k = 0; k < pieces.length; k++) {
             t.firstOf[k] = s;
@@ -433,7 +494,8 @@ public final class SubPatchTable {
             leaves += dLeaves[e];
             doubles += dNets[e];
         }
-        SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims);
+        SubPatchTable t = new SubPatchTable(list, options, minSize, (int) leaves, checkedLength(doubles), rational, trims,
+                edited.length);
         copyAround(t, edited, dLeaves, dNets);
         for (int e = 0; e < edited.length; e++) {
             t.fill(edited[e], pieces[e], true);
@@ -459,7 +521,7 @@ public final class SubPatchTable {
         for (int k = 0; k < pieces.length; k++) {
             pieces[k] = kept(PatchSplitter.split(list.get(k), options, trims[k], minSize, w));
         }
-        return assemble(list, options, minSize, trims, pieces, false);
+        return assemble(list, options, minSize, trims, pieces, false, pieces.length);
     }
 
     /** End of patch {@code k}'s region in {@link #nets}. */

@@ -42,7 +42,7 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
 
     /** Pre-splits the scene's patches as {@code options} say and picks the solver of its method. */
     static PatchLeaves build(Scene scene, IntersectOptions options, double sceneSize) {
-        SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit());
+        SubPatchTable table = SubPatchTable.build(scene.patches(), options.effectiveSplit(), scene.instances());
         return TrimmedLeaves.ifTrimmed(options.method().leaves.create(table, RELATIVE_TOLERANCE * sceneSize));
     }
 

@@ -29,6 +29,7 @@ public final class Scene {
     private final List<Material> materials;
     private final List<PointLight> lights;
     private final CameraSpec camera;
+    private final List<Instance> instances;
 
     /** A scene of Bézier patches only (at least one). */
     public Scene(List<BezierPatch> patches) {
@@ -48,6 +49,7 @@ public final class Scene {
         this.materials = List.copyOf(b.materials.isEmpty() ? List.of(Material.DEFAULT) : b.materials);
         this.lights = List.copyOf(b.lights);
         this.camera = b.camera;
+        this.instances = List.copyOf(b.instances);
         if (b.requirePatches && patches.isEmpty()) {
             throw new IllegalArgumentException("a model needs at least one patch");
         }
@@ -64,6 +66,7 @@ public final class Scene {
             meshMaterial[k] = b.meshMaterial.get(k);
             checkMaterial("mesh " + k, meshMaterial[k]);
         }
+        checkInstances();
         for (int k = 0; k < planes.size(); k++) {
             checkMaterial("plane " + k, planes.get(k).material());
         }
@@ -79,7 +82,36 @@ public final class Scene {
         }
     }
 
+    /**
+     * An instance's placed patches must be its model's, one for one: the same degrees, kind and
+     * trim region (the values are the caller's {@link Placement} of the model's, not compared).
+     */
+    private void checkInstances() {
+        int end = 0;
+        for (Instance in : instances) {
+            if (in.first() < end || in.first() + in.count() > patches.size()) {
+                throw new IllegalArgumentException("instance of patches " + in.first() + ".." + (in.first() + in.count() - 1)
+                        + " overlaps another or lies outside the scene's " + patches.size() + " patches");
+            }
+            for (int j = 0; j < in.count(); j++) {
+                BezierPatch m = in.model().get(j), p = patches.get(in.first() + j);
+                if (m.degreeU() != p.degreeU() || m.degreeV() != p.degreeV() || m.isRational() != p.isRational()
+                        || m.trim() != p.trim()) {
+                    throw new IllegalArgumentException("patch " + (in.first() + j) + " is not a placement of its model's patch " + j);
+                }
+            }
+            end = in.first() + in.count();
+        }
+    }
+
     public List<BezierPatch> patches() { return patches; }
+
+    /**
+     * The uses of models in this scene, in patch order, not overlapping ({@link Instance}); patches
+     * outside every instance are the scene's own. Empty unless the scene was built with
+     * {@link Builder#addInstance}; an edit of a patch drops the instance that held it.
+     */
+    public List<Instance> instances() { return instances; }
 
     /** Triangle meshes (an OBJ file's polygon faces), beside the patches. */
     public List<Mesh> meshes() { return meshes; }
@@ -116,7 +148,13 @@ public final class Scene {
     public Scene withPatch(int index, BezierPatch patch) {
         var copy = new ArrayList<>(patches);
         copy.set(index, patch);
-        return toBuilder().patches(copy).build();
+        Builder b = toBuilder().patches(copy);
+        for (Instance in : instances) {
+            if (!in.covers(index)) {
+                b.instances.add(in);
+            }
+        }
+        return b.build();
     }
 
     /** Union of the control-point boxes of every patch (empty when there are none). */
@@ -150,6 +188,7 @@ public final class Scene {
         for (int k = 0; k < meshes.size(); k++) {
             b.addMesh(meshes.get(k), meshMaterial[k]);
         }
+        b.instances.addAll(instances);
         return b;
     }
 
@@ -165,13 +204,37 @@ public final class Scene {
         private final List<Sphere> spheres = new ArrayList<>();
         private final List<Material> materials = new ArrayList<>();
         private final List<PointLight> lights = new ArrayList<>();
+        private final List<Instance> instances = new ArrayList<>();
         private CameraSpec camera;
         private boolean requirePatches;
 
-        /** Replaces the patch list (materials of the patches are kept by index, default 0). */
+        /**
+         * Replaces the patch list (materials of the patches are kept by index, default 0); the
+         * instances are forgotten (the patches are the scene's own).
+         */
         public Builder patches(List<BezierPatch> list) {
             patches.clear();
             patches.addAll(list);
+            instances.clear();
+            return this;
+        }
+
+        /**
+         * Adds a use of {@code model}: its patches mapped by {@code placement}, given as
+         * {@code placed} (made by the caller, who reports their errors), all with material
+         * {@code material}. Every use of one model should pass the same unmodifiable
+         * {@code model} list ({@code List.copyOf} keeps such a list as it is): the uses of one list
+         * are split once.
+         */
+        public Builder addInstance(List<BezierPatch> model, List<BezierPatch> placed, Placement placement, int material) {
+            if (placed.size() != model.size()) {
+                throw new IllegalArgumentException(placed.size() + " placed patches for a model of " + model.size());
+            }
+            int first = patches.size();
+            addPatches(placed, material);
+            if (!placed.isEmpty()) {
+                instances.add(new Instance(first, List.copyOf(model), placement));
+            }
             return this;
         }
 

@@ -12,6 +12,7 @@ import org.beziertracer.geometry.DeCasteljau;
 import org.beziertracer.geometry.PatchNormals;
 import org.beziertracer.math.Aabb;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Placement;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 
@@ -40,7 +41,11 @@ public final class Fixtures {
         return drags;
     }
 
-    /** The first {@code count} patches of the teapot, or {@code count/32} teapots on a grid. */
+    /**
+     * The first {@code count} patches of the teapot, or {@code count/32} teapots on a grid: one
+     * model used {@code count/32} times ({@link Scene.Builder#addInstance}), as a scene file that
+     * lists the built-in teapot again with other transforms.
+     */
     public static Scene teapots(int patchCount) {
         List<BezierPatch> teapot = Models.teapot().patches();
         if (patchCount <= teapot.size()) {
@@ -48,19 +53,32 @@ public final class Fixtures {
         }
         int copies = patchCount / teapot.size();
         int side = (int) Math.ceil(Math.sqrt(copies));
-        List<BezierPatch> all = new ArrayList<>();
+        Scene.Builder scene = Scene.builder();
         for (int c = 0; c < copies; c++) {
-            double tx = 300.0 * (c % side), ty = 200.0 * (c / side);
+            Shift shift = new Shift(300.0 * (c % side), 200.0 * (c / side));
+            List<BezierPatch> placed = new ArrayList<>();
             for (BezierPatch p : teapot) {
                 double[] net = p.copyNet();
-                for (int i = 0; i < net.length; i += 3) {
-                    net[i] += tx;
-                    net[i + 1] += ty;
-                }
-                all.add(new BezierPatch(p.degreeU(), p.degreeV(), net));
+                shift.mapPoints(net, 0, net.length / 3);
+                placed.add(new BezierPatch(p.degreeU(), p.degreeV(), net));
+            }
+            scene.addInstance(teapot, placed, shift, 0);
+        }
+        return scene.build();
+    }
+
+    /** A translation in x and y. */
+    private record Shift(double tx, double ty) implements Placement {
+        @Override
+        public void mapPoints(double[] xyz, int offset, int count) {
+            for (int i = offset; i < offset + 3 * count; i += 3) {
+                xyz[i] += tx;
+                xyz[i + 1] += ty;
             }
         }
-        return new Scene(all);
+
+        @Override
+        public boolean similarity() { return true; }
     }
 
     /**

@@ -2,6 +2,7 @@ package org.beziertracer.model.io;
 
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
+import org.beziertracer.model.Placement;
 
 /**
  * The affine placement of a model in a scene file: {@code p' = T + Rz·Ry·Rx·(S·p)} — scale
@@ -13,7 +14,7 @@ import org.beziertracer.model.Mesh;
  * turns use exact sines and cosines (0, ±1), so rotating by 90° moves (1,0,0) exactly onto an axis.
  * Immutable.
  */
-record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees) {
+record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees) implements Placement {
 
     static final ModelTransform IDENTITY = new ModelTransform(new double[3], new double[] {1, 1, 1}, new double[3]);
 
@@ -24,6 +25,27 @@ record ModelTransform(double[] translate, double[] scale, double[] rotateDegrees
             }
         }
         return true;
+    }
+
+    /** The same steps as {@link #apply(BezierPatch, int)}, point by point (a point that overflows is left part-mapped). */
+    @Override
+    public void mapPoints(double[] xyz, int offset, int count) {
+        if (isIdentity()) {
+            return;
+        }
+        double[] p = new double[3];
+        for (int k = offset, end = offset + 3 * count; k < end; k += 3) {
+            System.arraycopy(xyz, k, p, 0, 3);
+            applyInPlace(p);
+            System.arraycopy(p, 0, xyz, k, 3);
+        }
+    }
+
+    /** Rotations and a translation keep distances; a scale keeps their ratios when it is the same (up to sign) on every axis. */
+    @Override
+    public boolean similarity() {
+        double s = Math.abs(scale[0]);
+        return Math.abs(scale[1]) == s && Math.abs(scale[2]) == s && s > 0;
     }
 
     /** Which step of the transform overflowed which coordinate, and the values that did it. */

@@ -39,6 +39,8 @@ final class SceneReader {
     private final Path baseDir;
     private final ReadLimits limits;
     private int patchCount;
+    /** Models read so far, by file path or built-in name: a model listed again is the same {@code Scene}. */
+    private final Map<String, Scene> loaded = new HashMap<>();
     private final Scene.Builder builder = Scene.builder();
     private final List<Material> materials = new ArrayList<>();
     private final Map<String, Integer> named = new HashMap<>();
@@ -145,6 +147,7 @@ final class SceneReader {
         }
         List<BezierPatch> patches;
         Mesh mesh = null;
+        boolean shared = m.has("file") || m.has("builtin");
         if (m.has("file")) {
             Scene file = loadFile(m.get("file"));
             patches = file.patches();
@@ -159,7 +162,8 @@ final class SceneReader {
                 throw b.error("unknown built-in model " + Echo.quote(b.asString()) + " (expected one of: "
                         + String.join(", ", BuiltIns.names(FileFormat.Holds.MODEL)) + ")");
             }
-            patches = model.get().load().scene().patches();
+            // a built-in listed again is the same model (one list of patches: split once, Instance)
+            patches = loaded.computeIfAbsent("builtin:" + model.get().name(), key -> model.get().load().scene()).patches();
         } else if (m.has("mesh")) {
             patches = List.of();
             mesh = inlineMesh(m.get("mesh"));
@@ -180,7 +184,11 @@ final class SceneReader {
             placed.add(build(t != null ? t : m, () -> transform.apply(p, number)));
         }
         int material = materialRef(m.get("material"));
-        builder.addPatches(placed, material);
+        if (shared) {
+            builder.addInstance(patches, placed, transform, material);
+        } else {
+            builder.addPatches(placed, material);
+        }
         if (mesh != null) {
             Mesh source = mesh;
             builder.addMesh(build(t != null ? t : m, () -> transform.apply(source)), material);
@@ -208,8 +216,16 @@ final class SceneReader {
             throw f.error("no such model file " + Echo.quote(name) + (baseDir == null || Path.of(name).isAbsolute()
                     ? "" : " in " + baseDir));
         }
+        // a file listed again is read once and is the same model (split once, Instance)
+        String key = "file:" + file.toAbsolutePath().normalize();
+        Scene known = loaded.get(key);
+        if (known != null) {
+            return known;
+        }
         try {
-            return format.get().read(file).scene();
+            Scene read = format.get().read(file).scene();
+            loaded.put(key, read);
+            return read;
         } catch (ModelFormatException e) {
             throw f.error(e.getMessage());
         }
