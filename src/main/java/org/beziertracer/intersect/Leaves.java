@@ -91,6 +91,13 @@ interface Leaves extends LeafIntersector<TraceContext>, LeafOccluder<TraceContex
         completeHit(hit);
     }
 
+    /**
+     * The curvature at a hit of these leaves ({@link org.beziertracer.geometry.SurfaceCurvature}
+     * layout, signed against the surface's own normal) into {@code out}; false when these leaves
+     * have no curvature to give (flat triangles), and the caller reports a flat point.
+     */
+    default boolean curvature(TraceContext ctx, Hit hit, double[] out) { return false; }
+
     /** True when the scene's spheres are among these leaves (then the queries do not test them apart). */
     default boolean holdsSpheres() { return false; }
 

@@ -206,6 +206,11 @@ final class MixedLeaves implements Leaves, LaneIntersector<TraceContext>, LaneOc
     }
 
     @Override
+    public boolean curvature(TraceContext ctx, Hit hit, double[] out) {
+        return partOf(hit).curvature(ctx, hit, out);
+    }
+
+    @Override
     public void surfacePoint(TraceContext ctx, Hit hit, SurfacePoint sp) {
         partOf(hit).surfacePoint(ctx, hit, sp);
     }

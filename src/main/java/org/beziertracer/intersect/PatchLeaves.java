@@ -4,6 +4,7 @@ import org.beziertracer.accel.LaneIntersector;
 import org.beziertracer.accel.LaneOccluder;
 import org.beziertracer.geometry.PatchNormals;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.geometry.SurfaceCurvature;
 import org.beziertracer.model.Scene;
 
 /**
@@ -184,6 +185,23 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
         PatchNormals.unitNormal(table.patchNets, off, n, m, dim, u, v, e, table.patchSquaredExtent[k], nrm, 0,
                 ctx.scratch);
         sp.nx = nrm[0]; sp.ny = nrm[1]; sp.nz = nrm[2];
+    }
+
+    /**
+     * Exact curvature of the parent patch at the hit's (u,v) ({@link SurfaceCurvature}, through
+     * the homogeneous net of a rational patch); the principal curvatures do not depend on the
+     * parameters, so a piece of a free-form surface is measured in its own [0,1]².
+     */
+    @Override
+    public final boolean curvature(TraceContext ctx, Hit hit, double[] out) {
+        int k = hit.index;
+        double[] domain = table.patchDomain;
+        boolean plain = SurfaceParameters.unit(domain, k);
+        double u = plain ? hit.u : SurfaceParameters.s(domain, k, hit.u);
+        double v = plain ? hit.v : SurfaceParameters.t(domain, k, hit.v);
+        SurfaceCurvature.at(table.patchNets, table.patchNetOffset[k], table.patchDegreeU[k], table.patchDegreeV[k],
+                table.patchDim[k], u, v, out, ctx.curvatureScratch);
+        return true;
     }
 
     /** Re-splits only the edited patch, as {@link #withPatches} keeping its split. */

@@ -438,6 +438,22 @@ public final class SceneIntersector {
         }
     }
 
+    /**
+     * The curvature at a hit ({@link org.beziertracer.geometry.SurfaceCurvature} layout: K, H,
+     * k1 ≥ k2 signed against the surface's own normal, the principal directions, that normal),
+     * after {@link #surfacePoint} filled {@code sp} for it: exact on patches (second derivatives of
+     * the parent patch), {@code −1/r} on a sphere of radius r, none on planes and triangles (mesh
+     * triangles, and the tessellated mode's: a facet is flat, which is what a tessellation shows).
+     */
+    public void curvature(TraceContext ctx, Hit hit, SurfacePoint sp, double[] out) {
+        if (hit.kind == Hit.SPHERE) {
+            double r = scene.spheres().get(hit.index).radius();
+            HitCurvature.umbilic(-1 / r, sp.nx, sp.ny, sp.nz, out);
+        } else if (hit.kind == Hit.PLANE || !leaves.curvature(ctx, hit, out)) {
+            HitCurvature.umbilic(0, sp.nx, sp.ny, sp.nz, out);
+        }
+    }
+
     public Scene scene() { return scene; }
 
     public IntersectOptions options() { return options; }

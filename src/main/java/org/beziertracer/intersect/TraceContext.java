@@ -53,6 +53,8 @@ public final class TraceContext {
     final int[] entryDepth = new int[MAX_ENTRIES];
     final double[] tmpNet = new double[NET_LENGTH];
     final double[] scratch = new double[DeCasteljau.SCRATCH_LENGTH];
+    /** Scratch of {@link SceneIntersector#curvature} (second derivatives at a hit). */
+    final double[] curvatureScratch = new double[org.beziertracer.geometry.SurfaceCurvature.SCRATCH];
     final double[] eval = new double[9];
     final double[] refineEval = new double[9];
     /** {@link #eval} holds S, Su, Sv of patch {@code evalPatch} at {@code (evalU, evalV)} (-1: unknown). */
