@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Hit;
+import org.beziertracer.geometry.SurfaceCurvature;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.intersect.SceneIntersector;
@@ -80,6 +81,11 @@ final class TraceCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "seed for --random (default: ${DEFAULT-VALUE})")
     long seed;
 
+    @Option(names = "--curvature", description = "add the curvature at each hit: columns gaussian, mean, k1, k2 "
+            + "(principal curvatures, k1 ≥ k2, signed against the reported normal: positive where the surface bends "
+            + "toward it) and the principal directions d1x..d1z, d2x..d2z (unit; d2 = n × d1)")
+    boolean curvature;
+
     @Option(names = "--stats", description = "print build and trace timings to standard error")
     boolean stats;
 
@@ -97,10 +103,11 @@ final class TraceCommand implements Callable<Integer> {
         TraceContext ctx = si.newContext();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
+        double[] bend = curvature ? new double[SurfaceCurvature.LENGTH] : null;
         long rays = 0, hits = 0;
         long traceNanos = 0;
         try (Writer out = openOutput()) {
-            out.write(objects ? HEADER + ",object" : HEADER);
+            out.write((objects ? HEADER + ",object" : HEADER) + (curvature ? "," + CURVATURE_HEADER : ""));
             out.write('\n');
             StringBuilder line = new StringBuilder(256);
             double[] ray = new double[6];
@@ -113,12 +120,18 @@ final class TraceCommand implements Callable<Integer> {
                             Double.POSITIVE_INFINITY, hit);
                     if (found) {
                         si.surfacePoint(ctx, hit, sp);
+                        if (curvature) {
+                            si.curvature(ctx, hit, sp, bend);
+                        }
                     }
                     traceNanos += System.nanoTime() - t0;
                     if (found) {
                         hits++;
                     }
                     csvLine(line, rays, found ? hit : null, sp, objects);
+                    if (curvature) {
+                        curvatureColumns(line, found ? bend : null);
+                    }
                     line.append('\n');
                     out.append(line);
                     rays++;
@@ -159,6 +172,24 @@ final class TraceCommand implements Callable<Integer> {
             if (hit != null) {
                 line.append(KINDS[hit.kind]).append(' ').append(hit.index);
             }
+        }
+    }
+
+    static final String CURVATURE_HEADER = "gaussian,mean,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z";
+
+    /** The curvature columns of a hit ({@link SceneIntersector#curvature}), or empty ones for a miss. */
+    private static void curvatureColumns(StringBuilder line, double[] c) {
+        if (c == null) {
+            line.append(",,,,,,,,,,");
+            return;
+        }
+        line.append(',').append(c[SurfaceCurvature.GAUSSIAN]).append(',').append(c[SurfaceCurvature.MEAN])
+                .append(',').append(c[SurfaceCurvature.K1]).append(',').append(c[SurfaceCurvature.K2]);
+        for (int k = 0; k < 3; k++) {
+            line.append(',').append(c[SurfaceCurvature.D1 + k]);
+        }
+        for (int k = 0; k < 3; k++) {
+            line.append(',').append(c[SurfaceCurvature.D2 + k]);
         }
     }
 

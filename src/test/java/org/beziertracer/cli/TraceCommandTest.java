@@ -50,6 +50,37 @@ class TraceCommandTest {
     }
 
     @Test
+    void curvatureAddsGaussianMeanPrincipalCurvaturesAndDirectionsToEachHit() {
+        Run r = run("trace", "sphere", "--random", "300", "--curvature");
+        assertEquals(0, r.code(), r.err());
+        String[] lines = r.out().split("\n");
+        assertEquals(TraceCommand.HEADER + "," + TraceCommand.CURVATURE_HEADER, lines[0]);
+        int hits = 0;
+        for (int k = 1; k < lines.length; k++) {
+            String[] f = lines[k].split(",", -1);
+            assertEquals(22, f.length, lines[k]);
+            if (f[1].equals("0")) {
+                assertEquals("", f[12] + f[21], "a miss has empty curvature columns: " + lines[k]);
+                continue;
+            }
+            hits++;
+            double gaussian = Double.parseDouble(f[12]), mean = Double.parseDouble(f[13]);
+            double k1 = Double.parseDouble(f[14]), k2 = Double.parseDouble(f[15]);
+            assertEquals(1, gaussian, 1e-9, "the unit sphere: " + lines[k]);
+            assertEquals(1, Math.abs(mean), 1e-9, lines[k]);
+            assertTrue(k1 >= k2, "k1 ≥ k2: " + lines[k]);
+            double d1n = 0, d1d2 = 0;
+            for (int c = 0; c < 3; c++) {
+                d1n += Double.parseDouble(f[16 + c]) * Double.parseDouble(f[9 + c]);
+                d1d2 += Double.parseDouble(f[16 + c]) * Double.parseDouble(f[19 + c]);
+            }
+            assertEquals(0, d1n, 1e-9, "d1 is tangent: " + lines[k]);
+            assertEquals(0, d1d2, 1e-9, "d1 ⊥ d2: " + lines[k]);
+        }
+        assertTrue(hits > 50, "hits: " + hits);
+    }
+
+    @Test
     void newtonFindsTheSameRegularHitAsClipping() throws IOException {
         Path in = rays("20 10 300 0 0 -1\n-50 -20 300 0.1 0 -1\n");
         Run a = run("trace", "teapot", "-i", in.toString());
