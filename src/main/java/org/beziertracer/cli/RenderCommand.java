@@ -30,6 +30,7 @@ import org.beziertracer.render.ImageDifference;
 import org.beziertracer.render.PixelFilter;
 import org.beziertracer.render.PixelProbe;
 import org.beziertracer.render.RenderJob;
+import org.beziertracer.render.AnalysisRange;
 import org.beziertracer.render.RenderOptions;
 import org.beziertracer.render.RenderProgress;
 import org.beziertracer.render.RenderResult;
@@ -97,6 +98,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id", description = "shading mode")
     String shading;
 
+    @picocli.CommandLine.Mixin
+    AnalysisOptions analysisOptions = new AnalysisOptions();
+
     @Option(names = "--texture", paramLabel = "checker[:N]|none", description = "checker texture on the patches, N squares per side (default 8)")
     String texture;
 
@@ -150,7 +154,8 @@ final class RenderCommand implements Callable<Integer> {
         int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
-                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel));
+                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
+                .withAnalysis(analysisOptions.settings());
         SceneDocument doc = SceneFiles.load(model);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
@@ -253,7 +258,8 @@ final class RenderCommand implements Callable<Integer> {
             checker = texture(texture);
         }
         return new RenderSettings(w, h, spp != null ? spp : s.spp(), sampler != null ? sampler : s.sampler(),
-                method != null ? method : s.method(), !noBvh && s.bvh(), shading != null ? shading : s.shading(),
+                method != null ? method : s.method(), !noBvh && s.bvh(),
+                analysisOptions.shading(shading != null ? shading : s.shading()),
                 checker, !noShadows && s.shadows(), depth != null ? depth : s.maxDepth());
     }
 
@@ -353,6 +359,9 @@ final class RenderCommand implements Callable<Integer> {
         m.put("bvh", s.bvh());
         m.put("tessellate", job.options().tessellate());
         m.put("shading", s.shading());
+        if (job.shading().needsCurvature()) {
+            m.put("analysisRange", AnalysisRange.of(job));
+        }
         m.put("shadows", s.shadows());
         m.put("kernel", job.intersector().options().kernel().description());
         m.put("primaryRays", last.stats().primaryRays());

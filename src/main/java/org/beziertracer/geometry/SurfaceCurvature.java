@@ -129,7 +129,12 @@ public final class SurfaceCurvature {
         double det = len * len;
         double k = (l * nn - mm * mm) / det;
         double h = (e * nn - 2 * f * mm + g * l) / (2 * det);
-        double root = Math.sqrt(Math.max(0, h * h - k));
+        // H² − K as a sum of squares, in the orthonormal frame e1 = S_u/|S_u|, e2 = n × e1, where
+        // the shape operator is symmetric [[a, b], [b, c]]: H² − K = ((a − c)/2)² + b², free of the
+        // cancellation that makes √(H² − K) lose half the digits near an umbilic
+        double a = l / e, s2 = e / det;
+        double b = Math.sqrt(s2 / e) * (mm - f * l / e), c = s2 * (l * f * f / (e * e) - 2 * mm * f / e + nn);
+        double root = Math.hypot(0.5 * (a - c), b);
         double k1 = h + root, k2 = h - root;
         if (!(Double.isFinite(k) && Double.isFinite(h))) {
             return false;
@@ -143,15 +148,15 @@ public final class SurfaceCurvature {
         out[NORMAL + 2] = nz;
         // Principal direction of k1: (L − kE) a + (M − kF) b = 0, or (M − kF) a + (N − kG) b = 0
         double r1a = l - k1 * e, r1b = mm - k1 * f, r2a = mm - k1 * f, r2b = nn - k1 * g;
-        double a, b;
+        double pa, pb;
         if (r1a * r1a + r1b * r1b >= r2a * r2a + r2b * r2b) {
-            a = -r1b;
-            b = r1a;
+            pa = -r1b;
+            pb = r1a;
         } else {
-            a = -r2b;
-            b = r2a;
+            pa = -r2b;
+            pb = r2a;
         }
-        double dx = a * ux + b * vx, dy = a * uy + b * vy, dz = a * uz + b * vz;
+        double dx = pa * ux + pb * vx, dy = pa * uy + pb * vy, dz = pa * uz + pb * vz;
         double dl = Math.sqrt(dx * dx + dy * dy + dz * dz);
         // an umbilic (k1 = k2: both rows vanish to rounding) has every direction principal
         double scale = Math.abs(l) + Math.abs(mm) + Math.abs(nn) + Math.abs(k1) * (e + Math.abs(f) + g);

@@ -12,7 +12,9 @@ import java.util.Set;
  * @param sampler       {@code regular}, {@code jittered} or {@code adaptive}
  * @param method        {@code clipping}, {@code newton} or {@code subdivision}
  * @param bvh           sub-patch BVH on
- * @param shading       {@code phong}, {@code flat}, {@code normals}, {@code uv} or {@code patch-id}
+ * @param shading       {@code phong}, {@code flat}, {@code normals}, {@code uv}, {@code patch-id}, or an analysis
+ *                      view: {@code zebra}, {@code isophotes}, {@code gaussian}, {@code mean}, {@code min-radius},
+ *                      {@code max-radius}, {@code draft}
  * @param checker       checker squares per unit (u,v) on patches; 0 = material's own
  * @param shadows       shadow rays on
  * @param maxDepth      hard cap on the reflection/refraction depth, 0..{@value #MAX_DEPTH}
@@ -27,7 +29,8 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
     public static final long MAX_PIXELS = 1L << 26;
     public static final Set<String> SAMPLERS = Set.of("regular", "jittered", "adaptive");
     public static final Set<String> METHODS = Set.of("clipping", "newton", "subdivision");
-    public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id");
+    public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id", "zebra", "isophotes",
+            "gaussian", "mean", "min-radius", "max-radius", "draft");
 
     public RenderSettings {
         if (width < 1 || width > MAX_SIZE || height < 1 || height > MAX_SIZE) {

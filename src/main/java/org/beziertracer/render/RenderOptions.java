@@ -26,10 +26,11 @@ import org.beziertracer.geometry.Tessellator;
  *                           same BVH and shading
  * @param kernel             the evaluation kernel of the intersector ({@link Kernels#best} unless chosen):
  *                           SIMD or scalar, the same picture either way
+ * @param analysis           the settings of the surface-analysis views ({@link ShadingMode#isAnalysis()})
  */
 public record RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
                             double adaptiveThreshold, double minAttenuation, long seed, int tessellate,
-                            LaneKernel kernel) {
+                            LaneKernel kernel, Analysis analysis) {
 
     public static final int MAX_THREADS = 256;
 
@@ -57,6 +58,14 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
                     + ", got " + tessellate);
         }
         java.util.Objects.requireNonNull(kernel, "kernel");
+        java.util.Objects.requireNonNull(analysis, "analysis");
+    }
+
+    /** With the default analysis settings ({@link Analysis#defaults()}). */
+    public RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
+                         double adaptiveThreshold, double minAttenuation, long seed, int tessellate, LaneKernel kernel) {
+        this(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate,
+                kernel, Analysis.defaults());
     }
 
     /** With the kernel chosen at start ({@link Kernels#best}). */
@@ -73,34 +82,40 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
     }
 
     public RenderOptions withThreads(int n) {
-        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
+        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
     }
 
     public RenderOptions withProgressive(boolean on) {
-        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
+        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
     }
 
     public RenderOptions withPassesPerFrame(int n) {
-        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
+        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
     }
 
     public RenderOptions withFilter(PixelFilter f) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
     }
 
     public RenderOptions withTileSize(int size) {
-        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel);
+        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
     }
 
     /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
     public RenderOptions withTessellate(int k) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k, kernel);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k, kernel, analysis);
     }
 
     /** The same options with another evaluation kernel (the same picture, another speed). */
     public RenderOptions withKernel(LaneKernel k) {
         return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
-                seed, tessellate, k);
+                seed, tessellate, k, analysis);
+    }
+
+    /** With the analysis views' settings {@code a}. */
+    public RenderOptions withAnalysis(Analysis a) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
+                seed, tessellate, kernel, a);
     }
 
     /** True in tessellated (triangle mesh) mode. */

@@ -41,6 +41,9 @@ final class ShadingScene {
     final double minAttenuation;
     /** Offset of secondary-ray origins along the normal, in scene units. */
     final double eps;
+    /** The analysis views' settings, and the ends of a curvature view's scale ({@link AnalysisRange}). */
+    final Analysis analysis;
+    final double rangeLow, rangeHigh;
 
     ShadingScene(RenderJob job) {
         intersector = job.intersector();
@@ -82,6 +85,10 @@ final class ShadingScene {
         minAttenuation = job.options().minAttenuation();
         double size = RenderJob.bounds(scene).diagonal();
         eps = 1e-6 * (size > 0 ? size : 1);
+        analysis = job.options().analysis();
+        double[] range = AnalysisRange.of(job);
+        rangeLow = range[0];
+        rangeHigh = range[1];
     }
 
     /** Offset into {@link #materials} of the material of the primitive {@code (kind, index)}. */

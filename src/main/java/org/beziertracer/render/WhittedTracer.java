@@ -58,6 +58,8 @@ public final class WhittedTracer {
     // The hit being shaded: unit ray direction, unit normal facing the viewer, front or back face
     private double ux, uy, uz, nx, ny, nz;
     private boolean entering;
+    /** The curvature at the hit, for the curvature views ({@link SceneIntersector#curvature}). */
+    private final double[] bend = new double[org.beziertracer.geometry.SurfaceCurvature.LENGTH];
     private ShadingScene s;
     private SceneIntersector si;
     private ShadingEvents events = ShadingEvents.NONE;
@@ -468,8 +470,28 @@ public final class WhittedTracer {
                 local[0] = hit.u - Math.floor(hit.u); local[1] = hit.v - Math.floor(hit.v); local[2] = 0;
             }
             case PATCH_ID -> patchIdColour(hit.kind, hit.index, local);
+            case ZEBRA -> AnalysisColours.zebra(s.analysis, ux, uy, uz, nx, ny, nz, local);
+            case ISOPHOTES -> {
+                double[] l = s.analysis.isophoteLight();
+                if (l == null) {
+                    AnalysisColours.isophotes(s.analysis, nx, ny, nz, -ux, -uy, -uz, local);
+                } else {
+                    AnalysisColours.isophotes(s.analysis, nx, ny, nz, l[0], l[1], l[2], local);
+                }
+            }
+            case DRAFT -> AnalysisColours.draft(s.analysis, sp.nx, sp.ny, sp.nz, facing(nx, ny, nz), local);
+            case GAUSSIAN, MEAN, MIN_RADIUS, MAX_RADIUS -> {
+                si.curvature(ctx, hit, sp, bend);
+                AnalysisColours.curvature(s.mode, AnalysisColours.value(s.mode, bend), s.rangeLow, s.rangeHigh,
+                        facing(nx, ny, nz), local);
+            }
             default -> { } // FLAT: the base colour as is
         }
+    }
+
+    /** |N·V| of the viewer-facing normal and the ray: 1 head-on, 0 at a silhouette. */
+    private double facing(double nx, double ny, double nz) {
+        return Math.abs(nx * ux + ny * uy + nz * uz);
     }
 
     /** A distinct, stable colour per patch (golden-ratio hues); planes dark grey, mesh triangles grey, spheres white. */

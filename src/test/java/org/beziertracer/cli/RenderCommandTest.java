@@ -79,6 +79,23 @@ class RenderCommandTest {
     }
 
     @Test
+    void anAnalysisViewRendersWithItsRangeInTheStats() throws IOException {
+        Path png = dir.resolve("k.png");
+        JsonObject auto = stats(run("render", "sphere", "-o", png.toString(), "--size", "80x60", "--stats",
+                "--analysis", "gaussian"));
+        assertEquals("gaussian", auto.get("shading").getAsString());
+        assertEquals(0, auto.get("shadowRays").getAsLong(), "an analysis view traces no shadow rays");
+        assertEquals(1, auto.getAsJsonArray("analysisRange").get(1).getAsDouble(), 1e-9, "the unit sphere: K = 1");
+        JsonObject fixed = stats(run("render", "teapot", "-o", png.toString(), "--size", "80x60", "--stats",
+                "--analysis", "min-radius", "--analysis-range", "0.5,50"));
+        assertEquals(50, fixed.getAsJsonArray("analysisRange").get(1).getAsDouble(), 0);
+        assertTrue(Files.size(png) > 0);
+        Run zebra = run("render", "teapot", "-o", png.toString(), "--size", "80x60", "--analysis", "zebra",
+                "--zebra-axis", "1,0,0", "--zebra-stripes", "8", "--zebra-width", "0.3");
+        assertEquals(0, zebra.code(), zebra.err());
+    }
+
+    @Test
     void cameraTextureAndShadingOptionsAreAccepted() {
         Run r = run("render", "patch", "-o", dir.resolve("p.png").toString(), "--size", "40x30", "--spp", "4",
                 "--sampler", "jittered", "--method", "newton", "--no-bvh", "--shading", "flat", "--texture", "checker:4",
@@ -166,6 +183,13 @@ class RenderCommandTest {
                 {"render", "teapot", "-o", out, "--tessellate", "1025"},
                 {"render", "teapot", "-o", out, "--tessellate", "1000"},
                 {"render", "teapot", "-o", out, "--difference-to", "marching"},
+                {"render", "teapot", "-o", out, "--analysis", "phong"},
+                {"render", "teapot", "-o", out, "--analysis", "curvy"},
+                {"render", "teapot", "-o", out, "--analysis", "gaussian", "--analysis-range", "1"},
+                {"render", "teapot", "-o", out, "--analysis", "gaussian", "--analysis-range", "2,1"},
+                {"render", "teapot", "-o", out, "--analysis", "zebra", "--zebra-stripes", "500"},
+                {"render", "teapot", "-o", out, "--analysis", "draft", "--draft-pull", "0,0,0"},
+                {"render", "teapot", "-o", out, "--analysis", "isophotes", "--isophote-step", "0"},
         };
         for (String[] args : cases) {
             Run r = run(args);

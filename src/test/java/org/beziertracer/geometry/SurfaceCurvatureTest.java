@@ -166,7 +166,7 @@ class SurfaceCurvatureTest {
                     String where = "piece " + k + " at (" + u + ", " + v + ")";
                     assertEquals(1, c[SurfaceCurvature.GAUSSIAN], 1e-9, where + ": K");
                     assertEquals(1, Math.abs(c[SurfaceCurvature.MEAN]), 1e-9, where + ": |H|");
-                    assertEquals(c[SurfaceCurvature.K1], c[SurfaceCurvature.K2], 1e-6, where + ": umbilic");
+                    assertEquals(c[SurfaceCurvature.K1], c[SurfaceCurvature.K2], 1e-9, where + ": umbilic");
                     assertPrincipalFrame(c, where);
                 }
             }

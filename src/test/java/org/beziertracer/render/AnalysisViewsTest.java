@@ -1,0 +1,110 @@
+package org.beziertracer.render;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.Models;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The analysis views' settings, their automatic colour range and their colours: the range of a
+ * sphere's views is its one curvature, a fixed range is kept, the colours follow the value.
+ */
+class AnalysisViewsTest {
+
+    private static RenderJob job(Scene scene, String view, Analysis a) {
+        RenderSettings s = new RenderSettings(160, 120, 1, "regular", "clipping", true, view, 0, true, 5);
+        return RenderJob.prepare(scene, s, RenderOptions.defaults().withThreads(2).withProgressive(false).withAnalysis(a));
+    }
+
+    @Test
+    void theAutomaticRangeOfTheUnitSphereIsItsOneCurvature() {
+        Scene sphere = Models.sphere();
+        assertArrayEquals(new double[] {-1, 1}, AnalysisRange.of(job(sphere, "gaussian", Analysis.defaults())), 1e-9,
+                "K = 1 everywhere: ±1");
+        assertArrayEquals(new double[] {-1, 1}, AnalysisRange.of(job(sphere, "mean", Analysis.defaults())), 1e-9,
+                "|H| = 1 everywhere: ±1");
+        // one radius everywhere: widened by 2 each way, so it sits mid-scale on the logarithmic axis
+        assertArrayEquals(new double[] {0.5, 2}, AnalysisRange.of(job(sphere, "min-radius", Analysis.defaults())), 1e-9);
+    }
+
+    @Test
+    void aFixedRangeIsKeptAndTheTeapotsAutomaticRangeSpansItsValues() {
+        Scene teapot = Models.teapot();
+        assertArrayEquals(new double[] {-0.5, 2}, AnalysisRange.of(job(teapot, "mean", Analysis.defaults().withRange(-0.5, 2))));
+        double[] radii = AnalysisRange.of(job(teapot, "min-radius", Analysis.defaults()));
+        assertTrue(radii[0] > 0 && radii[1] > 10 * radii[0], "a teapot has small and large radii: "
+                + java.util.Arrays.toString(radii));
+        double[] other = AnalysisRange.of(job(teapot, "zebra", Analysis.defaults()));
+        assertArrayEquals(new double[] {0, 1}, other, "no curvature range for a view without one");
+    }
+
+    @Test
+    void badSettingsAreOneLineErrors() {
+        Analysis a = Analysis.defaults();
+        assertEquals("zebra stripes must be 2..200, got 1",
+                assertThrows(IllegalArgumentException.class, () -> a.withZebra(a.zebraAxis(), 1, 0.5)).getMessage());
+        assertEquals("pull direction must be a non-zero finite direction, got 0.0,0.0,0.0",
+                assertThrows(IllegalArgumentException.class, () -> a.withDraft(new double[3], 1)).getMessage());
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> a.withRange(2, 1)).getMessage()
+                .startsWith("analysis range must be two finite numbers, low < high"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> ShadingMode.parse("zebras")).getMessage()
+                .contains("zebra, isophotes, gaussian, mean, min-radius, max-radius, draft"));
+    }
+
+    @Test
+    void curvatureColoursGoFromBlueThroughGreyToRed() {
+        double[] neg = new double[3], zero = new double[3], pos = new double[3];
+        AnalysisColours.curvature(ShadingMode.MEAN, -1, -1, 1, 1, neg);
+        AnalysisColours.curvature(ShadingMode.MEAN, 0, -1, 1, 1, zero);
+        AnalysisColours.curvature(ShadingMode.MEAN, 5, -1, 1, 1, pos);
+        assertTrue(neg[2] > neg[0], "negative is blue");
+        assertTrue(pos[0] > pos[2], "positive is red");
+        assertEquals(zero[0], zero[2], 1e-12, "zero is grey");
+        double[] flat = new double[3], tight = new double[3];
+        AnalysisColours.curvature(ShadingMode.MAX_RADIUS, Double.POSITIVE_INFINITY, 1, 100, 1, flat);
+        AnalysisColours.curvature(ShadingMode.MAX_RADIUS, 1, 1, 100, 1, tight);
+        assertNotEquals(flat[1], tight[1], "a flat point and a tight one differ");
+        assertTrue(flat[0] + flat[1] > tight[0] + tight[1], "flat is the bright top of the scale");
+    }
+
+    @Test
+    void aDraftViewTellsPositiveNegativeAndVerticalFaces() {
+        Analysis a = Analysis.defaults().withDraft(new double[] {0, 0, 1}, 2);
+        double[] up = new double[3], down = new double[3], wall = new double[3], almost = new double[3];
+        AnalysisColours.draft(a, 0, 0.5, Math.sqrt(0.75), 1, up);      // 60° of draft
+        AnalysisColours.draft(a, 0, 0.5, -Math.sqrt(0.75), 1, down);   // −60°
+        AnalysisColours.draft(a, 1, 0, 0, 1, wall);                   // 0°
+        double t = Math.toRadians(1.5);
+        AnalysisColours.draft(a, Math.cos(t), 0, Math.sin(t), 1, almost); // 1.5° < the 2° tolerance
+        assertTrue(up[1] > up[0], "positive: green");
+        assertTrue(down[0] > down[1], "negative: red");
+        assertTrue(wall[0] > 0.5 && wall[1] > 0.5, "vertical: yellow");
+        assertArrayEquals(wall, almost, "within the tolerance: vertical");
+        assertEquals(60, AnalysisColours.draftAngle(a, 0, 0.5, Math.sqrt(0.75)), 1e-9);
+    }
+
+    @Test
+    void zebraStripesAlternateAroundTheAxis() {
+        Analysis a = Analysis.defaults().withZebra(new double[] {0, 0, 1}, 4, 0.5);
+        // looking down −y at a mirror whose normal turns about z: the reflection turns twice as fast
+        int changes = 0;
+        double last = -1;
+        double[] c = new double[3];
+        for (int k = 0; k <= 360; k++) {
+            double phi = Math.toRadians(-40 + 90.0 * k / 360);
+            AnalysisColours.zebra(a, 0, -1, 0, Math.sin(phi), Math.cos(phi), 0, c);
+            if (last >= 0 && c[0] != last) {
+                changes++;
+            }
+            last = c[0];
+        }
+        // a 90° turn of the normal turns the reflection by 180°: 4 bars a turn give 4 stripe edges
+        assertEquals(4, changes, "stripe edges over a half turn of the reflection");
+    }
+}
