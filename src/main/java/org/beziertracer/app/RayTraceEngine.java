@@ -17,6 +17,7 @@ import org.beziertracer.model.Scene;
 import org.beziertracer.render.Failures;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.FrameStats;
+import org.beziertracer.render.ShadingMode;
 import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.RenderSession;
 
@@ -169,7 +170,8 @@ public final class RayTraceEngine implements PictureEngine {
             double speedUp = Objects.equals(TimingKey.of(r), timedKey) && millisBvhOn > 0 && millisBvhOff > 0
                     ? millisBvhOff / millisBvhOn : 0;
             listener.accept(new RenderStatus(pass + 1, passCount, stats.millis(), stats.mraysPerSecond(),
-                    r.settings().spp(), r.intersect().method(), bvh, speedUp, prepMillis, r.intersect().tessellate()));
+                    r.settings().spp(), r.intersect().method(), bvh, speedUp, prepMillis, r.intersect().tessellate(),
+                    ShadingMode.parse(r.settings().shading()), stats.analysisLow(), stats.analysisHigh()));
             if (pass == passCount - 1) {
                 settle(n.number()); // after the status, so a listener hears the last pass before the engine is idle
             }

@@ -56,6 +56,7 @@ public final class RenderChoices {
                 .with(Toggle.SHADOWS, file.shadows())
                 .with(Toggle.REFLECTIONS, file.maxDepth() > 0)
                 .with(Toggle.SUPER_SAMPLING, file.spp() > 1);
+        out = out.withAnalysis(shading.isAnalysis() ? shading : null);
         return file.spp() > 1 ? out.with(Level.SAMPLES_PER_PIXEL, Level.SAMPLES_PER_PIXEL.snap(file.spp())) : out;
     }
 

@@ -1,6 +1,7 @@
 package org.beziertracer.app;
 
 import org.beziertracer.intersect.Method;
+import org.beziertracer.render.ShadingMode;
 
 /**
  * What the status bar shows about the latest render; made on render threads, shown on the UI
@@ -17,7 +18,37 @@ import org.beziertracer.intersect.Method;
  *                       same picture; 0 when not measured yet
  * @param prepMillis     time to re-split and refit (or build) the scene snapshot
  * @param tessellate     0: exact; {@code K ≥ 1}: rendered as a K×K triangle mesh per patch
+ * @param shading        what the picture shows (an analysis view has a legend)
+ * @param analysisLow, analysisHigh the ends of a curvature view's colour scale
  */
 public record RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, Method method,
-                           boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate) {
+                           boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate, ShadingMode shading,
+                           double analysisLow, double analysisHigh) {
+
+    /** A status of a shaded (not analysed) picture. */
+    public RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, Method method,
+                        boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate) {
+        this(pass, passCount, millis, mraysPerSecond, spp, method, bvh, bvhSpeedUp, prepMillis, tessellate,
+                ShadingMode.PHONG, 0, 1);
+    }
+
+    /**
+     * The legend of an analysis view for the status bar: the view and, for a curvature view, the
+     * values at the two ends of its colour scale ({@code "gaussian −0.0096 … 0.0096"}); empty for
+     * the shaded views.
+     */
+    public String legend() {
+        if (shading == null || !shading.isAnalysis()) {
+            return "";
+        }
+        if (!shading.needsCurvature()) {
+            return shading.label();
+        }
+        return shading.label() + " " + number(analysisLow) + " … " + number(analysisHigh)
+                + (shading == ShadingMode.GAUSSIAN ? " (√ scale)" : shading.label().endsWith("radius") ? " (log scale)" : "");
+    }
+
+    private static String number(double v) {
+        return String.format(java.util.Locale.ROOT, "%.3g", v).replace('-', '−');
+    }
 }

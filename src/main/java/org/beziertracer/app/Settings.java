@@ -22,8 +22,19 @@ public final class Settings {
     private final Method method;
     private final LightPlacement light;
     private final Vec3 lightOffset;
+    /** The analysis view shown instead of the shading, or null. */
+    private final ShadingMode analysis;
 
     private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset) {
+        this(on, levels, method, light, lightOffset, null);
+    }
+
+    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset,
+                     ShadingMode analysis) {
+        if (analysis != null && !analysis.isAnalysis()) {
+            throw new IllegalArgumentException(analysis.label() + " is not an analysis view");
+        }
+        this.analysis = analysis;
         this.on = on;
         this.levels = levels;
         this.method = Objects.requireNonNull(method);
@@ -67,25 +78,33 @@ public final class Settings {
         } else {
             copy.remove(t);
         }
-        return new Settings(copy, levels, method, light, lightOffset);
+        return new Settings(copy, levels, method, light, lightOffset, analysis);
     }
 
     /** @throws IllegalArgumentException one line, when {@code value} is outside the level's range */
     public Settings with(Level l, int value) {
         int[] copy = levels.clone();
         copy[l.ordinal()] = l.check(value);
-        return new Settings(EnumSet.copyOf(on), copy, method, light, lightOffset);
+        return new Settings(EnumSet.copyOf(on), copy, method, light, lightOffset, analysis);
     }
 
-    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light, lightOffset); }
+    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light, lightOffset, analysis); }
 
     /** Another placement, its light at the preset position. */
-    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p, null); }
+    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p, null, analysis); }
 
     /** The light dragged to {@code offset} (in the placement's frame; ignored for {@link LightPlacement#SCENE}). */
     public Settings withLightOffset(Vec3 offset) {
-        return new Settings(EnumSet.copyOf(on), levels, method, light, light.preset() == null ? null : offset);
+        return new Settings(EnumSet.copyOf(on), levels, method, light, light.preset() == null ? null : offset, analysis);
     }
+
+    /** The analysis view shown instead of the shading ({@link ShadingMode#isAnalysis()}), or null for none. */
+    public Settings withAnalysis(ShadingMode view) {
+        return new Settings(EnumSet.copyOf(on), levels, method, light, lightOffset, view);
+    }
+
+    /** The analysis view (View → Analysis), or null. */
+    public ShadingMode analysis() { return analysis; }
 
     /** Horizontal field of view of the {@link Level#PERSPECTIVE} position. */
     public double fovDegrees() {
@@ -107,9 +126,9 @@ public final class Settings {
         return on(Toggle.TESSELLATED) ? "tessellated " + level(Level.TESSELLATION) : method.label();
     }
 
-    /** Normals win over Phong; neither is flat. */
+    /** An analysis view wins; then normals over Phong; neither is flat. */
     public ShadingMode shading() {
-        return on(Toggle.NORMALS) ? ShadingMode.NORMALS : on(Toggle.PHONG) ? ShadingMode.PHONG : ShadingMode.FLAT;
+        return analysis != null ? analysis : on(Toggle.NORMALS) ? ShadingMode.NORMALS : on(Toggle.PHONG) ? ShadingMode.PHONG : ShadingMode.FLAT;
     }
 
     /** Samples per pixel rendered: the chosen level while super-sampling, else 1. */
@@ -135,16 +154,17 @@ public final class Settings {
     @Override
     public boolean equals(Object o) {
         return o instanceof Settings s && s.on.equals(on) && Arrays.equals(s.levels, levels) && s.method == method
-                && s.light == light && Objects.equals(s.lightOffset, lightOffset);
+                && s.light == light && Objects.equals(s.lightOffset, lightOffset) && s.analysis == analysis;
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(on, Arrays.hashCode(levels), method, light, lightOffset);
+        return Objects.hash(on, Arrays.hashCode(levels), method, light, lightOffset, analysis);
     }
 
     @Override
     public String toString() {
-        return "Settings" + on + Arrays.toString(levels) + method + "/" + light + (lightOffset == null ? "" : lightOffset);
+        return "Settings" + on + Arrays.toString(levels) + method + "/" + light + (lightOffset == null ? "" : lightOffset)
+                + (analysis == null ? "" : "/analysis " + analysis.label());
     }
 }

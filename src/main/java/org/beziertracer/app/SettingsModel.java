@@ -50,6 +50,9 @@ public final class SettingsModel {
 
     public void set(LightPlacement p) { replace(current.with(p)); }
 
+    /** Shows the analysis view {@code view} instead of the shading (null: the shading again). */
+    public void setAnalysis(org.beziertracer.render.ShadingMode view) { replace(current.withAnalysis(view)); }
+
     public void cycleLight() {
         set(LightPlacement.values()[(current.light().ordinal() + 1) % LightPlacement.values().length]);
     }

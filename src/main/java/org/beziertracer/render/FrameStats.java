@@ -8,8 +8,16 @@ package org.beziertracer.render;
  * @param secondaryRays reflected and refracted rays
  * @param millis        wall-clock time since the render started
  * @param work          what the intersector did for those rays
+ * @param analysisLow, analysisHigh the ends of a curvature view's colour scale ({@link AnalysisRange}),
+ *                      the legend of the picture; 0 and 1 for the other views
  */
-public record FrameStats(long primaryRays, long shadowRays, long secondaryRays, double millis, Work work) {
+public record FrameStats(long primaryRays, long shadowRays, long secondaryRays, double millis, Work work,
+                         double analysisLow, double analysisHigh) {
+
+    /** Stats of a view without a colour scale. */
+    public FrameStats(long primaryRays, long shadowRays, long secondaryRays, double millis, Work work) {
+        this(primaryRays, shadowRays, secondaryRays, millis, work, 0, 1);
+    }
 
     /**
      * The intersector's work: leaf-solver calls, Bézier clipping steps and patch evaluations (with

@@ -41,6 +41,7 @@ final class RenderState {
     FrameStats stats() {
         return new FrameStats(primaryRays.sum(), shadowRays.sum(), secondaryRays.sum(),
                 (System.nanoTime() - startNanos) / 1e6,
-                new FrameStats.Work(solverCalls.sum(), clipSteps.sum(), evaluations.sum(), laneEvaluations.sum()));
+                new FrameStats.Work(solverCalls.sum(), clipSteps.sum(), evaluations.sum(), laneEvaluations.sum()),
+                shading.rangeLow, shading.rangeHigh);
     }
 }

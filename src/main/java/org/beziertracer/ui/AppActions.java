@@ -1,5 +1,7 @@
 package org.beziertracer.ui;
 
+import org.beziertracer.render.ShadingMode;
+
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -162,7 +164,40 @@ public final class AppActions {
                 + "and coordinates (type a value and press Enter to move them)", key(KeyEvent.VK_I, CTRL));
         add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",
                 key(KeyEvent.VK_V, CTRL | SHIFT), () -> s.cycle(Level.GRID_V));
+        addAnalysisActions(s);
     }
+
+    /** The analysis views' ids, in the order of View → Analysis: {@code analysis:none}, then one a view. */
+    static final java.util.List<String> ANALYSIS_IDS = java.util.stream.Stream.concat(java.util.stream.Stream.of("none"),
+            java.util.Arrays.stream(ShadingMode.values()).filter(ShadingMode::isAnalysis).map(ShadingMode::label))
+            .map(id -> "analysis:" + id).toList();
+
+    /** View → Analysis: one checked item a view (and None), the one shown checked. */
+    private void addAnalysisActions(SettingsModel s) {
+        for (String id : ANALYSIS_IDS) {
+            String label = id.substring("analysis:".length());
+            ShadingMode view = label.equals("none") ? null : ShadingMode.parse(label);
+            String name = view == null ? "None (Shading)" : ANALYSIS_NAMES.get(view);
+            Action a = add(id, name, view == null ? "Show the shading again" : ANALYSIS_TIPS.get(view), null,
+                    () -> s.setAnalysis(view));
+            syncs.add(() -> a.putValue(Action.SELECTED_KEY, app.settings().current().analysis() == view));
+        }
+    }
+
+    private static final java.util.Map<ShadingMode, String> ANALYSIS_NAMES = java.util.Map.of(
+            ShadingMode.ZEBRA, "Zebra Stripes", ShadingMode.ISOPHOTES, "Isophotes",
+            ShadingMode.GAUSSIAN, "Gaussian Curvature", ShadingMode.MEAN, "Mean Curvature",
+            ShadingMode.MIN_RADIUS, "Minimum Radius", ShadingMode.MAX_RADIUS, "Maximum Radius",
+            ShadingMode.DRAFT, "Draft Angle");
+
+    private static final java.util.Map<ShadingMode, String> ANALYSIS_TIPS = java.util.Map.of(
+            ShadingMode.ZEBRA, "Reflection of parallel light bars: a jump in the stripes is a G1 break, a kink a G2 break",
+            ShadingMode.ISOPHOTES, "Lines of constant N·L every 10° (light from the eye)",
+            ShadingMode.GAUSSIAN, "K = k1·k2 from exact second derivatives: blue saddle, red dome (scale in the status bar)",
+            ShadingMode.MEAN, "H = (k1 + k2)/2 from exact second derivatives, signed against the surface's normal",
+            ShadingMode.MIN_RADIUS, "The tightest bend, 1/max(|k1|, |k2|), on a logarithmic scale",
+            ShadingMode.MAX_RADIUS, "The gentlest bend, 1/min(|k1|, |k2|), on a logarithmic scale (flat: yellow)",
+            ShadingMode.DRAFT, "Draft against the z axis: green positive, red negative, yellow within ±1°");
 
     private void addRenderActions(SettingsModel s) {
         toggle("phong", Toggle.PHONG, "Phong Shading", "Phong lighting (off: flat, unlit colour)", key(KeyEvent.VK_F5, 0));

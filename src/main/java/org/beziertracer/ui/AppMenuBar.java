@@ -37,6 +37,16 @@ public final class AppMenuBar extends JMenuBar {
         }
         JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", "differenceToClipping", null, "finer", "coarser", null,
                 "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "inspector", "dark");
+        JMenu analysis = new JMenu("Analysis");
+        analysis.setName("menu.analysis");
+        analysis.setMnemonic('A');
+        for (String id : AppActions.ANALYSIS_IDS) {
+            analysis.add(item(id));
+            if (id.equals("analysis:none")) {
+                analysis.addSeparator();
+            }
+        }
+        view.insert(analysis, 5);
         JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,
                 "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");

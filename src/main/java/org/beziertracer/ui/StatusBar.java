@@ -38,6 +38,7 @@ public final class StatusBar extends JPanel {
     private final JLabel difference = label("View → Difference to clipping: pixels whose hit differs from Bézier "
             + "clipping's (another patch, a miss, or farther than 1e-6 of the scene size), marked red in the picture");
     private final JLabel message = label("last action");
+    private final JLabel legend = label("the analysis view and the values at the two ends of its colour scale");
     private JSeparator differenceBar;
     private final JProgressBar progress = new JProgressBar();
     private final JButton cancel = new JButton("Cancel");
@@ -53,7 +54,7 @@ public final class StatusBar extends JPanel {
         cancel.addActionListener(e -> cancelTask());
         add(progress);
         add(cancel);
-        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, model, selection, difference, message}) {
+        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, legend, model, selection, difference, message}) {
             add(l);
             if (l != message) {
                 JSeparator bar = new JSeparator(SwingConstants.VERTICAL);
@@ -72,6 +73,7 @@ public final class StatusBar extends JPanel {
         selection.setName("status.selection");
         difference.setName("status.difference");
         message.setName("status.message");
+        legend.setName("status.legend");
         app.addListener(this::refresh);
         refresh();
     }
@@ -106,6 +108,9 @@ public final class StatusBar extends JPanel {
         String speedUp = s != null && s.bvhSpeedUp() > 0 ? String.format(Locale.ROOT, " ×%.1f", s.bvhSpeedUp()) : "";
         bvh.setText(t.on(Toggle.BVH) ? "BVH on" + speedUp : "BVH off" + speedUp);
         model.setText(modelText(app.overlay().geometry(), t));
+        String key = t.analysis() == null ? "" : s != null && s.shading() == t.analysis() ? s.legend() : t.analysis().label();
+        legend.setText(key);
+        legend.setVisible(!key.isEmpty());
         int handles = app.selection().handleCount();
         selection.setText(handles == 0 ? "nothing selected" : handles == 1 ? "1 point selected" : handles + " points selected");
         differenceText(t);
@@ -152,6 +157,7 @@ public final class StatusBar extends JPanel {
             case "model" -> model.getText();
             case "selection" -> selection.getText();
             case "difference" -> difference.getText();
+            case "legend" -> legend.getText();
             default -> message.getText();
         };
     }

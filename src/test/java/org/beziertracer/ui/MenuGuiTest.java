@@ -80,6 +80,28 @@ class MenuGuiTest extends GuiSession {
     }
 
     @Test
+    @Order(8)
+    void viewAnalysisShowsACurvatureViewWithItsScaleInTheStatusBar() {
+        d.menu("Models", "model:teapot");
+        d.settle();
+        BufferedImage shaded = d.capturePanel();
+        d.menuPath("View", "analysis", "analysis:gaussian");
+        d.settle();
+        String legend = d.status("legend");
+        assertTrue(legend.startsWith("gaussian ") && legend.contains(" … "), "the scale is shown: " + legend);
+        BufferedImage analysed = d.capturePanel();
+        assertTrue(GuiDriver.differing(shaded, analysed, 24) > shaded.getWidth() * shaded.getHeight() / 50,
+                "the picture changed to the curvature colours");
+        d.menuPath("View", "analysis", "analysis:zebra");
+        d.settle();
+        assertEquals("zebra", d.status("legend"));
+        d.menuPath("View", "analysis", "analysis:none");
+        d.settle();
+        assertEquals("", d.status("legend"), "no legend for the shading");
+        assertEquals(null, GuiDriver.onEdt(() -> d.app.settings().current().analysis()));
+    }
+
+    @Test
     @Order(2)
     void exportPictureWritesWhatThePanelShows() throws Exception {
         d.menu("Surface", "randomize");
