@@ -15,8 +15,12 @@ import picocli.CommandLine.Option;
 final class AnalysisOptions {
 
     @Option(names = "--analysis", paramLabel = "NAME", description = "surface analysis view instead of the shading: "
-            + "zebra, isophotes, gaussian, mean, min-radius, max-radius or draft (exact derivatives at every pixel)")
+            + "zebra, emap, isophotes, gaussian, mean, min-radius, max-radius or draft (exact derivatives at every pixel)")
     String analysis;
+
+    @Option(names = "--emap", paramLabel = "IMAGE", description = "environment image of the emap view: an "
+            + "equirectangular PNG or JPEG, z up (default: the built-in studio)")
+    java.nio.file.Path emap;
 
     @Option(names = "--analysis-range", paramLabel = "LOW,HIGH", description = "ends of a curvature view's colour "
             + "scale (curvature in 1/model units, radii in model units); default: automatic, from the values in view")
@@ -61,8 +65,8 @@ final class AnalysisOptions {
             mode = null;
         }
         if (mode == null || !mode.isAnalysis()) {
-            throw new IllegalArgumentException("unknown analysis '" + analysis + "': expected zebra, isophotes, gaussian, "
-                    + "mean, min-radius, max-radius or draft");
+            throw new IllegalArgumentException("unknown analysis '" + analysis + "': expected zebra, emap, isophotes, "
+                    + "gaussian, mean, min-radius, max-radius or draft");
         }
         return mode.label();
     }
@@ -93,6 +97,9 @@ final class AnalysisOptions {
                 throw new IllegalArgumentException("--analysis-range must be two numbers LOW,HIGH, got '"
                         + range.toLowerCase(Locale.ROOT) + "'");
             }
+        }
+        if (emap != null) {
+            a = a.withEnvironment(EnvironmentImages.read(emap));
         }
         return a;
     }

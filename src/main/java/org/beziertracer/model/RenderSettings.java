@@ -13,7 +13,7 @@ import java.util.Set;
  * @param method        {@code clipping}, {@code newton} or {@code subdivision}
  * @param bvh           sub-patch BVH on
  * @param shading       {@code phong}, {@code flat}, {@code normals}, {@code uv}, {@code patch-id}, or an analysis
- *                      view: {@code zebra}, {@code isophotes}, {@code gaussian}, {@code mean}, {@code min-radius},
+ *                      view: {@code zebra}, {@code emap}, {@code isophotes}, {@code gaussian}, {@code mean}, {@code min-radius},
  *                      {@code max-radius}, {@code draft}
  * @param checker       checker squares per unit (u,v) on patches; 0 = material's own
  * @param shadows       shadow rays on
@@ -29,7 +29,7 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
     public static final long MAX_PIXELS = 1L << 26;
     public static final Set<String> SAMPLERS = Set.of("regular", "jittered", "adaptive");
     public static final Set<String> METHODS = Set.of("clipping", "newton", "subdivision");
-    public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id", "zebra", "isophotes",
+    public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id", "zebra", "emap", "isophotes",
             "gaussian", "mean", "min-radius", "max-radius", "draft");
 
     public RenderSettings {

@@ -18,12 +18,21 @@ import java.util.Locale;
  * @param draftPull      the pull direction of {@code draft} (unit; default z)
  * @param draftTolerance degrees within which a face counts as vertical (neither positive nor
  *                       negative draft), 0..45
+ * @param environment    the image {@code emap} reflects ({@link EnvironmentMap#studio()} by default)
  */
 public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, double[] isophoteLight,
                        double isophoteStep, double rangeLow, double rangeHigh, double[] draftPull,
-                       double draftTolerance) {
+                       double draftTolerance, EnvironmentMap environment) {
+
+    /** With the built-in studio environment. */
+    public Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, double[] isophoteLight,
+                    double isophoteStep, double rangeLow, double rangeHigh, double[] draftPull, double draftTolerance) {
+        this(zebraAxis, zebraStripes, zebraWidth, isophoteLight, isophoteStep, rangeLow, rangeHigh, draftPull,
+                draftTolerance, EnvironmentMap.studio());
+    }
 
     public Analysis {
+        java.util.Objects.requireNonNull(environment, "environment");
         zebraAxis = unit("zebra axis", zebraAxis);
         isophoteLight = isophoteLight == null ? null : unit("isophote light", isophoteLight);
         draftPull = unit("pull direction", draftPull);
@@ -56,22 +65,28 @@ public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, 
 
     public Analysis withRange(double low, double high) {
         return new Analysis(zebraAxis, zebraStripes, zebraWidth, isophoteLight, isophoteStep, low, high, draftPull,
-                draftTolerance);
+                draftTolerance, environment);
     }
 
     public Analysis withZebra(double[] axis, int stripes, double width) {
         return new Analysis(axis, stripes, width, isophoteLight, isophoteStep, rangeLow, rangeHigh, draftPull,
-                draftTolerance);
+                draftTolerance, environment);
     }
 
     public Analysis withIsophotes(double[] light, double step) {
         return new Analysis(zebraAxis, zebraStripes, zebraWidth, light, step, rangeLow, rangeHigh, draftPull,
-                draftTolerance);
+                draftTolerance, environment);
     }
 
     public Analysis withDraft(double[] pull, double tolerance) {
         return new Analysis(zebraAxis, zebraStripes, zebraWidth, isophoteLight, isophoteStep, rangeLow, rangeHigh, pull,
-                tolerance);
+                tolerance, environment);
+    }
+
+    /** With {@code image} reflected by {@code emap}. */
+    public Analysis withEnvironment(EnvironmentMap image) {
+        return new Analysis(zebraAxis, zebraStripes, zebraWidth, isophoteLight, isophoteStep, rangeLow, rangeHigh,
+                draftPull, draftTolerance, image);
     }
 
     private static double[] unit(String what, double[] v) {
@@ -92,13 +107,13 @@ public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, 
                 && zebraWidth == a.zebraWidth && java.util.Arrays.equals(isophoteLight, a.isophoteLight)
                 && isophoteStep == a.isophoteStep && Double.compare(rangeLow, a.rangeLow) == 0
                 && Double.compare(rangeHigh, a.rangeHigh) == 0 && java.util.Arrays.equals(draftPull, a.draftPull)
-                && draftTolerance == a.draftTolerance;
+                && draftTolerance == a.draftTolerance && environment == a.environment;
     }
 
     @Override
     public int hashCode() {
         return java.util.Objects.hash(java.util.Arrays.hashCode(zebraAxis), zebraStripes, zebraWidth,
                 java.util.Arrays.hashCode(isophoteLight), isophoteStep, rangeLow, rangeHigh,
-                java.util.Arrays.hashCode(draftPull), draftTolerance);
+                java.util.Arrays.hashCode(draftPull), draftTolerance, System.identityHashCode(environment));
     }
 }

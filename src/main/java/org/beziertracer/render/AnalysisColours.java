@@ -10,6 +10,7 @@ import org.beziertracer.geometry.SurfaceCurvature;
  *       of parallel light bars at infinity around {@link Analysis#zebraAxis}: the stripe is read
  *       from the angle of {@code r} about the axis, so the stripes follow the reflection lines of
  *       the surface (a G1 break shows as a jump, a G2 break as a kink);</li>
+ *   <li><b>emap</b>: the environment image seen in the same mirror direction;</li>
  *   <li><b>isophotes</b>: the grey {@code N·L} with a dark line where {@code acos(N·L)} crosses a
  *       multiple of the step (lines of constant N·L: R. Klass, "Correction of local surface
  *       irregularities using reflection lines", CAD 12(2), 1980; H. Theisel, "Are isophotes and
@@ -56,6 +57,15 @@ final class AnalysisColours {
         double period = (phi / (2 * Math.PI) + 0.5) * a.zebraStripes();
         double g = period - Math.floor(period) < a.zebraWidth() ? DARK : LIGHT;
         out[0] = g; out[1] = g; out[2] = g;
+    }
+
+    /**
+     * The environment image ({@link Analysis#environment}) seen in the mirror direction
+     * {@code r = d − 2(d·n)n}: the reflection a polished part shows in a studio.
+     */
+    static void emap(Analysis a, double ux, double uy, double uz, double nx, double ny, double nz, double[] out) {
+        double dn = ux * nx + uy * ny + uz * nz;
+        a.environment().lookup(ux - 2 * dn * nx, uy - 2 * dn * ny, uz - 2 * dn * nz, out);
     }
 
     /** The isophote colour for the unit normal facing the viewer and the unit direction {@code l} to the light. */

@@ -20,6 +20,8 @@ public enum ShadingMode {
     PATCH_ID("patch-id"),
     /** Analysis: the reflection of parallel light bars (stripes along {@link Analysis#zebraAxis}). */
     ZEBRA("zebra", true),
+    /** Analysis: an environment image reflected in the surface ({@link Analysis#environment}, the built-in studio by default). */
+    EMAP("emap", true),
     /** Analysis: lines of constant N·L every {@link Analysis#isophoteStep} degrees over a grey N·L shading. */
     ISOPHOTES("isophotes", true),
     /** Analysis: Gaussian curvature K = k1 k2 in false colour (blue negative, white 0, red positive). */

@@ -22,6 +22,11 @@ public final class Srgb {
         return linear <= 0.0031308 ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
     }
 
+    /** The inverse transfer function: the linear value of an sRGB-encoded value in [0,1]. */
+    public static double decode(double encoded) {
+        return encoded <= 0.04045 ? encoded / 12.92 : Math.pow((encoded + 0.055) / 1.055, 2.4);
+    }
+
     /** 8-bit sRGB of a linear value (clamped; NaN → 0). */
     public static int to8(float linear) {
         if (!(linear > 0)) {

@@ -471,6 +471,7 @@ public final class WhittedTracer {
             }
             case PATCH_ID -> patchIdColour(hit.kind, hit.index, local);
             case ZEBRA -> AnalysisColours.zebra(s.analysis, ux, uy, uz, nx, ny, nz, local);
+            case EMAP -> AnalysisColours.emap(s.analysis, ux, uy, uz, nx, ny, nz, local);
             case ISOPHOTES -> {
                 double[] l = s.analysis.isophoteLight();
                 if (l == null) {

@@ -185,13 +185,14 @@ public final class AppActions {
     }
 
     private static final java.util.Map<ShadingMode, String> ANALYSIS_NAMES = java.util.Map.of(
-            ShadingMode.ZEBRA, "Zebra Stripes", ShadingMode.ISOPHOTES, "Isophotes",
+            ShadingMode.ZEBRA, "Zebra Stripes", ShadingMode.EMAP, "Environment Map", ShadingMode.ISOPHOTES, "Isophotes",
             ShadingMode.GAUSSIAN, "Gaussian Curvature", ShadingMode.MEAN, "Mean Curvature",
             ShadingMode.MIN_RADIUS, "Minimum Radius", ShadingMode.MAX_RADIUS, "Maximum Radius",
             ShadingMode.DRAFT, "Draft Angle");
 
     private static final java.util.Map<ShadingMode, String> ANALYSIS_TIPS = java.util.Map.of(
             ShadingMode.ZEBRA, "Reflection of parallel light bars: a jump in the stripes is a G1 break, a kink a G2 break",
+            ShadingMode.EMAP, "The built-in studio reflected in the surface, as a polished part shows it",
             ShadingMode.ISOPHOTES, "Lines of constant N·L every 10° (light from the eye)",
             ShadingMode.GAUSSIAN, "K = k1·k2 from exact second derivatives: blue saddle, red dome (scale in the status bar)",
             ShadingMode.MEAN, "H = (k1 + k2)/2 from exact second derivatives, signed against the surface's normal",

@@ -190,6 +190,8 @@ class RenderCommandTest {
                 {"render", "teapot", "-o", out, "--analysis", "zebra", "--zebra-stripes", "500"},
                 {"render", "teapot", "-o", out, "--analysis", "draft", "--draft-pull", "0,0,0"},
                 {"render", "teapot", "-o", out, "--analysis", "isophotes", "--isophote-step", "0"},
+                {"render", "teapot", "-o", out, "--analysis", "emap", "--emap", "no-such-image.png"},
+                {"render", "teapot", "-o", out, "--analysis", "emap", "--emap", "pom.xml"},
         };
         for (String[] args : cases) {
             Run r = run(args);

@@ -54,7 +54,7 @@ class AnalysisViewsTest {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> a.withRange(2, 1)).getMessage()
                 .startsWith("analysis range must be two finite numbers, low < high"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> ShadingMode.parse("zebras")).getMessage()
-                .contains("zebra, isophotes, gaussian, mean, min-radius, max-radius, draft"));
+                .contains("zebra, emap, isophotes, gaussian, mean, min-radius, max-radius, draft"));
     }
 
     @Test
@@ -87,6 +87,35 @@ class AnalysisViewsTest {
         assertTrue(wall[0] > 0.5 && wall[1] > 0.5, "vertical: yellow");
         assertArrayEquals(wall, almost, "within the tolerance: vertical");
         assertEquals(60, AnalysisColours.draftAngle(a, 0, 0.5, Math.sqrt(0.75)), 1e-9);
+    }
+
+    @Test
+    void anEnvironmentMapIsLookedUpByAzimuthAndPolarAngleZUp() {
+        // 4 × 2: the top row red, the bottom row blue; columns differ in green by azimuth
+        int[] argb = new int[8];
+        for (int x = 0; x < 4; x++) {
+            argb[x] = 0xFF0000 | (x * 80) << 8;
+            argb[4 + x] = 0x0000FF | (x * 80) << 8;
+        }
+        EnvironmentMap map = EnvironmentMap.fromSrgb(4, 2, argb);
+        double[] c = new double[3];
+        map.lookup(0, 0, 1, c);
+        assertEquals(1, c[0], 1e-6, "straight up: the top row");
+        assertEquals(0, c[2], 1e-6);
+        map.lookup(0, 0, -1, c);
+        assertEquals(1, c[2], 1e-6, "straight down: the bottom row");
+        double[] a = new double[3], b = new double[3];
+        map.lookup(1, -0.2, 0.5, a);
+        map.lookup(-1, 0.2, 0.5, b);
+        assertNotEquals(a[1], b[1], "opposite azimuths see other columns");
+        assertEquals("an environment image holds finite colours ≥ 0, got NaN", assertThrows(IllegalArgumentException.class,
+                () -> new EnvironmentMap(2, 2, new float[] {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, Float.NaN})).getMessage());
+        // a mirror facing the viewer reflects the view ray back: the colour behind the eye
+        double[] seen = new double[3], behind = new double[3];
+        Analysis withMap = Analysis.defaults().withEnvironment(map);
+        AnalysisColours.emap(withMap, 0, 1, 0, 0, -1, 0, seen);
+        map.lookup(0, -1, 0, behind);
+        assertArrayEquals(behind, seen, 1e-12);
     }
 
     @Test

@@ -95,7 +95,7 @@ class GoldenImageTest {
         }
         // The analysis views (issue [2 of 6]) on the teapot, with the exact methods: the colour
         // comes from derivatives at the root, which subdivision's approximate (u,v) only nears
-        for (String view : List.of("zebra", "isophotes", "gaussian", "mean", "min-radius", "max-radius", "draft")) {
+        for (String view : List.of("zebra", "emap", "isophotes", "gaussian", "mean", "min-radius", "max-radius", "draft")) {
             Case c = new Case("analysis-" + view, TestScenes::teapot, view, 0, 1);
             all.add(c);
             all.add(c.with(Method.NEWTON, c.golden()));
