@@ -30,6 +30,7 @@ public final class AppModel {
 
     private final AppThreads threads;
     private final PictureEngine engine;
+    private final HoverValue hover;
     private final UserDialogs dialogs;
     private final AppPreferences prefs;
     private final List<Runnable> listeners = new ArrayList<>();
@@ -75,6 +76,7 @@ public final class AppModel {
             view.repaint();
             notifyListeners();
         }, e -> failed("Difference to clipping failed", e));
+        hover = new HoverValue(threads.difference(), threads.ui(), engine::lastJob, this::notifyListeners);
         editor = new SceneEditor(threads.edits(), threads.ui(), new EditorTarget());
         viewTasks = new BackgroundTasks(threads.edits(), threads.ui());
         edits = new EditCommands(this, editor);
@@ -104,6 +106,9 @@ public final class AppModel {
 
     /** View → Difference to clipping: the mask for the current picture, kept up to date off the UI thread. */
     public DifferenceModel difference() { return difference; }
+
+    /** The analysis view's value under the mouse (status bar). */
+    public HoverValue hover() { return hover; }
 
     public FileCommands files() { return files; }
 
@@ -140,7 +145,7 @@ public final class AppModel {
 
     /** True while anything is pending: an edit, a load or save, an overlay, welds, a render (tests wait on this). */
     public boolean busy() {
-        return engine.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
+        return engine.busy() || hover.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
                 || topology.busy()
                 || difference.busy();
     }

@@ -22,6 +22,9 @@ public interface PictureEngine extends AutoCloseable {
      */
     default void onError(Consumer<String> listener) {}
 
+    /** The job of the picture being shown or made, or null (read from any thread). */
+    default org.beziertracer.render.RenderJob lastJob() { return null; }
+
     /** True while a render or a pending request is in progress (tests wait on this). */
     boolean busy();
 

@@ -49,6 +49,7 @@ public final class PointerTool {
 
     public void moved(double x, double y) {
         app.overlay().hover(pick(x, y));
+        app.hover().request(x, y);
     }
 
     /** Left button pressed at {@code (x, y)} with no modifier key held. */

@@ -84,6 +84,12 @@ public final class RayTraceEngine implements PictureEngine {
         settled.accumulateAndGet(number, Math::max);
     }
 
+    /** The job last started (its snapshot stays reachable while it is the newest). */
+    private volatile RenderJob lastJob;
+
+    @Override
+    public RenderJob lastJob() { return lastJob; }
+
     @Override
     public void submit(RenderRequest request) {
         session.cancel();
@@ -107,6 +113,7 @@ public final class RayTraceEngine implements PictureEngine {
             SceneIntersector snapshot = snapshots.prepare(r.scene(), r.intersect());
             prepMillis = (System.nanoTime() - t0) / 1e6;
             RenderJob job = r.job(snapshot);
+            lastJob = job;
             session.cancel();
             target = r.target();
             current = n;

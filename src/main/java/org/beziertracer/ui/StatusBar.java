@@ -109,6 +109,8 @@ public final class StatusBar extends JPanel {
         bvh.setText(t.on(Toggle.BVH) ? "BVH on" + speedUp : "BVH off" + speedUp);
         model.setText(modelText(app.overlay().geometry(), t));
         String key = t.analysis() == null ? "" : s != null && s.shading() == t.analysis() ? s.legend() : t.analysis().label();
+        String under = t.analysis() == null ? "" : app.hover().text();
+        key = under.isEmpty() ? key : key + " · " + under;
         legend.setText(key);
         legend.setVisible(!key.isEmpty());
         int handles = app.selection().handleCount();

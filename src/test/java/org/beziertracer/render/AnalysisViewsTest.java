@@ -119,6 +119,23 @@ class AnalysisViewsTest {
     }
 
     @Test
+    void theProbeGivesTheValueUnderAPixel() {
+        Scene sphere = Models.sphere();
+        RenderJob k = job(sphere, "gaussian", Analysis.defaults());
+        String centre = AnalysisProbe.at(k, 80, 60);
+        assertTrue(centre.startsWith("K = 1.000 (k1 "), centre);
+        assertTrue(centre.contains(" on patch "), centre);
+        assertEquals("", AnalysisProbe.at(k, 0, 0), "a miss: nothing");
+        assertEquals("", AnalysisProbe.at(k, -1, 60), "outside the picture: nothing");
+        assertEquals("", AnalysisProbe.at(job(sphere, "zebra", Analysis.defaults()), 80, 60), "zebra shows no number");
+        String radius = AnalysisProbe.at(job(sphere, "max-radius", Analysis.defaults()), 80, 60);
+        assertTrue(radius.startsWith("R max = 1.000 "), radius);
+        // the default camera looks down at the sphere: the centre pixel's normal faces the eye, tilted up
+        String draft = AnalysisProbe.at(job(sphere, "draft", Analysis.defaults()), 80, 60);
+        assertTrue(draft.matches("draft -?[0-9.]+° on patch [0-9]+"), draft);
+    }
+
+    @Test
     void zebraStripesAlternateAroundTheAxis() {
         Analysis a = Analysis.defaults().withZebra(new double[] {0, 0, 1}, 4, 0.5);
         // looking down −y at a mirror whose normal turns about z: the reflection turns twice as fast

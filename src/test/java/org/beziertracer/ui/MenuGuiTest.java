@@ -87,11 +87,21 @@ class MenuGuiTest extends GuiSession {
         BufferedImage shaded = d.capturePanel();
         d.menuPath("View", "analysis", "analysis:gaussian");
         d.settle();
-        String legend = d.status("legend");
-        assertTrue(legend.startsWith("gaussian ") && legend.contains(" … "), "the scale is shown: " + legend);
+        String scale = d.status("legend");
+        assertTrue(scale.startsWith("gaussian ") && scale.contains(" … "), "the scale is shown: " + scale);
         BufferedImage analysed = d.capturePanel();
         assertTrue(GuiDriver.differing(shaded, analysed, 24) > shaded.getWidth() * shaded.getHeight() / 50,
                 "the picture changed to the curvature colours");
+        // the value under the mouse: the teapot's body at the picture's centre
+        int w = GuiDriver.onEdt(() -> d.app.view().width()), h = GuiDriver.onEdt(() -> d.app.view().height());
+        java.awt.Point centre = d.screenOf(w / 2.0, h / 2.0);
+        d.robot.mouseMove(centre.x, centre.y);
+        d.robot.mouseMove(centre.x + 1, centre.y);
+        d.waitFor("the value under the mouse", () -> d.app.hover().text().startsWith("K = "));
+        d.settle();
+        String legend = d.status("legend");
+        assertTrue(legend.contains(" · K = ") && legend.contains(" on patch "), legend);
+        d.mouseAway();
         d.menuPath("View", "analysis", "analysis:zebra");
         d.settle();
         assertEquals("zebra", d.status("legend"));
