@@ -35,10 +35,11 @@ public final class RenderChoices {
                 .withTessellate(s.tessellate());
     }
 
-    /** The renderer's options: passes per displayed frame and tessellation. */
+    /** The renderer's options: passes per displayed frame, tessellation and the analysis views' settings. */
     public static RenderOptions renderOptions(Settings s) {
         int passes = Math.max(1, Math.min(MAX_PASSES_PER_FRAME, s.level(Level.INTERACTIVITY)));
-        return RenderOptions.defaults().withPassesPerFrame(passes).withTessellate(s.tessellate());
+        return RenderOptions.defaults().withPassesPerFrame(passes).withTessellate(s.tessellate())
+                .withAnalysis(s.analysisSettings());
     }
 
     /**

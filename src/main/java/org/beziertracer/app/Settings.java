@@ -6,6 +6,7 @@ import java.util.Objects;
 
 import org.beziertracer.intersect.Method;
 import org.beziertracer.math.Vec3;
+import org.beziertracer.render.Analysis;
 import org.beziertracer.render.ShadingMode;
 
 /**
@@ -24,13 +25,17 @@ public final class Settings {
     private final Vec3 lightOffset;
     /** The analysis view shown instead of the shading, or null. */
     private final ShadingMode analysis;
-
-    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset) {
-        this(on, levels, method, light, lightOffset, null);
-    }
+    /** The analysis views' settings (View → Analysis → Analysis Settings…). */
+    private final Analysis analysisSettings;
 
     private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset,
                      ShadingMode analysis) {
+        this(on, levels, method, light, lightOffset, analysis, Analysis.defaults());
+    }
+
+    private Settings(EnumSet<Toggle> on, int[] levels, Method method, LightPlacement light, Vec3 lightOffset,
+                     ShadingMode analysis, Analysis analysisSettings) {
+        this.analysisSettings = Objects.requireNonNull(analysisSettings);
         if (analysis != null && !analysis.isAnalysis()) {
             throw new IllegalArgumentException(analysis.label() + " is not an analysis view");
         }
@@ -54,7 +59,7 @@ public final class Settings {
         for (Level l : Level.values()) {
             levels[l.ordinal()] = l.initial();
         }
-        return new Settings(on, levels, Method.CLIPPING, LightPlacement.EYE_ABOVE_LEFT, null);
+        return new Settings(on, levels, Method.CLIPPING, LightPlacement.EYE_ABOVE_LEFT, null, null);
     }
 
     public boolean on(Toggle t) { return on.contains(t); }
@@ -78,30 +83,38 @@ public final class Settings {
         } else {
             copy.remove(t);
         }
-        return new Settings(copy, levels, method, light, lightOffset, analysis);
+        return new Settings(copy, levels, method, light, lightOffset, analysis, analysisSettings);
     }
 
     /** @throws IllegalArgumentException one line, when {@code value} is outside the level's range */
     public Settings with(Level l, int value) {
         int[] copy = levels.clone();
         copy[l.ordinal()] = l.check(value);
-        return new Settings(EnumSet.copyOf(on), copy, method, light, lightOffset, analysis);
+        return new Settings(EnumSet.copyOf(on), copy, method, light, lightOffset, analysis, analysisSettings);
     }
 
-    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light, lightOffset, analysis); }
+    public Settings with(Method m) { return new Settings(EnumSet.copyOf(on), levels, m, light, lightOffset, analysis, analysisSettings); }
 
     /** Another placement, its light at the preset position. */
-    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p, null, analysis); }
+    public Settings with(LightPlacement p) { return new Settings(EnumSet.copyOf(on), levels, method, p, null, analysis, analysisSettings); }
 
     /** The light dragged to {@code offset} (in the placement's frame; ignored for {@link LightPlacement#SCENE}). */
     public Settings withLightOffset(Vec3 offset) {
-        return new Settings(EnumSet.copyOf(on), levels, method, light, light.preset() == null ? null : offset, analysis);
+        return new Settings(EnumSet.copyOf(on), levels, method, light, light.preset() == null ? null : offset, analysis, analysisSettings);
     }
 
     /** The analysis view shown instead of the shading ({@link ShadingMode#isAnalysis()}), or null for none. */
     public Settings withAnalysis(ShadingMode view) {
-        return new Settings(EnumSet.copyOf(on), levels, method, light, lightOffset, view);
+        return new Settings(EnumSet.copyOf(on), levels, method, light, lightOffset, view, analysisSettings);
     }
+
+    /** With the analysis views' settings {@code a}. */
+    public Settings withAnalysisSettings(Analysis a) {
+        return new Settings(EnumSet.copyOf(on), levels, method, light, lightOffset, analysis, a);
+    }
+
+    /** The analysis views' settings. */
+    public Analysis analysisSettings() { return analysisSettings; }
 
     /** The analysis view (View → Analysis), or null. */
     public ShadingMode analysis() { return analysis; }
@@ -154,12 +167,13 @@ public final class Settings {
     @Override
     public boolean equals(Object o) {
         return o instanceof Settings s && s.on.equals(on) && Arrays.equals(s.levels, levels) && s.method == method
-                && s.light == light && Objects.equals(s.lightOffset, lightOffset) && s.analysis == analysis;
+                && s.light == light && Objects.equals(s.lightOffset, lightOffset) && s.analysis == analysis
+                && s.analysisSettings.equals(analysisSettings);
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(on, Arrays.hashCode(levels), method, light, lightOffset, analysis);
+        return Objects.hash(on, Arrays.hashCode(levels), method, light, lightOffset, analysis, analysisSettings);
     }
 
     @Override

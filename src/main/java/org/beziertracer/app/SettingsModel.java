@@ -53,6 +53,9 @@ public final class SettingsModel {
     /** Shows the analysis view {@code view} instead of the shading (null: the shading again). */
     public void setAnalysis(org.beziertracer.render.ShadingMode view) { replace(current.withAnalysis(view)); }
 
+    /** The analysis views' settings (View → Analysis → Analysis Settings…). */
+    public void setAnalysisSettings(org.beziertracer.render.Analysis a) { replace(current.withAnalysisSettings(a)); }
+
     public void cycleLight() {
         set(LightPlacement.values()[(current.light().ordinal() + 1) % LightPlacement.values().length]);
     }

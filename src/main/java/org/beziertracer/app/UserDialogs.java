@@ -30,4 +30,10 @@ public interface UserDialogs {
      * null when cancelled.
      */
     ExportOptions exportOptions(ExportOptions offer);
+
+    /**
+     * View → Analysis → Analysis Settings…: the analysis views' settings, starting from
+     * {@code current}; null when cancelled (or when there is no one to ask).
+     */
+    default org.beziertracer.render.Analysis analysisSettings(org.beziertracer.render.Analysis current) { return null; }
 }

@@ -182,6 +182,13 @@ public final class AppActions {
                     () -> s.setAnalysis(view));
             syncs.add(() -> a.putValue(Action.SELECTED_KEY, app.settings().current().analysis() == view));
         }
+        add("analysisSettings", "Analysis Settings…", "Zebra bars, isophote step, the curvature colour scale "
+                + "(automatic or fixed) and the draft's pull direction and tolerance", null, () -> {
+                    org.beziertracer.render.Analysis a = app.dialogs().analysisSettings(s.current().analysisSettings());
+                    if (a != null) {
+                        s.setAnalysisSettings(a);
+                    }
+                });
     }
 
     private static final java.util.Map<ShadingMode, String> ANALYSIS_NAMES = java.util.Map.of(

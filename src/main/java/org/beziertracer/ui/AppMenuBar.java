@@ -46,6 +46,8 @@ public final class AppMenuBar extends JMenuBar {
                 analysis.addSeparator();
             }
         }
+        analysis.addSeparator();
+        analysis.add(item("analysisSettings"));
         view.insert(analysis, 5);
         JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,

@@ -125,6 +125,11 @@ final class SwingDialogs implements UserDialogs {
         }
     }
 
+    @Override
+    public org.beziertracer.render.Analysis analysisSettings(org.beziertracer.render.Analysis current) {
+        return AnalysisSettingsPanel.ask(parent, current);
+    }
+
     private static javax.swing.JSpinner spinner(String name, int value, int max, String tip) {
         javax.swing.JSpinner s = new javax.swing.JSpinner(new javax.swing.SpinnerNumberModel(
                 Math.max(1, Math.min(max, value)), 1, max, 1));

@@ -171,9 +171,9 @@ class FilesGuiTest extends GuiSession {
     private static void exportThroughTheDialog(Path png, String width, String height, String spp) {
         d.menu("File", "exportImage");
         JDialog options = d.dialogWith(JSpinner.class);
-        typeSpinner(options, "export.width", width);
-        typeSpinner(options, "export.height", height);
-        typeSpinner(options, "export.spp", spp);
+        d.typeSpinner(options, "export.width", width);
+        d.typeSpinner(options, "export.height", height);
+        d.typeSpinner(options, "export.spp", spp);
         javax.swing.JComboBox<?> sampler = (javax.swing.JComboBox<?>) GuiDriver.find(options, "export.sampler");
         d.click(sampler);
         d.key(KeyEvent.VK_HOME);
@@ -181,17 +181,6 @@ class FilesGuiTest extends GuiSession {
         d.waitFor("the regular sampler", () -> sampler.getSelectedIndex() == 0);
         d.click(GuiDriver.onEdt(() -> GuiDriver.button(options, "OK")));
         d.chooseFile(png);
-    }
-
-    private static void typeSpinner(JDialog dialog, String name, String value) {
-        JSpinner s = (JSpinner) GuiDriver.find(dialog, name);
-        javax.swing.JTextField field = ((JSpinner.DefaultEditor) s.getEditor()).getTextField();
-        d.focus(field);
-        d.key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
-        d.type(value);
-        d.waitFor(name + " typed", () -> value.equals(field.getText()));
-        d.key(KeyEvent.VK_TAB);
-        d.waitFor(name + " = " + value, () -> String.valueOf(s.getValue()).equals(value));
     }
 
     @Test

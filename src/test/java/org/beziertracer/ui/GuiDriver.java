@@ -405,6 +405,18 @@ final class GuiDriver {
         key(KeyEvent.VK_ENTER);
     }
 
+    /** Types {@code value} into the spinner {@code name} of {@code dialog} and leaves it with Tab, then waits for the value. */
+    void typeSpinner(javax.swing.JDialog dialog, String name, String value) {
+        javax.swing.JSpinner s = (javax.swing.JSpinner) find(dialog, name);
+        JTextField field = ((javax.swing.JSpinner.DefaultEditor) s.getEditor()).getTextField();
+        focus(field);
+        key(KeyEvent.VK_A, KeyEvent.VK_CONTROL);
+        type(value);
+        waitFor(name + " typed", () -> value.equals(field.getText()));
+        key(KeyEvent.VK_TAB);
+        waitFor(name + " = " + value, () -> String.valueOf(s.getValue()).equals(value));
+    }
+
     /** Moves the mouse out of the way (to a corner of the picture), so no handle is hovered. */
     void mouseAway() {
         Point away = screenOf(3, 3);

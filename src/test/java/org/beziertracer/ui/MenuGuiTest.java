@@ -105,6 +105,15 @@ class MenuGuiTest extends GuiSession {
         d.menuPath("View", "analysis", "analysis:zebra");
         d.settle();
         assertEquals("zebra", d.status("legend"));
+        BufferedImage sixteen = d.capturePanel();
+        d.menuPath("View", "analysis", "analysisSettings");
+        JDialog settings = d.dialogWith(javax.swing.JSpinner.class);
+        d.typeSpinner(settings, "analysis.zebraStripes", "6");
+        d.click(GuiDriver.onEdt(() -> GuiDriver.button(settings, "OK")));
+        d.waitFor("the dialog to close", () -> !settings.isShowing());
+        d.settle();
+        assertEquals(6, (int) GuiDriver.onEdt(() -> d.app.settings().current().analysisSettings().zebraStripes()));
+        assertTrue(GuiDriver.differing(sixteen, d.capturePanel(), 24) > 200, "fewer, wider stripes");
         d.menuPath("View", "analysis", "analysis:none");
         d.settle();
         assertEquals("", d.status("legend"), "no legend for the shading");
