@@ -30,13 +30,12 @@ public final class SecondDerivatives {
     /** Doubles of {@code out}: S, S_u, S_v, S_uu, S_uv, S_vv, three each. */
     public static final int LENGTH = 18;
 
-    // scratch layout: three basis rows (value, first, second derivative) per direction, the
-    // triangle's working row, then the row sums (value, d/du, d²/du² per row j, 4 coordinates each),
-    // then the homogeneous results
-    private static final int BU = 0, BV = 3 * ORDER, TRI = 6 * ORDER, ROWS = 7 * ORDER, HOM = ROWS + 12 * ORDER;
+    // scratch layout: three basis rows (value, first, second derivative) per direction, then the
+    // triangle's working row
+    private static final int BU = 0, BV = 3 * ORDER, TRI = 6 * ORDER;
 
     /** Scratch doubles {@link #evaluate} uses. */
-    public static final int SCRATCH = HOM + 24;
+    public static final int SCRATCH = 7 * ORDER;
 
     /**
      * Writes S, S_u, S_v, S_uu, S_uv, S_vv (Euclidean) of the degree {@code n}×{@code m} net at
@@ -52,62 +51,60 @@ public final class SecondDerivatives {
     /** As {@link #evaluate(double[], int, int, int, int, double, double, double[], double[])}, into {@code out[outOff..]}, scratch from {@code so}. */
     public static void evaluate(double[] net, int off, int n, int m, int dim, double u, double v, double[] out,
                                 int outOff, double[] scratch, int so) {
-        basis(n, u, scratch, so + BU, so + TRI);
-        basis(m, v, scratch, so + BV, so + TRI);
-        final int ROWS = so + SecondDerivatives.ROWS, HOM = so + SecondDerivatives.HOM, BU = so, BV = so + SecondDerivatives.BV;
-        // Row sums in u: r0_j = Σ_i P_ij B_i(u), r1_j = Σ_i P_ij B_i'(u), r2_j = Σ_i P_ij B_i''(u)
+        int bu = so + BU, bv = so + BV;
+        basis(n, u, scratch, bu, so + TRI);
+        basis(m, v, scratch, bv, so + TRI);
+        // Homogeneous H, H_u, H_v, H_uu, H_uv, H_vv (x, y, z, w each) in locals: the row sums in u
+        // (value, first and second derivative), then their sums in v
+        double hx = 0, hy = 0, hz = 0, hw = 0, ux = 0, uy = 0, uz = 0, uw = 0, vx = 0, vy = 0, vz = 0, vw = 0;
+        double uux = 0, uuy = 0, uuz = 0, uuw = 0, uvx = 0, uvy = 0, uvz = 0, uvw = 0, vvx = 0, vvy = 0, vvz = 0, vvw = 0;
+        boolean rational = dim == 4;
         for (int j = 0; j <= m; j++) {
-            int row = ROWS + 12 * j;
-            for (int c = 0; c < 12; c++) {
-                scratch[row + c] = 0;
+            double ax = 0, ay = 0, az = 0, aw = 0, dx = 0, dy = 0, dz = 0, dw = 0, ex = 0, ey = 0, ez = 0, ew = 0;
+            int p = off + dim * j * (n + 1);
+            for (int i = 0; i <= n; i++, p += dim) {
+                double b0 = scratch[bu + i], b1 = scratch[bu + ORDER + i], b2 = scratch[bu + 2 * ORDER + i];
+                double x = net[p], y = net[p + 1], z = net[p + 2], w = rational ? net[p + 3] : 1;
+                ax += x * b0; ay += y * b0; az += z * b0; aw += w * b0;
+                dx += x * b1; dy += y * b1; dz += z * b1; dw += w * b1;
+                ex += x * b2; ey += y * b2; ez += z * b2; ew += w * b2;
             }
-            for (int i = 0; i <= n; i++) {
-                int p = off + dim * (j * (n + 1) + i);
-                double b0 = scratch[BU + i], b1 = scratch[BU + ORDER + i], b2 = scratch[BU + 2 * ORDER + i];
-                for (int c = 0; c < dim; c++) {
-                    double x = net[p + c];
-                    scratch[row + c] += x * b0;
-                    scratch[row + 4 + c] += x * b1;
-                    scratch[row + 8 + c] += x * b2;
-                }
-            }
+            double c0 = scratch[bv + j], c1 = scratch[bv + ORDER + j], c2 = scratch[bv + 2 * ORDER + j];
+            hx += ax * c0; hy += ay * c0; hz += az * c0; hw += aw * c0;
+            ux += dx * c0; uy += dy * c0; uz += dz * c0; uw += dw * c0;
+            vx += ax * c1; vy += ay * c1; vz += az * c1; vw += aw * c1;
+            uux += ex * c0; uuy += ey * c0; uuz += ez * c0; uuw += ew * c0;
+            uvx += dx * c1; uvy += dy * c1; uvz += dz * c1; uvw += dw * c1;
+            vvx += ax * c2; vvy += ay * c2; vvz += az * c2; vvw += aw * c2;
         }
-        // Homogeneous H, H_u, H_v, H_uu, H_uv, H_vv, 4 coordinates each
-        for (int k = 0; k < 24; k++) {
-            scratch[HOM + k] = 0;
-        }
-        for (int j = 0; j <= m; j++) {
-            int row = ROWS + 12 * j;
-            double c0 = scratch[BV + j], c1 = scratch[BV + ORDER + j], c2 = scratch[BV + 2 * ORDER + j];
-            for (int c = 0; c < dim; c++) {
-                double r0 = scratch[row + c], r1 = scratch[row + 4 + c], r2 = scratch[row + 8 + c];
-                scratch[HOM + c] += r0 * c0;
-                scratch[HOM + 4 + c] += r1 * c0;
-                scratch[HOM + 8 + c] += r0 * c1;
-                scratch[HOM + 12 + c] += r2 * c0;
-                scratch[HOM + 16 + c] += r1 * c1;
-                scratch[HOM + 20 + c] += r0 * c2;
-            }
-        }
-        if (dim == 3) {
-            for (int d = 0; d < 6; d++) {
-                System.arraycopy(scratch, HOM + 4 * d, out, outOff + 3 * d, 3);
-            }
+        double[] o = out;
+        int k = outOff;
+        if (!rational) {
+            o[k] = hx; o[k + 1] = hy; o[k + 2] = hz;
+            o[k + 3] = ux; o[k + 4] = uy; o[k + 5] = uz;
+            o[k + 6] = vx; o[k + 7] = vy; o[k + 8] = vz;
+            o[k + 9] = uux; o[k + 10] = uuy; o[k + 11] = uuz;
+            o[k + 12] = uvx; o[k + 13] = uvy; o[k + 14] = uvz;
+            o[k + 15] = vvx; o[k + 16] = vvy; o[k + 17] = vvz;
             return;
         }
-        double w = scratch[HOM + 3], wu = scratch[HOM + 7], wv = scratch[HOM + 11];
-        double wuu = scratch[HOM + 15], wuv = scratch[HOM + 19], wvv = scratch[HOM + 23];
-        for (int c = 0; c < 3; c++) {
-            double s = scratch[HOM + c] / w;
-            double su = (scratch[HOM + 4 + c] - wu * s) / w;
-            double sv = (scratch[HOM + 8 + c] - wv * s) / w;
-            out[outOff + c] = s;
-            out[outOff + 3 + c] = su;
-            out[outOff + 6 + c] = sv;
-            out[outOff + 9 + c] = (scratch[HOM + 12 + c] - 2 * wu * su - wuu * s) / w;
-            out[outOff + 12 + c] = (scratch[HOM + 16 + c] - wu * sv - wv * su - wuv * s) / w;
-            out[outOff + 15 + c] = (scratch[HOM + 20 + c] - 2 * wv * sv - wvv * s) / w;
-        }
+        quotient(hx, ux, vx, uux, uvx, vvx, hw, uw, vw, uuw, uvw, vvw, o, k);
+        quotient(hy, uy, vy, uuy, uvy, vvy, hw, uw, vw, uuw, uvw, vvw, o, k + 1);
+        quotient(hz, uz, vz, uuz, uvz, vvz, hw, uw, vw, uuw, uvw, vvw, o, k + 2);
+    }
+
+    /** One Euclidean coordinate's S, S_u, S_v, S_uu, S_uv, S_vv from its homogeneous ones (quotient rule), stride 3. */
+    private static void quotient(double p, double pu, double pv, double puu, double puv, double pvv, double w, double wu,
+                                 double wv, double wuu, double wuv, double wvv, double[] out, int k) {
+        double s = p / w;
+        double su = (pu - wu * s) / w;
+        double sv = (pv - wv * s) / w;
+        out[k] = s;
+        out[k + 3] = su;
+        out[k + 6] = sv;
+        out[k + 9] = (puu - 2 * wu * su - wuu * s) / w;
+        out[k + 12] = (puv - wu * sv - wv * su - wuv * s) / w;
+        out[k + 15] = (pvv - 2 * wv * sv - wvv * s) / w;
     }
 
     /**
@@ -121,10 +118,14 @@ public final class SecondDerivatives {
         b[tri] = 1;
         for (int k = 1; k <= n; k++) {
             if (k == n - 1) {
-                System.arraycopy(b, tri, b, second, n - 1);
+                for (int i = 0; i < n - 1; i++) {
+                    b[second + i] = b[tri + i];
+                }
             }
             if (k == n) {
-                System.arraycopy(b, tri, b, first, n);
+                for (int i = 0; i < n; i++) {
+                    b[first + i] = b[tri + i];
+                }
             }
             b[tri + k] = t * b[tri + k - 1];
             for (int i = k - 1; i > 0; i--) {
@@ -146,6 +147,8 @@ public final class SecondDerivatives {
             b[second + i] = d2;
             b[first + i] = n * (a1 - d1);
         }
-        System.arraycopy(b, tri, b, at, n + 1);
+        for (int i = 0; i <= n; i++) {
+            b[at + i] = b[tri + i];
+        }
     }
 }

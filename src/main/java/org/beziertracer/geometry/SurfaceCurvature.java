@@ -46,7 +46,16 @@ public final class SurfaceCurvature {
      */
     public static void at(double[] net, int off, int n, int m, int dim, double u, double v, double[] out,
                           double[] scratch) {
-        double threshold = PatchNormals.DEGENERATE_RELATIVE * n * m * PatchNormals.squaredExtent(net, off, n, m, dim);
+        at(net, off, n, m, dim, u, v, PatchNormals.squaredExtent(net, off, n, m, dim), out, scratch);
+    }
+
+    /**
+     * As {@link #at(double[], int, int, int, int, double, double, double[], double[])}, with the net's
+     * {@link PatchNormals#squaredExtent} computed once by the caller (a property of the patch).
+     */
+    public static void at(double[] net, int off, int n, int m, int dim, double u, double v, double squaredExtent,
+                          double[] out, double[] scratch) {
+        double threshold = PatchNormals.DEGENERATE_RELATIVE * n * m * squaredExtent;
         if (curvatureAt(net, off, n, m, dim, u, v, out, scratch, threshold)) {
             return;
         }
@@ -134,7 +143,8 @@ public final class SurfaceCurvature {
         // cancellation that makes √(H² − K) lose half the digits near an umbilic
         double a = l / e, s2 = e / det;
         double b = Math.sqrt(s2 / e) * (mm - f * l / e), c = s2 * (l * f * f / (e * e) - 2 * mm * f / e + nn);
-        double root = Math.hypot(0.5 * (a - c), b);
+        double half = 0.5 * (a - c);
+        double root = Math.sqrt(half * half + b * b);
         double k1 = h + root, k2 = h - root;
         if (!(Double.isFinite(k) && Double.isFinite(h))) {
             return false;

@@ -200,7 +200,7 @@ abstract class PatchLeaves implements Leaves, LaneIntersector<TraceContext>, Lan
         double u = plain ? hit.u : SurfaceParameters.s(domain, k, hit.u);
         double v = plain ? hit.v : SurfaceParameters.t(domain, k, hit.v);
         SurfaceCurvature.at(table.patchNets, table.patchNetOffset[k], table.patchDegreeU[k], table.patchDegreeV[k],
-                table.patchDim[k], u, v, out, ctx.curvatureScratch);
+                table.patchDim[k], u, v, table.patchSquaredExtent[k], out, ctx.curvatureScratch);
         return true;
     }
 
