@@ -5,6 +5,7 @@ import java.util.List;
 
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.Method;
 import org.beziertracer.model.io.BuiltIns;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.FileFormats;
@@ -15,7 +16,8 @@ import org.beziertracer.model.io.SceneFiles;
 /**
  * Loads what File → Open and the Models menu offer — BPT and OBJ models, JSON scene files and
  * the built-in models and scenes — always as a {@link SceneDocument} (a bare model gets the
- * default settings, no lights and no camera), through {@link SceneFiles#load}. Every failure is a
+ * default settings, no lights and no camera), through {@link SceneFiles#load} with the method
+ * checked by {@link Method#parse}. Every failure is a
  * one-line {@link IllegalArgumentException} (usually a {@link ModelFormatException}) for the
  * error dialog. Stateless.
  */
@@ -44,12 +46,15 @@ public final class ModelLoader {
 
     /** Loads a built-in by name. */
     public static SceneDocument builtIn(String name) {
-        return fitting(name, SceneFiles.load(name));
+        return fitting(name, SceneFiles.load(name, Method::parse));
     }
 
-    /** Loads a file; one that would not fit in the heap is refused ({@link HeapBudget}). */
+    /**
+     * Loads a file; one that would not fit in the heap is refused ({@link HeapBudget}), and so is a
+     * scene file whose method {@link Method#parse} does not know.
+     */
     public static SceneDocument load(Path file) {
-        return fitting(file.toString(), SceneFiles.load(file.toString()));
+        return fitting(file.toString(), SceneFiles.load(file.toString(), Method::parse));
     }
 
     private static SceneDocument fitting(String name, SceneDocument doc) {

@@ -11,6 +11,7 @@ import org.beziertracer.model.io.SceneFiles;
 
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.IntersectOptions;
+import org.beziertracer.intersect.Method;
 import org.beziertracer.intersect.SceneIntersector;
 
 import picocli.CommandLine.Command;
@@ -55,7 +56,7 @@ final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Scene scene = SceneFiles.load(model).scene();
+        Scene scene = SceneFiles.load(model, Method::parse).scene();
         PrintWriter out = spec.commandLine().getOut();
         out.println("model: " + model);
         out.println("patches: " + scene.patchCount());

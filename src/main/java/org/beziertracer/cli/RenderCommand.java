@@ -17,6 +17,7 @@ import java.util.function.IntSupplier;
 
 import org.beziertracer.geometry.Tessellator;
 import org.beziertracer.intersect.HeapBudget;
+import org.beziertracer.intersect.Method;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
@@ -79,7 +80,8 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--filter", paramLabel = "box|tent", defaultValue = "box", description = "pixel filter (default: ${DEFAULT-VALUE})")
     String filter;
 
-    @Option(names = "--method", paramLabel = "clipping|newton|subdivision", description = "ray-patch solver")
+    @Option(names = "--method", paramLabel = "METHOD", completionCandidates = MethodLabels.class,
+            description = "ray-patch solver: ${COMPLETION-CANDIDATES} (default: the scene's)")
     String method;
 
     @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
@@ -137,9 +139,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--pixel", paramLabel = "x,y", description = "trace this pixel and print every ray, hit and shading term")
     String pixel;
 
-    @Option(names = "--difference-to", paramLabel = "clipping|newton|subdivision",
-            description = "also render with this method; write the pixels that differ by more than 10 %% in red "
-                    + "over a dimmed image and print their count")
+    @Option(names = "--difference-to", paramLabel = "METHOD", completionCandidates = MethodLabels.class,
+            description = "also render with this method (${COMPLETION-CANDIDATES}); write the pixels that differ "
+                    + "by more than 10 %% in red over a dimmed image and print their count")
     String differenceTo;
 
     @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
@@ -156,7 +158,7 @@ final class RenderCommand implements Callable<Integer> {
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
                 .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
                 .withAnalysis(analysisOptions.settings());
-        SceneDocument doc = SceneFiles.load(model);
+        SceneDocument doc = SceneFiles.load(model, Method::parse);
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
         Scene scene = doc.scene();
@@ -214,6 +216,12 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new IllegalArgumentException(output + ": the output must be a .png file");
+        }
+        if (method != null) {
+            Method.parse(method);
+        }
+        if (differenceTo != null) {
+            Method.parse(differenceTo);
         }
         if (repeat < 1 || repeat > MAX_REPEAT) {
             throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);

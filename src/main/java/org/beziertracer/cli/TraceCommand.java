@@ -56,8 +56,9 @@ final class TraceCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
-    @Option(names = "--method", paramLabel = "clipping|newton|subdivision", defaultValue = "clipping",
-            description = "ray-patch solver (default: ${DEFAULT-VALUE})")
+    @Option(names = "--method", paramLabel = "METHOD", defaultValue = "clipping",
+            completionCandidates = MethodLabels.class,
+            description = "ray-patch solver: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})")
     String method;
 
     @Option(names = "--no-bvh", description = "no sub-patch BVH: test whole patches in a list")
@@ -95,7 +96,7 @@ final class TraceCommand implements Callable<Integer> {
         if (random != null && (random < 0 || random > 100_000_000)) {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
-        Scene scene = SceneFiles.load(model).scene();
+        Scene scene = SceneFiles.load(model, Method::parse).scene();
         boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.meshes().isEmpty();
         IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
         HeapBudget.require(model, scene, io);

@@ -1,7 +1,10 @@
 package org.beziertracer.intersect;
 
+import java.util.List;
+
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.math.HeapBytes;
+import org.beziertracer.model.BezierPatch;
 
 /**
  * Sub-patch leaves solved by Bézier clipping ({@link BezierClipper}): exact, the default. Up to
@@ -49,6 +52,23 @@ final class ClippingLeaves extends PatchLeaves {
     /** True when a table of {@code leaves} leaves gets records. */
     static boolean hasRecords(long leaves) {
         return leaves <= RECORD_LEAVES;
+    }
+
+    /**
+     * About the bytes these leaves keep beside the table ({@link Method#solverBytes}): up to
+     * {@link #RECORD_LEAVES} leaves, each leaf's {@link NewtonLeafRecords} and {@link LeafSlabs}, and
+     * its {@link LeafQuadratics} once a polynomial patch is above bicubic; nothing above. The
+     * {@link LeafQuarters}, made as rays need them, are not counted.
+     */
+    static long estimateBytes(List<BezierPatch> patches, long leaves) {
+        if (!hasRecords(leaves)) {
+            return 0;
+        }
+        long floats = NewtonLeafRecords.STRIDE + LeafSlabs.STRIDE;
+        if (patches.stream().anyMatch(p -> !p.isRational() && LeafQuadratics.worthIt(p.degreeU(), p.degreeV()))) {
+            floats += LeafQuadratics.STRIDE;
+        }
+        return 4L * floats * leaves;
     }
 
     @Override

@@ -10,7 +10,8 @@ import org.beziertracer.model.Scene;
  * Refuses work that would not fit in the heap before it allocates, in one line that says what,
  * how much and what to do: {@code big.obj: 600000 patches need about 12 GB of heap; this JVM
  * allows 1 GB (run java -Xmx16g …)}. The estimates live beside the data they measure
- * ({@link SubPatchTable#estimateBytes}, {@link Bvh#estimateBytes}, {@link TriangleMesh#estimateBytes});
+ * ({@link SubPatchTable#estimateBytes}, {@link Bvh#estimateBytes}, {@link TriangleMesh#estimateBytes}, and
+ * each method's leaves, {@link Method#solverBytes});
  * this class adds them up for a build and compares with what the JVM can still give.
  *
  * <p>{@link SceneIntersector#build} checks every build; the command line and the app check first
@@ -51,18 +52,8 @@ public final class HeapBudget {
                     + Bvh.estimateBytes(triangles);
         }
         SubPatchTable.Estimate table = SubPatchTable.estimate(patches, options.effectiveSplit());
-        boolean records = options.method() == Method.NEWTON
-                || options.method() == Method.CLIPPING && ClippingLeaves.hasRecords(table.leaves());
-        long solverBytes = records ? 4L * NewtonLeafRecords.STRIDE * table.leaves() : 0;
-        if (records && options.method() == Method.CLIPPING) {
-            solverBytes += 4L * LeafSlabs.STRIDE * table.leaves(); // clipping's slabs
-        }
-        if (records && options.method() == Method.CLIPPING && patches.stream().anyMatch(
-                p -> !p.isRational() && LeafQuadratics.worthIt(p.degreeU(), p.degreeV()))) {
-            // clipping's quadratic starts, a model for every leaf once a patch is above bicubic
-            solverBytes += 4L * LeafQuadratics.STRIDE * table.leaves();
-        }
-        // The table, the leaves' boxes handed to the BVH build, the build itself and a solver's per-leaf records
+        long solverBytes = options.method().solverBytes(patches, table.leaves());
+        // The table, the leaves' boxes handed to the BVH build, the build itself and the method's per-leaf data
         return table.bytes() + 6 * 8 * table.leaves() + Bvh.estimateBytes(table.leaves()) + solverBytes;
     }
 

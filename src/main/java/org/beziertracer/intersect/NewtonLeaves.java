@@ -1,7 +1,10 @@
 package org.beziertracer.intersect;
 
+import java.util.List;
+
 import org.beziertracer.geometry.SubPatchTable;
 import org.beziertracer.math.HeapBytes;
+import org.beziertracer.model.BezierPatch;
 
 /**
  * Sub-patch leaves solved by Newton iteration alone ({@link NewtonSolver}), over the Newton
@@ -19,6 +22,11 @@ final class NewtonLeaves extends PatchLeaves {
     private NewtonLeaves(SubPatchTable table, double tolerance, float[] records) {
         super(table, tolerance);
         this.records = records;
+    }
+
+    /** About the bytes these leaves keep beside the table ({@link Method#solverBytes}): every leaf's record. */
+    static long estimateBytes(List<BezierPatch> patches, long leaves) {
+        return 4L * NewtonLeafRecords.STRIDE * leaves;
     }
 
     @Override

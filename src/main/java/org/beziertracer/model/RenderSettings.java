@@ -2,6 +2,7 @@ package org.beziertracer.model;
 
 import java.util.Locale;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
  * Render settings a scene file may carry (and the CLI or app may override). Plain values, so
@@ -10,7 +11,9 @@ import java.util.Set;
  * @param width, height image size in pixels, 1..{@value #MAX_SIZE}
  * @param spp           samples per pixel, 1..{@value #MAX_SPP}
  * @param sampler       {@code regular}, {@code jittered} or {@code adaptive}
- * @param method        {@code clipping}, {@code newton} or {@code subdivision}
+ * @param method        the ray–patch method's name, a lower-case word; which words name a method
+ *                      only the intersection layer knows ({@code intersect.Method.parse} checks
+ *                      it where the name becomes a method, and as a scene file loads)
  * @param bvh           sub-patch BVH on
  * @param shading       {@code phong}, {@code flat}, {@code normals}, {@code uv}, {@code patch-id}, or an analysis
  *                      view: {@code zebra}, {@code emap}, {@code isophotes}, {@code gaussian}, {@code mean}, {@code min-radius},
@@ -28,7 +31,11 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
     /** Most pixels in one image (about 64 Mpixels), so a frame buffer always fits in memory. */
     public static final long MAX_PIXELS = 1L << 26;
     public static final Set<String> SAMPLERS = Set.of("regular", "jittered", "adaptive");
-    public static final Set<String> METHODS = Set.of("clipping", "newton", "subdivision");
+    /**
+     * What a method's name may look like here: one word of letters, digits, _ or -
+     * ({@code intersect.Method} says which).
+     */
+    private static final Pattern WORD = Pattern.compile("[\\p{L}\\p{N}_-]+");
     public static final Set<String> SHADINGS = Set.of("phong", "flat", "normals", "uv", "patch-id", "zebra", "emap", "isophotes",
             "gaussian", "mean", "min-radius", "max-radius", "draft");
 
@@ -51,7 +58,7 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
             throw new IllegalArgumentException("checker squares must be 0..10000, got " + checker);
         }
         sampler = oneOf("sampler", sampler, SAMPLERS);
-        method = oneOf("method", method, METHODS);
+        method = word("method", method);
         shading = oneOf("shading", shading, SHADINGS);
     }
 
@@ -64,6 +71,20 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
         return v;
     }
 
+    /** {@code value} trimmed and in lower case, refused unless it is one {@link #WORD}. */
+    private static String word(String what, String value) {
+        String v = value == null ? "" : value.trim().toLowerCase(Locale.ROOT);
+        if (!WORD.matcher(v).matches()) {
+            throw new IllegalArgumentException(what + " must be a name (one word), got '"
+                    + (value == null ? "" : value) + "'");
+        }
+        return v;
+    }
+
+    /**
+     * What a file that says nothing starts from; its method, {@code clipping}, is
+     * {@code IntersectOptions.defaults()}'s.
+     */
     public static RenderSettings defaults() {
         return new RenderSettings(800, 600, 1, "regular", "clipping", true, "phong", 0, true, 5);
     }

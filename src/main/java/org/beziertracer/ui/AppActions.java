@@ -29,6 +29,7 @@ import org.beziertracer.app.ModelLoader;
 import org.beziertracer.app.SelectionCommands;
 import org.beziertracer.app.SettingsModel;
 import org.beziertracer.app.Toggle;
+import org.beziertracer.intersect.Method;
 
 /**
  * Every command of the app as a Swing {@link Action}, with its name, tooltip (which names the
@@ -226,8 +227,8 @@ public final class AppActions {
                 key(KeyEvent.VK_K, CTRL));
         add("tessellation", "Next Tessellation K", "Cycle K of the tessellated mode (4, 8, 16, 32, 64)",
                 key(KeyEvent.VK_K, CTRL | SHIFT), () -> s.cycle(Level.TESSELLATION));
-        add("method", "Next Intersection Method", "Cycle clipping → Newton → subdivision", key(KeyEvent.VK_M, CTRL),
-                s::cycleMethod);
+        add("method", "Next Intersection Method", "Cycle " + String.join(" → ", Method.labels()),
+                key(KeyEvent.VK_M, CTRL), s::cycleMethod);
         add("light", "Next Light Position", "Cycle the light position (above left of the eye, at the eye, fixed "
                 + "beside the model, the scene's own)", key(KeyEvent.VK_L, CTRL), s::cycleLight);
         toggle("showLight", Toggle.SHOW_LIGHT, "Show Light", "Draw the light as a marker in the view; drag the marker "

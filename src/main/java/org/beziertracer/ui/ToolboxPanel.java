@@ -112,7 +112,7 @@ public final class ToolboxPanel extends JPanel {
     }
 
     private JPanel qualitySection(SettingsModel s) {
-        method.setRenderer(new LabelRenderer<>(Method.class, Method::label));
+        method.setRenderer(new LabelRenderer<>(Method.class, Method::label, Method::description));
         JPanel quality = section("Quality and speed");
         quality.add(check("superSampling"));
         quality.add(labelled("Samples per pixel", combo(spp, "spp", "Samples per pixel when super-sampling")));

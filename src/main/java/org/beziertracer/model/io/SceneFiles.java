@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Optional;
+import java.util.function.Consumer;
 
 /**
  * Opening "whatever the user named" — a built-in ({@link BuiltIns}) or a file in any format of
@@ -49,6 +50,30 @@ public final class SceneFiles {
             throw new ModelFormatException(nameOrPath, "not a valid file name");
         }
         return format.get().read(file);
+    }
+
+    /**
+     * {@link #load(String)}, with the render settings' method checked by {@code methods}: to the
+     * model layer a method is a plain word ({@link org.beziertracer.model.RenderSettings#method()});
+     * which words name one only the layer of the solvers knows ({@code intersect.Method::parse}). A
+     * name it refuses fails the load in the one line any bad value of the file gets, naming the
+     * file and the key: {@code room.json: render.method: unknown method 'x': expected clipping,
+     * newton or subdivision}.
+     *
+     * @param methods throws an {@link IllegalArgumentException} with a one-line message for a name
+     *                it does not know
+     * @throws ModelFormatException one line naming the file (or the name), for any problem
+     */
+    public static SceneDocument load(String nameOrPath, Consumer<String> methods) {
+        SceneDocument doc = load(nameOrPath);
+        try {
+            methods.accept(doc.settings().method());
+        } catch (IllegalArgumentException e) {
+            // Named as the reader names the file (FileFormat.read: the path as given)
+            throw new ModelFormatException(Path.of(nameOrPath).toString(),
+                    "render.method: " + Echo.cutQuoted(e.getMessage()));
+        }
+        return doc;
     }
 
     /**
