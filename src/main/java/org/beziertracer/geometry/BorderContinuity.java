@@ -41,10 +41,16 @@ import org.beziertracer.model.BezierPatch;
  *       {@code τ = S_t·S_t} (do Carmo, <i>Differential Geometry of Curves and Surfaces</i>, §3-2:
  *       {@code κ_n = II(w)/I(w)}, with {@code I(w) = |w|² = τN}). On a segment the bound is the
  *       smaller of the interval difference of the two curvatures (each from the ranges of
- *       {@code Q, N, τ}) and {@code |p² − q²| / (|p + q| · N_A^{3/2} τ_A N_B^{3/2} τ_B)} with
- *       {@code p = Q_A N_B^{3/2} τ_B}, {@code q = Q_B N_A^{3/2} τ_A}, where {@code p² − q²} is a
- *       polynomial (degree 70 for bicubics) whose coefficients vanish to rounding on a G2 border,
- *       so that the bound reaches rounding level there. Polynomial patches only: for a rational
+ *       {@code Q, N, τ}) and of the exact identity
+ *       <pre>
+ *   κ_A − κ_B = (P − ζ V) / (|n_A| N_A² N_B² τ_A τ_B),   U = Q_A N_B² τ_B,  V = Q_B N_A² τ_A,
+ *   P = N_A U − δ V,   ζ = |n_A||n_B| − δ = |n_A × n_B|² / (|n_A||n_B| + δ),   δ = n_A · n_B
+ *       </pre>
+ *       (from {@code N^{3/2} = N²/|n|} and Lagrange's identity), bounded term by term: {@code P}
+ *       and {@code V} are polynomials (degree 50 and 40 for bicubics), {@code P} vanishes on a G2
+ *       border and {@code ζ} with the G1 angle, and nothing is divided by a curvature, so the bound
+ *       falls to rounding level on a G2 border even where the curvature changes sign (the interval
+ *       difference alone converges only linearly there). Polynomial patches only: for a rational
  *       side G2 is the largest of {@value #RATIONAL_G2_SAMPLES}+1 evenly spaced samples and is
  *       reported as not certified.</li>
  * </ul>
@@ -68,8 +74,6 @@ public final class BorderContinuity {
     public static final int RATIONAL_G2_SAMPLES = 1024;
     /** Most segments per measure and border. */
     public static final int MAX_SEGMENTS = 4000;
-    /** Degree above which the squared G2 form is not built (its cost grows with the square). */
-    static final int MAX_SQUARED_DEGREE = 400;
 
     private BorderContinuity() {}
 
@@ -198,19 +202,14 @@ public final class BorderContinuity {
     static Bound curvature(BorderStrip a, BorderStrip b, double floor) {
         BernsteinPoly[] ka = curvatureParts(a), kb = curvatureParts(b);
         BernsteinPoly qa = ka[0], na = ka[1], ta = ka[2], qb = kb[0], nb = kb[1], tb = kb[2];
-        boolean squared = 2 * Math.max(qa.degree(), qb.degree()) + 3 * Math.max(na.degree(), nb.degree())
-                + 2 * Math.max(ta.degree(), tb.degree()) <= MAX_SQUARED_DEGREE;
-        BernsteinPoly sq = BernsteinPoly.constant(Double.NaN);
-        if (squared) {
-            BernsteinPoly p2 = qa.scaledBy(qa).scaledBy(nb.scaledBy(nb).scaledBy(nb)).scaledBy(tb.scaledBy(tb));
-            BernsteinPoly q2 = qb.scaledBy(qb).scaledBy(na.scaledBy(na).scaledBy(na)).scaledBy(ta.scaledBy(ta));
-            sq = p2.minus(q2);
-        }
-        BernsteinPoly[] polys = {qa, na, ta, qb, nb, tb, sq};
+        BernsteinPoly u = qa.scaledBy(nb.scaledBy(nb)).scaledBy(tb), v = qb.scaledBy(na.scaledBy(na)).scaledBy(ta);
+        BernsteinPoly d = ka[3].dot(kb[3]), c = ka[3].cross(kb[3]);
+        BernsteinPoly pg = na.scaledBy(u).minus(d.scaledBy(v));
+        BernsteinPoly[] polys = {qa, na, ta, qb, nb, tb, pg, v, c.dot(c), d};
         return of(CertifiedMax.maximise(CURVATURE, polys, floor, MAX_SEGMENTS), new double[0]);
     }
 
-    /** {@code Q, N, τ} of one side (polynomial patches). */
+    /** {@code Q, N, τ} and the normal {@code n} of one side (polynomial patches). */
     static BernsteinPoly[] curvatureParts(BorderStrip s) {
         BernsteinPoly t = s.xt().coordinates(0, 3), d = s.xs().coordinates(0, 3);
         BernsteinPoly n = t.cross(d);
@@ -220,7 +219,7 @@ public final class BorderContinuity {
         BernsteinPoly q = ltt.scaledBy(td.scaledBy(td))
                 .minus(lts.scaledBy(td.scaledBy(tau)).times(2))
                 .plus(lss.scaledBy(tau.scaledBy(tau)));
-        return new BernsteinPoly[] {q, n.dot(n), tau};
+        return new BernsteinPoly[] {q, n.dot(n), tau, n};
     }
 
     private static final CertifiedMax.Measure CURVATURE = new CertifiedMax.Measure() {
@@ -236,17 +235,15 @@ public final class BorderContinuity {
             double[] ka = quotient(p[0].min(), p[0].max(), daLo, daHi);
             double[] kb = quotient(p[3].min(), p[3].max(), dbLo, dbHi);
             double b1 = Math.max(ka[1] - kb[0], kb[1] - ka[0]);
-            if (Double.isNaN(p[6].endValue(false))) {
-                return b1;
+            // κ_A − κ_B = (P − ζ V) / (|n_A| N_A² N_B² τ_A τ_B), ζ = |n_A||n_B| − δ = |c|² / (|n_A||n_B| + δ)
+            double eLo = Math.sqrt(naLo * nbLo), eHi = Math.sqrt(p[1].max() * p[4].max()), dLo = p[9].min();
+            double zeta = eHi - dLo;
+            if (eLo + dLo > 0) {
+                zeta = Math.min(zeta, Math.max(0, p[8].max()) / (eLo + dLo));
             }
-            // |p − q| = |p² − q²| / |p + q| where p + q keeps one sign
-            double[] pr = product(p[0].min(), p[0].max(), dbLo, dbHi), qr = product(p[3].min(), p[3].max(), daLo, daHi);
-            double sLo = pr[0] + qr[0], sHi = pr[1] + qr[1];
-            if (sLo > 0 || sHi < 0) {
-                double b2 = p[6].maxNorm() / (Math.min(Math.abs(sLo), Math.abs(sHi)) * daLo * dbLo);
-                return Math.min(b1, b2);
-            }
-            return b1;
+            double den = Math.sqrt(naLo) * naLo * naLo * nbLo * nbLo * taLo * tbLo;
+            double b2 = (p[6].maxNorm() + zeta * p[7].maxNorm()) / den;
+            return Math.min(b1, b2);
         }
 
         @Override
@@ -269,11 +266,6 @@ public final class BorderContinuity {
     /** The range of {@code x / y} for {@code x ∈ [xLo, xHi]}, {@code y ∈ [yLo, yHi]}, {@code yLo > 0}. */
     private static double[] quotient(double xLo, double xHi, double yLo, double yHi) {
         return new double[] {Math.min(xLo / yLo, xLo / yHi), Math.max(xHi / yLo, xHi / yHi)};
-    }
-
-    /** The range of {@code x · y} for {@code y ≥ 0}. */
-    private static double[] product(double xLo, double xHi, double yLo, double yHi) {
-        return new double[] {Math.min(xLo * yLo, xLo * yHi), Math.max(xHi * yLo, xHi * yHi)};
     }
 
     /** G2 of a rational border: the largest of evenly spaced samples (not certified). */
