@@ -202,17 +202,26 @@ public final class BernsteinPoly {
      * The two halves on {@code [0, ½]} and {@code [½, 1]}, each reparametrised to {@code [0,1]}
      * (de Casteljau at ½: every intermediate point an exact-halving average).
      */
-    public BernsteinPoly[] halves() {
+    public BernsteinPoly[] halves() { return splitAt(0.5); }
+
+    /** The pieces on {@code [0, t]} and {@code [t, 1]}, each reparametrised to {@code [0,1]} (de Casteljau at t). */
+    public BernsteinPoly[] splitAt(double t) {
         double[] work = coeffs.clone();
         double[] left = new double[work.length], right = new double[work.length];
         for (int r = 0; r <= degree; r++) {
             System.arraycopy(work, 0, left, r * dim, dim);
             System.arraycopy(work, (degree - r) * dim, right, (degree - r) * dim, dim);
             for (int k = 0; k < (degree - r) * dim; k++) {
-                work[k] = 0.5 * (work[k] + work[k + dim]);
+                work[k] = t == 0.5 ? 0.5 * (work[k] + work[k + dim]) : (1 - t) * work[k] + t * work[k + dim];
             }
         }
         return new BernsteinPoly[] {new BernsteinPoly(degree, dim, left), new BernsteinPoly(degree, dim, right)};
+    }
+
+    /** The piece on {@code [a, b]} ({@code 0 ≤ a < b ≤ 1}) reparametrised to {@code [0,1]}. */
+    public BernsteinPoly restricted(double a, double b) {
+        BernsteinPoly p = b < 1 ? splitAt(b)[0] : this;
+        return a > 0 ? p.splitAt(a / b)[1] : p;
     }
 
     /** The value at {@code t} (de Casteljau), {@code dim} doubles. */

@@ -60,9 +60,11 @@ import org.beziertracer.model.BezierPatch;
  * poles), its coefficient there is at most {@link #DEGENERATE_RELATIVE} of its largest (the weld
  * tolerance's scale), and the factor {@code t} (or {@code 1 − t}) is divided out
  * ({@link BernsteinPoly#dividedByT}), as many times as it occurs: G1 is then the angle between the
- * limit normals, and the end is reported in {@link Bound#degenerate}. G2 (and G1 at interior points
- * where a normal vanishes) excludes segments shorter than {@code 2^-24} around such points
- * ({@link CertifiedMax}), which are reported the same way.
+ * limit normals, and the end is reported in {@link Bound#degenerate}. G2 is bounded on the border
+ * less {@link #DEGENERATE_MARGIN} (1/1024 in t) at such an end: there the cross-border curvature
+ * {@code Q / (N^{3/2} τ)} divides quantities that vanish together, and rounding in them, not the
+ * surface, would decide the value. At interior points where a normal vanishes, G1 and G2 exclude
+ * segments shorter than {@code 2^-24} around them ({@link CertifiedMax}), reported the same way.
  *
  * <p>Stateless and thread-safe.
  */
@@ -70,6 +72,8 @@ public final class BorderContinuity {
 
     /** A normal's end coefficient at most this fraction of its largest is a degenerate (zero) normal. */
     public static final double DEGENERATE_RELATIVE = 1e-9;
+    /** G2 is bounded this far in t from an end of the border where a normal vanishes. */
+    public static final double DEGENERATE_MARGIN = 1.0 / 1024;
     /** Samples (plus one) of G2 on a rational border. */
     public static final int RATIONAL_G2_SAMPLES = 1024;
     /** Most segments per measure and border. */
@@ -111,7 +115,17 @@ public final class BorderContinuity {
         double size = scale > 0 ? scale : 1;
         Bound g0 = gap(sa, sb, 1e-14 * size);
         Bound g1 = angle(sa, sb, 1e-14);
-        Bound g2 = sa.rational() || sb.rational() ? sampledCurvature(sa, sb) : curvature(sa, sb, 1e-12 / size);
+        // G2 away from ends where a normal vanishes
+        double t0 = 0, t1 = 1;
+        for (double end : g1.degenerate()) {
+            if (end == 0) {
+                t0 = DEGENERATE_MARGIN;
+            } else if (end == 1) {
+                t1 = 1 - DEGENERATE_MARGIN;
+            }
+        }
+        Bound g2 = sa.rational() || sb.rational() ? sampledCurvature(sa, sb, t0, t1)
+                : curvature(sa, sb, t0, t1, 1e-12 / size);
         return new Report(g0, g1, g2, sa.sign() != sb.sign());
     }
 
@@ -199,14 +213,22 @@ public final class BorderContinuity {
 
     // ---- G2
 
-    static Bound curvature(BorderStrip a, BorderStrip b, double floor) {
+    static Bound curvature(BorderStrip a, BorderStrip b, double t0, double t1, double floor) {
         BernsteinPoly[] ka = curvatureParts(a), kb = curvatureParts(b);
         BernsteinPoly qa = ka[0], na = ka[1], ta = ka[2], qb = kb[0], nb = kb[1], tb = kb[2];
         BernsteinPoly u = qa.scaledBy(nb.scaledBy(nb)).scaledBy(tb), v = qb.scaledBy(na.scaledBy(na)).scaledBy(ta);
         BernsteinPoly d = ka[3].dot(kb[3]), c = ka[3].cross(kb[3]);
         BernsteinPoly pg = na.scaledBy(u).minus(d.scaledBy(v));
         BernsteinPoly[] polys = {qa, na, ta, qb, nb, tb, pg, v, c.dot(c), d};
-        return of(CertifiedMax.maximise(CURVATURE, polys, floor, MAX_SEGMENTS), new double[0]);
+        if (t0 > 0 || t1 < 1) {
+            for (int k = 0; k < polys.length; k++) {
+                polys[k] = polys[k].restricted(t0, t1);
+            }
+        }
+        CertifiedMax.Result r = CertifiedMax.maximise(CURVATURE, polys, floor, MAX_SEGMENTS);
+        double[] excluded = java.util.Arrays.stream(r.degenerate()).map(t -> t0 + (t1 - t0) * t).toArray();
+        double[] ends = t0 > 0 && t1 < 1 ? new double[] {0, 1} : t0 > 0 ? new double[] {0} : t1 < 1 ? new double[] {1} : new double[0];
+        return new Bound(r.bound(), t0 + (t1 - t0) * r.tWorst(), r.worst(), true, r.tight(), union(ends, excluded));
     }
 
     /** {@code Q, N, τ} and the normal {@code n} of one side (polynomial patches). */
@@ -269,17 +291,18 @@ public final class BorderContinuity {
     }
 
     /** G2 of a rational border: the largest of evenly spaced samples (not certified). */
-    static Bound sampledCurvature(BorderStrip a, BorderStrip b) {
+    static Bound sampledCurvature(BorderStrip a, BorderStrip b, double t0, double t1) {
         double worst = Double.NaN, tWorst = 0;
         for (int k = 0; k <= RATIONAL_G2_SAMPLES; k++) {
-            double t = (double) k / RATIONAL_G2_SAMPLES;
+            double t = t0 + (t1 - t0) * k / RATIONAL_G2_SAMPLES;
             double v = Math.abs(normalCurvature(a.euclidean(t)) - normalCurvature(b.euclidean(t)));
             if (!(v <= worst) && !Double.isNaN(v)) {
                 worst = v;
                 tWorst = t;
             }
         }
-        return new Bound(worst, tWorst, worst, false, false, new double[0]);
+        double[] ends = t0 > 0 && t1 < 1 ? new double[] {0, 1} : t0 > 0 ? new double[] {0} : t1 < 1 ? new double[] {1} : new double[0];
+        return new Bound(worst, tWorst, worst, false, false, ends);
     }
 
     /** {@code κ = Q / (N^{3/2} τ)} from Euclidean {@code S, S_t, S_s, S_tt, S_ts, S_ss} (18 doubles). */

@@ -68,6 +68,7 @@ class BernsteinPolyTest {
                 double fd = (p.value(x + step)[0] - p.value(x - step)[0]) / (2 * step);
                 assertEquals(fd, d.value(x)[0], 1e-5 * (1 + Math.abs(fd)), "derivative at " + x);
                 assertEquals(p.value(1 - t)[0], p.reversed().value(t)[0], TOL);
+                assertEquals(p.value(0.2 + 0.5 * t)[1], p.restricted(0.2, 0.7).value(t)[1], TOL, "restricted at " + t);
             }
         }
     }
