@@ -78,7 +78,7 @@ final class AnalyzeCommand implements Callable<Integer> {
         double millis = (System.nanoTime() - start) / 1e6;
         PrintWriter out = spec.commandLine().getOut();
         if (json) {
-            out.println(new GsonBuilder().setPrettyPrinting().create().toJson(json(result)));
+            out.println(new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(json(result)));
         } else {
             table(out, model, scene, result, millis);
         }
