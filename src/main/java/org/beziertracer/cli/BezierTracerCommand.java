@@ -20,7 +20,7 @@ import picocli.CommandLine.Command;
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, versionProvider = BezierTracerCommand.Version.class,
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
                 + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
-        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class})
+        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class, AnalyzeCommand.class})
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
 
     /** {@code --version}: the release, the Java that runs it, and which evaluation kernel runs. */
@@ -83,7 +83,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         } catch (InvalidPathException e) {
             // not a path on this system: reported below
         }
-        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render; "
+        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render, analyze; "
                 + "built-ins: " + String.join(", ", BuiltIns.names()) + ")";
     }
 
