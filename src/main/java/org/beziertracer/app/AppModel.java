@@ -31,6 +31,7 @@ public final class AppModel {
     private final AppThreads threads;
     private final PictureEngine engine;
     private final HoverValue hover;
+    private final ContinuityModel continuity;
     private final UserDialogs dialogs;
     private final AppPreferences prefs;
     private final List<Runnable> listeners = new ArrayList<>();
@@ -76,6 +77,10 @@ public final class AppModel {
             view.repaint();
             notifyListeners();
         }, e -> failed("Difference to clipping failed", e));
+        continuity = new ContinuityModel(threads.difference(), threads.ui(), () -> {
+            view.repaint();
+            notifyListeners();
+        }, e -> failed("Continuity analysis failed", e));
         hover = new HoverValue(threads.difference(), threads.ui(), engine::lastJob, this::notifyListeners);
         editor = new SceneEditor(threads.edits(), threads.ui(), new EditorTarget());
         viewTasks = new BackgroundTasks(threads.edits(), threads.ui());
@@ -106,6 +111,15 @@ public final class AppModel {
 
     /** View → Difference to clipping: the mask for the current picture, kept up to date off the UI thread. */
     public DifferenceModel difference() { return difference; }
+
+    /** View → Continuity: the certified borders of the current model. */
+    public ContinuityModel continuity() { return continuity; }
+
+    /** New continuity tolerances (null: the model's defaults), analysed again at once when shown. */
+    public void continuityTolerances(ContinuityAnalysis.Tolerances t) {
+        continuity.tolerances(t);
+        checkContinuity();
+    }
 
     /** The analysis view's value under the mouse (status bar). */
     public HoverValue hover() { return hover; }
@@ -145,7 +159,7 @@ public final class AppModel {
 
     /** True while anything is pending: an edit, a load or save, an overlay, welds, a render (tests wait on this). */
     public boolean busy() {
-        return engine.busy() || hover.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
+        return engine.busy() || hover.busy() || continuity.busy() || overlay.busy() || editor.busy() || viewTasks.busy() || io.busy() || status.busy()
                 || topology.busy()
                 || difference.busy();
     }
@@ -185,7 +199,17 @@ public final class AppModel {
             engine.submit(RenderRequest.of(document.scene(), view.camera(), view.view().framing(), settings.current(), p));
         }
         compareToClipping(p);
+        checkContinuity();
         view.repaint();
+    }
+
+    /** View → Continuity on: certify the model's borders (off the UI thread; once a model); off: drop them. */
+    private void checkContinuity() {
+        if (settings.current().on(Toggle.CONTINUITY)) {
+            continuity.request(document.scene());
+        } else {
+            continuity.clear();
+        }
     }
 
     /** View → Difference to clipping on: compare the picture's primary rays (off the UI thread); off: drop the mask. */

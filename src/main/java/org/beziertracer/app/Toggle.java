@@ -36,6 +36,11 @@ public enum Toggle {
      * from Bézier clipping's marked over the picture, their count in the status bar ({@link DifferenceModel}).
      */
     DIFFERENCE_TO_CLIPPING(false),
+    /**
+     * View → Continuity: every shared border certified G0/G1/G2 ({@link ContinuityModel}), listed
+     * worst first in a panel and marked on the view (green G2, yellow G1, red G0 only or a gap).
+     */
+    CONTINUITY(false),
     /** The inspector panel: the selected points' patch, indices and coordinates, editable. */
     INSPECTOR(true);
 

@@ -161,6 +161,9 @@ public final class AppActions {
         toggle("differenceToClipping", Toggle.DIFFERENCE_TO_CLIPPING, "Difference to Clipping", "Mark in red the "
                 + "pixels where the selected method's hit differs from Bézier clipping's (another patch, a miss, or "
                 + "a distance more than 1e-6 of the scene size away); the status bar counts them", key(KeyEvent.VK_D, CTRL));
+        toggle("continuity", Toggle.CONTINUITY, "Continuity", "Certify every shared border G0, G1 or G2 (proved bounds "
+                + "over the whole border), list them worst first and mark them on the view: green G2, yellow G1, red G0",
+                key(KeyEvent.VK_G, CTRL | SHIFT));
         toggle("inspector", Toggle.INSPECTOR, "Inspector", "Show the panel with the selected points' patch, indices "
                 + "and coordinates (type a value and press Enter to move them)", key(KeyEvent.VK_I, CTRL));
         add("gridV", "More Points along v", "Grid of a new patch: one more control point along v (2..10, wraps)",

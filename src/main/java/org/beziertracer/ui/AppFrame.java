@@ -31,6 +31,7 @@ public final class AppFrame extends JFrame {
     private final ToolboxPanel toolbox;
     private final StatusBar statusBar;
     private final InspectorPanel inspector;
+    private final ContinuityPanel continuity;
 
     /**
      * @param newApp makes the app with the dialogs this window shows
@@ -54,7 +55,15 @@ public final class AppFrame extends JFrame {
         getContentPane().add(side, BorderLayout.WEST);
         getContentPane().add(renderPanel, BorderLayout.CENTER);
         getContentPane().add(statusBar, BorderLayout.SOUTH);
-        getContentPane().add(inspector, BorderLayout.EAST);
+        continuity = new ContinuityPanel(app);
+        // the inspector above at its own height, View → Continuity's panel below it taking the rest (its
+        // table scrolls); a hidden one takes no room
+        javax.swing.JPanel east = new javax.swing.JPanel();
+        east.setLayout(new javax.swing.BoxLayout(east, javax.swing.BoxLayout.Y_AXIS));
+        inspector.setMaximumSize(new java.awt.Dimension(Integer.MAX_VALUE, inspector.getPreferredSize().height));
+        east.add(inspector);
+        east.add(continuity);
+        getContentPane().add(east, BorderLayout.EAST);
         setTransferHandler(new FileDrop(app.files()));
         bindExtraKeys();
         app.addListener(() -> setTitle(app.document().title()));
@@ -116,4 +125,6 @@ public final class AppFrame extends JFrame {
     public StatusBar statusBar() { return statusBar; }
 
     InspectorPanel inspector() { return inspector; }
+
+    ContinuityPanel continuity() { return continuity; }
 }

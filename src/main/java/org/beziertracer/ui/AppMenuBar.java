@@ -35,7 +35,7 @@ public final class AppMenuBar extends JMenuBar {
         for (String name : ModelLoader.BUILT_INS) {
             models.add(item("model:" + name));
         }
-        JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", "differenceToClipping", null, "finer", "coarser", null,
+        JMenu view = menu("View", 'V', "rayTrace", "polygon", "points", "wireframe", "differenceToClipping", "continuity", null, "finer", "coarser", null,
                 "resetView", "zoomIn", "zoomOut", "morePerspective", "lessPerspective", null, "inspector", "dark");
         JMenu analysis = new JMenu("Analysis");
         analysis.setName("menu.analysis");

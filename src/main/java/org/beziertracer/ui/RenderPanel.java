@@ -141,6 +141,9 @@ public final class RenderPanel extends JComponent {
             }
             PicturePainter.paint(g2, image, differences.of(app, picture), app.overlay().snapshot(), w, h,
                     t.getScaleX());
+            if (app.settings().current().on(Toggle.CONTINUITY)) {
+                ContinuityMarks.paint(g2, app.continuity().current(), app.view().projector(), t.getScaleX());
+            }
             paintCount++;
         } finally {
             g2.dispose();

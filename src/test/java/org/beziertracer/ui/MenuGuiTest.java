@@ -80,6 +80,44 @@ class MenuGuiTest extends GuiSession {
     }
 
     @Test
+    @Order(9)
+    void viewContinuityListsTheTeapotsBordersWorstFirstAndMarksThemOnTheView() {
+        d.menu("Models", "model:teapot");
+        d.settle();
+        BufferedImage before = d.capturePanel();
+        d.menu("View", "continuity");
+        d.settle();
+        ContinuityPanel panel = GuiDriver.onEdt(() -> d.frame.continuity());
+        d.waitFor("the borders certified", () -> panel.summary().endsWith(" open"));
+        assertEquals("52 borders: 32 G2, 16 G1, 4 G0, 0 open", GuiDriver.onEdt(panel::summary));
+        assertEquals(52, (int) GuiDriver.onEdt(panel::rowCount));
+        BufferedImage marked = d.capturePanel();
+        GuiDriver.save(d.capture(d.frame.getContentPane()), "continuity-teapot");
+        int green = 0;
+        for (int y = 0; y < marked.getHeight(); y++) {
+            for (int x = 0; x < marked.getWidth(); x++) {
+                int c = marked.getRGB(x, y), r = c >> 16 & 0xFF, g = c >> 8 & 0xFF, b = c & 0xFF;
+                if (g > 150 && r < 110 && b < 130 && (before.getRGB(x, y) & 0xFFFFFF) != (c & 0xFFFFFF)) {
+                    green++;
+                }
+            }
+        }
+        assertTrue(green > 100, "the G2 borders are marked green on the view: " + green + " pixels");
+        // a looser G1 tolerance than the lid's 116.6° crease: no border is G0 only any more
+        javax.swing.JSpinner g1 = (javax.swing.JSpinner) GuiDriver.find(d.frame, "continuity.g1");
+        GuiDriver.onEdt(() -> {
+            g1.setValue(120.0);
+            return null;
+        });
+        d.click(GuiDriver.find(d.frame, "continuity.apply"));
+        d.waitFor("the new classes", () -> panel.summary().contains(" 0 G0"));
+        assertEquals("52 borders: 32 G2, 20 G1, 0 G0, 0 open", GuiDriver.onEdt(panel::summary));
+        d.menu("View", "continuity");
+        d.settle();
+        assertTrue(!GuiDriver.onEdt(panel::isVisible), "the panel goes with the toggle");
+    }
+
+    @Test
     @Order(8)
     void viewAnalysisShowsACurvatureViewWithItsScaleInTheStatusBar() {
         d.menu("Models", "model:teapot");
@@ -87,6 +125,7 @@ class MenuGuiTest extends GuiSession {
         BufferedImage shaded = d.capturePanel();
         d.menuPath("View", "analysis", "analysis:gaussian");
         d.settle();
+        GuiDriver.save(d.capture(d.frame.getContentPane()), "analysis-gaussian");
         String scale = d.status("legend");
         assertTrue(scale.startsWith("gaussian ") && scale.contains(" … "), "the scale is shown: " + scale);
         BufferedImage analysed = d.capturePanel();
