@@ -90,18 +90,48 @@ public final class ContinuityAnalysis {
 
     /** Analyses every border of {@code scene}. */
     public static Result analyze(Scene scene, Tolerances tol) {
+        return analyze(scene, tol, (done, total) -> { });
+    }
+
+    /** Borders done and in all, as an analysis goes (from any of its threads). */
+    @FunctionalInterface
+    public interface Progress {
+        void progress(long done, long total);
+    }
+
+    /** Models with at least this many borders are analysed in parallel (the borders are independent). */
+    static final int PARALLEL_BORDERS = 64;
+
+    /**
+     * As {@link #analyze(Scene, Tolerances)}, telling {@code progress} every
+     * {@value #PROGRESS_STEP} borders and at the end; the borders of a big model are bounded in
+     * parallel, the rows the same on any number of threads (sorted worst first).
+     */
+    public static Result analyze(Scene scene, Tolerances tol, Progress progress) {
         WeldIndex welds = WeldIndex.build(scene);
         double size = size(scene);
-        List<Row> rows = new ArrayList<>();
         SharedBorders.Found found = SharedBorders.find(scene, welds);
-        for (SharedBorders.Border b : found.borders()) {
+        List<SharedBorders.Border> borders = found.borders();
+        int n = borders.size();
+        java.util.concurrent.atomic.AtomicLong done = new java.util.concurrent.atomic.AtomicLong();
+        java.util.stream.IntStream all = java.util.stream.IntStream.range(0, n);
+        List<Row> rows = new ArrayList<>((n >= PARALLEL_BORDERS ? all.parallel() : all).mapToObj(k -> {
+            SharedBorders.Border b = borders.get(k);
             BorderContinuity.Report r = BorderContinuity.analyze(scene.patches().get(b.a()), b.sideA(),
                     scene.patches().get(b.b()), b.sideB(), b.reversed(), size);
-            rows.add(new Row(b, r, classify(r, tol)));
-        }
+            long d = done.incrementAndGet();
+            if (d % PROGRESS_STEP == 0) {
+                progress.progress(d, n);
+            }
+            return new Row(b, r, classify(r, tol));
+        }).toList());
+        progress.progress(n, n);
         rows.sort(WORST_FIRST);
         return new Result(List.copyOf(rows), tol, size, found.arcPairs());
     }
+
+    /** Borders between two progress reports. */
+    static final int PROGRESS_STEP = 256;
 
     /** The class of a border by the tolerances; a measure that could not be bounded (NaN) fails. */
     static Continuity classify(BorderContinuity.Report r, Tolerances tol) {

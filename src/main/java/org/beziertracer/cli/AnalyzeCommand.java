@@ -64,6 +64,12 @@ final class AnalyzeCommand implements Callable<Integer> {
             + "(default: " + Tolerances.G2_RELATIVE + " / model size)")
     Double g2;
 
+    @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
+    boolean quiet;
+
+    /** Columns of the terminal on standard error, 0 when it is not a terminal; tests replace it. */
+    java.util.function.IntSupplier stderrColumns = StandardError::terminalColumns;
+
     @Spec
     CommandSpec spec;
 
@@ -74,7 +80,16 @@ final class AnalyzeCommand implements Callable<Integer> {
         Tolerances tol = new Tolerances(check("--g0", g0, d.g0()), check("--g1", g1, d.g1Degrees()),
                 check("--g2", g2, d.g2()));
         long start = System.nanoTime();
-        ContinuityAnalysis.Result result = ContinuityAnalysis.analyze(scene, tol);
+        ContinuityAnalysis.Result result;
+        int columns = quiet ? 0 : stderrColumns.getAsInt();
+        if (columns == 0) {
+            result = ContinuityAnalysis.analyze(scene, tol);
+        } else {
+            try (ProgressBarDisplay bar = new ProgressBarDisplay(spec.commandLine().getErr(), columns, 1, "analyze",
+                    " borders", 1)) {
+                result = ContinuityAnalysis.analyze(scene, tol, (done, total) -> bar.progress(0, done, total));
+            }
+        }
         double millis = (System.nanoTime() - start) / 1e6;
         PrintWriter out = spec.commandLine().getOut();
         if (json) {

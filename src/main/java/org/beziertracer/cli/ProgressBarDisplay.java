@@ -27,10 +27,15 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
 
     /** A bar drawn on {@code err}, at most {@code columns} wide, for {@code frameCount} frames. */
     ProgressBarDisplay(PrintWriter err, int columns, int frameCount) {
+        this(err, columns, frameCount, "render", " k samples", 1000);
+    }
+
+    /** A bar for another task ({@code analyze}: borders), counted in {@code unit}s of {@code unitSize}. */
+    ProgressBarDisplay(PrintWriter err, int columns, int frameCount, String task, String unit, long unitSize) {
         this.frameCount = frameCount;
-        this.bar = new ProgressBarBuilder().setTaskName("render").setInitialMax(0)
+        this.bar = new ProgressBarBuilder().setTaskName(task).setInitialMax(0)
                 .setStyle(ProgressBarStyle.ASCII).setUpdateIntervalMillis(REFRESH_MILLIS)
-                .setUnit(" k samples", 1000)
+                .setUnit(unit, unitSize)
                 .setConsumer(line = new LineConsumer(err, columns)).build();
     }
 

@@ -136,4 +136,18 @@ class AnalyzeCommandTest {
         String line = UserMessages.checkOneLineOutput(r.err());
         assertTrue(line.startsWith("beziertracer analyze: --g2 must be"), line);
     }
+
+    @Test
+    void aTerminalShowsTheBordersDoneAndQuietOrAPipeShowsNothing() {
+        Run bar = Run.with(cl -> ((AnalyzeCommand) cl.getSubcommands().get("analyze").getCommand()).stderrColumns = () -> 80,
+                "analyze", "teapot");
+        assertEquals(0, bar.code(), bar.err());
+        String[] lines = bar.err().strip().split("\r");
+        String last = lines[lines.length - 1].strip();
+        assertTrue(last.startsWith("analyze 100%") && last.contains("52/52 borders"), last);
+        Run quiet = Run.with(cl -> ((AnalyzeCommand) cl.getSubcommands().get("analyze").getCommand()).stderrColumns = () -> 80,
+                "analyze", "teapot", "--quiet");
+        assertEquals("", quiet.err());
+        assertEquals("", Run.of("analyze", "teapot").err(), "standard error is a pipe in tests: no bar");
+    }
 }
