@@ -19,10 +19,7 @@ class ModelLoaderTest {
     Path dir;
 
     private Path room(String method) throws IOException {
-        Path p = dir.resolve("room.json");
-        Files.writeString(p, "{\"version\": 1, \"spheres\": [{\"center\": [0, 0, 0], \"radius\": 1}],"
-                + " \"render\": {\"method\": \"" + method + "\"}}");
-        return p;
+        return org.beziertracer.model.io.TestRooms.withMethod(dir, method, false);
     }
 
     @Test

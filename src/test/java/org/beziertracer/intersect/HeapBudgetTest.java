@@ -163,7 +163,7 @@ class HeapBudgetTest {
     }
 
     /** A degree-n×n height field with some waves, on the unit square. */
-    private static double[] wavyNet(int n) {
+    static double[] wavyNet(int n) {
         double[] net = new double[3 * (n + 1) * (n + 1)];
         for (int j = 0, p = 0; j <= n; j++) {
             for (int i = 0; i <= n; i++, p += 3) {

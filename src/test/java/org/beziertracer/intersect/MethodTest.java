@@ -69,7 +69,7 @@ class MethodTest {
     @Test
     void theBudgetTakesEachMethodsLeafBytesFromItsConstant() {
         SplitOptions split = SplitOptions.defaults();
-        Scene wavy = new Scene(List.of(new BezierPatch(5, 5, wavyNet(5))));
+        Scene wavy = new Scene(List.of(new BezierPatch(5, 5, HeapBudgetTest.wavyNet(5))));
         for (Scene scene : List.of(Models.teapot(), wavy)) {
             List<BezierPatch> patches = scene.patches();
             SubPatchTable.Estimate table = SubPatchTable.estimate(patches, split);
@@ -90,7 +90,7 @@ class MethodTest {
     @Test
     void eachConstantsEstimateIsItsLeavesClasss() {
         List<BezierPatch> bicubic = Models.teapot().patches();
-        List<BezierPatch> quintic = List.of(new BezierPatch(5, 5, wavyNet(5)));
+        List<BezierPatch> quintic = List.of(new BezierPatch(5, 5, HeapBudgetTest.wavyNet(5)));
         long leaves = 1000;
         for (List<BezierPatch> patches : List.of(bicubic, quintic)) {
             assertEquals(ClippingLeaves.estimateBytes(patches, leaves), Method.CLIPPING.solverBytes(patches, leaves));
@@ -105,16 +105,4 @@ class MethodTest {
         assertEquals(0, Method.CLIPPING.solverBytes(bicubic, ClippingLeaves.RECORD_LEAVES + 1L), "no records above the cap");
     }
 
-    /** A degree-n×n height field with some waves, on the unit square. */
-    private static double[] wavyNet(int n) {
-        double[] net = new double[3 * (n + 1) * (n + 1)];
-        for (int j = 0, p = 0; j <= n; j++) {
-            for (int i = 0; i <= n; i++, p += 3) {
-                net[p] = (double) i / n;
-                net[p + 1] = (double) j / n;
-                net[p + 2] = 0.2 * Math.sin(7.0 * i / n) * Math.cos(5.0 * j / n);
-            }
-        }
-        return net;
-    }
 }

@@ -24,10 +24,7 @@ class SceneFilesMethodTest {
     Path dir;
 
     private Path room(String method) throws IOException {
-        Path p = dir.resolve("room.json");
-        Files.writeString(p, "{\"version\": 1, \"spheres\": [{\"center\": [0, 0, 0], \"radius\": 1}],"
-                + " \"render\": {\"method\": \"" + method + "\"}}");
-        return p;
+        return org.beziertracer.model.io.TestRooms.withMethod(dir, method, false);
     }
 
     /** Knows {@code alpha} and {@code beta} only. */
