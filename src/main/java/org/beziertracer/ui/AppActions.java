@@ -129,7 +129,7 @@ public final class AppActions {
         toggle("curvatureJoins", Toggle.CURVATURE_JOINS, "Keep Curvature Continuity", "Also keeps the surface "
                 + "curvature-continuous (G2) where it is: the second row of control points across a border follows so "
                 + "each cross-border row stays C2. Needs degree 3 or more on both sides of a border (bicubic and up); "
-                + "implies Keep Tangent Continuity", key(KeyEvent.VK_G, CTRL | SHIFT));
+                + "implies Keep Tangent Continuity", key(KeyEvent.VK_G, CTRL | ALT));
     }
 
     private void addEditActions(EditCommands e) {
