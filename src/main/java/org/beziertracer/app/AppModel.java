@@ -73,6 +73,7 @@ public final class AppModel {
         overlay.onBuilt(this::selectionBuilt);
         topology = new TopologyModel(threads.topology(), threads.ui(), e -> threads.ui().execute(() ->
                 status.message("welded points not found: " + Failures.describe(e))));
+        topology.onDelivered(this::topologyLanded);
         difference = new DifferenceModel(threads.difference(), threads.ui(), () -> {
             view.repaint();
             notifyListeners();
@@ -190,7 +191,25 @@ public final class AppModel {
         dialogs.error(title, Failures.describe(e));
     }
 
-    private boolean smooth() { return settings.current().on(Toggle.SMOOTH_JOINS); }
+    /** Whether the joins are needed: "Keep tangent continuity" or "Keep curvature continuity" (which implies it) is on. */
+    private boolean smooth() {
+        return settings.current().on(Toggle.SMOOTH_JOINS) || settings.current().on(Toggle.CURVATURE_JOINS);
+    }
+
+    /** True from turning "Keep curvature continuity" on (or opening a model with it on) until the joins land. */
+    private boolean curvatureToReport;
+
+    /** A topology landed: with curvature kept, says once (one line) how many borders are too short for it. */
+    private void topologyLanded(Topology t) {
+        if (curvatureToReport && t.joins() != null && settings.current().on(Toggle.CURVATURE_JOINS)) {
+            curvatureToReport = false;
+            int n = t.joins().shortBorderCount();
+            if (n > 0) {
+                status.message("curvature continuity not kept across " + n + (n == 1 ? " border" : " borders")
+                        + ": degree below " + SmoothJoins.CURVATURE_DEGREE + " across");
+            }
+        }
+    }
 
     /** Starts a progressive render of the current state (coalesced; never renders here). */
     void render() {
@@ -281,9 +300,14 @@ public final class AppModel {
         }
         requestOverlay(false);
         render();
+        boolean curvature = settings.current().on(Toggle.CURVATURE_JOINS);
+        curvatureToReport |= curvature && !curvatureWasOn;
+        curvatureWasOn = curvature;
         topology.request(document.scene(), smooth());
         notifyListeners();
     }
+
+    private boolean curvatureWasOn;
 
     /** The scene changed by an edit, an undo or a redo. */
     private void sceneChanged() {
@@ -362,6 +386,7 @@ public final class AppModel {
             overlay.hover(null);
             requestOverlay(true);
             render();
+            curvatureToReport = settings.current().on(Toggle.CURVATURE_JOINS);
             topology.request(scene, smooth());
             if (l.source() != null) {
                 prefs.addRecent(l.source());

@@ -159,7 +159,7 @@ public final class PointerTool {
         private final Vec3 start;
         private final double grabDx, grabDy;
         private final Topology topology;
-        private final boolean smooth;
+        private final boolean smooth, curvature;
         private final Selection ifClicked;
         private double mouseX, mouseY;
         private Supplier<Scene> lastStep;
@@ -177,6 +177,7 @@ public final class PointerTool {
             grabDy = y - at[1];
             topology = app.topology();
             smooth = app.settings().current().on(Toggle.SMOOTH_JOINS);
+            curvature = app.settings().current().on(Toggle.CURVATURE_JOINS);
             mouseX = x;
             mouseY = y;
         }
@@ -194,7 +195,7 @@ public final class PointerTool {
             Vec3 target = axis == null ? projector.onScreenPlane(px, py, start)
                     : projector.onLine(px, py, start, new Vec3(axis.component(0), axis.component(1), axis.component(2)));
             double[] d = {target.x() - start.x(), target.y() - start.y(), target.z() - start.z()};
-            Supplier<Scene> step = () -> SelectionMove.apply(base, selection, d, topology, smooth);
+            Supplier<Scene> step = () -> SelectionMove.apply(base, selection, d, topology, smooth, curvature);
             lastStep = step;
             app.editor().preview(epoch, step, () -> {});
         }

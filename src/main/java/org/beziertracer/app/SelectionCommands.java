@@ -83,7 +83,8 @@ public final class SelectionCommands {
     void move(String name, Selection selection, double[] d) {
         Topology topology = app.topology();
         boolean smooth = app.settings().current().on(Toggle.SMOOTH_JOINS);
-        app.editor().apply(name, base -> new SceneEditor.Outcome(SelectionMove.apply(base, selection, d, topology, smooth),
-                null));
+        boolean curvature = app.settings().current().on(Toggle.CURVATURE_JOINS);
+        app.editor().apply(name, base -> new SceneEditor.Outcome(
+                SelectionMove.apply(base, selection, d, topology, smooth, curvature), null));
     }
 }

@@ -18,6 +18,15 @@ import org.beziertracer.model.Scene;
  * ({@link SmoothMove}) keeps it so. Found off the UI thread in O(points) from a
  * {@link WeldIndex}; whether a join holds is decided from the positions of the scene being edited.
  *
+ * <p>Where both patches have degree at least {@link #CURVATURE_DEGREE} across the border, a join also
+ * has its <i>second rows</i>: {@code A2} beside {@code A} and {@code C2} beside {@code C}, one more
+ * row inward, making the five-point row {@code (A2, A, B, C, C2)} on which "Keep curvature
+ * continuity" ({@link CurvatureJoins}) keeps the C2 condition. At degree 2 the second row would be
+ * the opposite border of the patch (moving it would drag that border and its welded neighbours),
+ * so such borders are counted ({@link #shortBorderCount}) and their joins keep tangent continuity
+ * only. At degree 3 a second row is the first row of the opposite border, so keeping both borders
+ * of a patch couples them; {@link SmoothMove} spreads the change along such chains.
+ *
  * <p>Points are the welded <i>nodes</i> of the index, each named by the lowest global number of its
  * copies. Immutable and thread-safe.
  */
@@ -26,23 +35,44 @@ final class SmoothJoins {
     /** Joins whose rows bend by less than this angle (its sine) count as tangent-continuous. */
     static final double COLLINEAR = 1e-6;
 
-    /** No joins (a single patch, or patches that share no border). */
-    static final SmoothJoins NONE = new SmoothJoins(new int[0], new int[1], new int[0]);
+    /** The least degree across a border, on both sides, for which joins get their second rows. */
+    static final int CURVATURE_DEGREE = 3;
 
-    /** {@code joins[3t..3t+2]} = nodes A, B, C of join {@code t}. */
+    /** No joins (a single patch, or patches that share no border). */
+    static final SmoothJoins NONE = new SmoothJoins(new int[0], new int[0], new int[1], new int[0], 0);
+
+    /**
+     * {@code joins[5t..5t+4]} = nodes A2, A, B, C, C2 of join {@code t}; A2 and C2 are −1 where the
+     * join has no second rows.
+     */
     private final int[] joins;
+    /** {@code degrees[2t]}, {@code degrees[2t+1]}: the degrees across the border on A's and C's side. */
+    private final int[] degrees;
     /** Joins of node {@code g}: {@code byNode[first[g]..first[g+1]-1]} (CSR over global numbers). */
     private final int[] first;
     private final int[] byNode;
+    private final int shortBorders;
 
-    private SmoothJoins(int[] joins, int[] first, int[] byNode) {
+    private SmoothJoins(int[] joins, int[] degrees, int[] first, int[] byNode, int shortBorders) {
         this.joins = joins;
+        this.degrees = degrees;
         this.first = first;
         this.byNode = byNode;
+        this.shortBorders = shortBorders;
     }
 
-    /** One edge of one patch: the border points and, beside each, its neighbour one row inward. */
-    private record Edge(int[] border, int[] inner) {}
+    /**
+     * One edge of one patch: the border points, beside each its neighbour one row inward and two
+     * rows inward ({@code inner2}, null below {@link #CURVATURE_DEGREE}), and the patch's degree
+     * across the edge.
+     */
+    private record Edge(int[] border, int[] inner, int[] inner2, int degree) {}
+
+    /** The joins found so far and the borders whose rows were too short for second rows. */
+    private static final class Found {
+        final List<int[]> rows = new ArrayList<>();
+        int shortBorders;
+    }
 
     /** Finds the joins of {@code scene}, whose coincident points {@code welds} found. */
     static SmoothJoins find(Scene scene, WeldIndex welds) {
@@ -56,7 +86,7 @@ final class SmoothJoins {
                 byEnds.computeIfAbsent(key, k -> new ArrayList<>()).add(e);
             }
         }
-        List<int[]> found = new ArrayList<>();
+        Found found = new Found();
         for (List<Edge> group : byEnds.values()) {
             for (int x = 0; x < group.size(); x++) {
                 for (int y = x + 1; y < group.size(); y++) {
@@ -89,19 +119,31 @@ final class SmoothJoins {
         List<Edge> out = new ArrayList<>(4);
         for (int side = 0; side < 4; side++) {
             boolean alongV = side < 2; // u = 0 or u = n: the edge runs along v
-            int len = alongV ? m + 1 : n + 1;
+            int len = alongV ? m + 1 : n + 1, across = alongV ? n : m;
             int[] border = new int[len], inner = new int[len];
+            int[] inner2 = across >= CURVATURE_DEGREE ? new int[len] : null;
             for (int k = 0; k < len; k++) {
-                int i = alongV ? (side == 0 ? 0 : n) : k, j = alongV ? k : (side == 2 ? 0 : m);
-                int ii = alongV ? (side == 0 ? 1 : n - 1) : k, jj = alongV ? k : (side == 2 ? 1 : m - 1);
-                border[k] = node[start + j * (n + 1) + i];
-                inner[k] = node[start + jj * (n + 1) + ii];
+                border[k] = node[start + at(side, k, 0, n, m)];
+                inner[k] = node[start + at(side, k, 1, n, m)];
+                if (inner2 != null) {
+                    inner2[k] = node[start + at(side, k, 2, n, m)];
+                }
             }
             if (distinct(border)) {
-                out.add(new Edge(border, inner));
+                out.add(new Edge(border, inner, inner2, across));
             }
         }
         return out;
+    }
+
+    /**
+     * Index in a net of {@code (n+1) × (m+1)} points of point {@code k} along edge {@code side}
+     * (0: u = 0, 1: u = n, 2: v = 0, 3: v = m), {@code row} rows inward from it.
+     */
+    private static int at(int side, int k, int row, int n, int m) {
+        boolean alongV = side < 2;
+        int i = alongV ? (side == 0 ? row : n - row) : k, j = alongV ? k : (side == 2 ? row : m - row);
+        return j * (n + 1) + i;
     }
 
     private static boolean distinct(int[] seq) {
@@ -114,7 +156,7 @@ final class SmoothJoins {
     }
 
     /** The joins across two edges, when they are one border (the same nodes, in order or reversed). */
-    private static void pair(Edge e, Edge f, List<int[]> out) {
+    private static void pair(Edge e, Edge f, Found out) {
         int len = e.border().length;
         if (f.border().length != len) {
             return;
@@ -127,41 +169,83 @@ final class SmoothJoins {
         if (!forward && !backward) {
             return;
         }
+        int before = out.rows.size();
+        boolean second = e.inner2() != null && f.inner2() != null;
         for (int k = 0; k < len; k++) {
-            int a = e.inner()[k], b = e.border()[k], c = f.inner()[forward ? k : len - 1 - k];
+            int kf = forward ? k : len - 1 - k;
+            int a = e.inner()[k], b = e.border()[k], c = f.inner()[kf];
             if (a != b && c != b && a != c) {
-                out.add(new int[] {a, b, c});
+                int a2 = second ? e.inner2()[k] : -1, c2 = second ? f.inner2()[kf] : -1;
+                if (!allDifferent(a2, a, b, c, c2)) {
+                    a2 = c2 = -1;
+                }
+                out.rows.add(new int[] {a2, a, b, c, c2, e.degree(), f.degree()});
             }
+        }
+        if (!second && out.rows.size() > before) {
+            out.shortBorders++;
         }
     }
 
-    private static SmoothJoins index(List<int[]> found, int n) {
-        int[] joins = new int[3 * found.size()];
+    private static boolean allDifferent(int... nodes) {
+        for (int x = 0; x < nodes.length; x++) {
+            for (int y = x + 1; y < nodes.length; y++) {
+                if (nodes[x] == nodes[y]) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static SmoothJoins index(Found found, int n) {
+        List<int[]> rows = found.rows;
+        int[] joins = new int[5 * rows.size()], degrees = new int[2 * rows.size()];
         int[] first = new int[n + 1];
-        for (int t = 0; t < found.size(); t++) {
-            System.arraycopy(found.get(t), 0, joins, 3 * t, 3);
-            for (int r = 0; r < 3; r++) {
-                first[found.get(t)[r] + 1]++;
+        for (int t = 0; t < rows.size(); t++) {
+            System.arraycopy(rows.get(t), 0, joins, 5 * t, 5);
+            System.arraycopy(rows.get(t), 5, degrees, 2 * t, 2);
+            for (int r = 0; r < 5; r++) {
+                if (joins[5 * t + r] >= 0) {
+                    first[joins[5 * t + r] + 1]++;
+                }
             }
         }
         for (int g = 0; g < n; g++) {
             first[g + 1] += first[g];
         }
         int[] fill = Arrays.copyOf(first, n);
-        int[] byNode = new int[joins.length];
-        for (int t = 0; t < found.size(); t++) {
-            for (int r = 0; r < 3; r++) {
-                byNode[fill[joins[3 * t + r]]++] = t;
+        int[] byNode = new int[first[n]];
+        for (int t = 0; t < rows.size(); t++) {
+            for (int r = 0; r < 5; r++) {
+                if (joins[5 * t + r] >= 0) {
+                    byNode[fill[joins[5 * t + r]]++] = t;
+                }
             }
         }
-        return new SmoothJoins(joins, first, byNode);
+        return new SmoothJoins(joins, degrees, first, byNode, found.shortBorders);
     }
 
     /** Number of joins. */
-    int count() { return joins.length / 3; }
+    int count() { return joins.length / 5; }
 
     /** Node {@code role} (0 = A, 1 = B, 2 = C) of join {@code t}. */
-    int node(int t, int role) { return joins[3 * t + role]; }
+    int node(int t, int role) { return joins[5 * t + 1 + role]; }
+
+    /** Second-row node of join {@code t} on {@code side} (0: A2 beside A, 1: C2 beside C), or −1 when it has none. */
+    int outer(int t, int side) { return joins[5 * t + (side == 0 ? 0 : 4)]; }
+
+    /** True when join {@code t} has its second rows (degree at least {@link #CURVATURE_DEGREE} on both sides). */
+    boolean hasOuter(int t) { return joins[5 * t] >= 0; }
+
+    /** The degree across the border of the patch on {@code side} of join {@code t} (0: A's, 1: C's). */
+    int degree(int t, int side) { return degrees[2 * t + side]; }
+
+    /**
+     * Shared borders whose joins have no second rows because a patch has degree below
+     * {@link #CURVATURE_DEGREE} across them: where curvature continuity cannot be kept.
+     */
+    int shortBorderCount() { return shortBorders; }
 
     /** The joins node {@code g} takes part in (a fresh array). */
     int[] joinsOf(int g) {

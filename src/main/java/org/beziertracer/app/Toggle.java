@@ -29,6 +29,11 @@ public enum Toggle {
     TESSELLATED(false),
     /** "Keep tangent continuity": moving a point keeps the cross-border rows straight ({@link SmoothMove}). */
     SMOOTH_JOINS(false),
+    /**
+     * "Keep curvature continuity": moving a point keeps the cross-border rows C2 where they are, on
+     * borders of degree 3 and more on both sides ({@link CurvatureJoins}); implies {@link #SMOOTH_JOINS}.
+     */
+    CURVATURE_JOINS(false),
     /** The light drawn as a marker in the view, where it can be dragged ({@link LightRig}). */
     SHOW_LIGHT(false),
     /**

@@ -7,7 +7,8 @@ import org.beziertracer.model.Scene;
 
 /**
  * How a model's control points hang together: which coincide ({@link WeldIndex}) and, when
- * "Keep tangent continuity" asks for them, the cross-border rows ({@link SmoothJoins}). Built off
+ * "Keep tangent continuity" or "Keep curvature continuity" asks for them, the cross-border rows
+ * ({@link SmoothJoins}). Built off
  * the UI thread for one scene; still usable, with care, for later scenes of the same model (its
  * parts check their answers against the scene they are asked about). Immutable.
  *

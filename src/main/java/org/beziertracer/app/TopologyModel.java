@@ -9,7 +9,7 @@ import org.beziertracer.model.Scene;
 /**
  * The {@link Topology} of the open model, kept up to date off the UI thread: after every change
  * that lands (an open, an edit, an undo) the welds — and the joins while "Keep tangent
- * continuity" is on — are found again on a worker (newest only, {@link Coalescing}) and handed
+ * continuity" or "Keep curvature continuity" is on — are found again on a worker (newest only, {@link Coalescing}) and handed
  * back to the UI thread. Until then the previous topology serves, which is safe ({@link Topology}).
  * UI thread only, except where noted.
  */
@@ -22,6 +22,7 @@ final class TopologyModel {
     private final AtomicInteger delivering = new AtomicInteger();
     private Topology current = Topology.NONE;
     private Request last;
+    private Consumer<Topology> delivered = t -> {};
 
     TopologyModel(Executor worker, Executor ui, Consumer<Throwable> failed) {
         this.ui = ui;
@@ -34,8 +35,12 @@ final class TopologyModel {
         ui.execute(() -> {
             delivering.decrementAndGet();
             current = t;
+            delivered.accept(t);
         });
     }
+
+    /** {@code l} hears of every topology that lands, on the UI thread, after it became {@link #current}. */
+    void onDelivered(Consumer<Topology> l) { delivered = l; }
 
     /** Finds the topology of {@code scene} (with joins when {@code joins}), unless it is already known or on its way. */
     void request(Scene scene, boolean joins) {

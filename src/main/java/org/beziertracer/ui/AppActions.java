@@ -126,6 +126,10 @@ public final class AppActions {
         toggle("smoothJoins", Toggle.SMOOTH_JOINS, "Keep Tangent Continuity", "When a border point or its inner "
                 + "neighbour moves, the neighbour across the border follows, so the surface stays smooth where it was",
                 key(KeyEvent.VK_G, CTRL));
+        toggle("curvatureJoins", Toggle.CURVATURE_JOINS, "Keep Curvature Continuity", "Also keeps the surface "
+                + "curvature-continuous (G2) where it is: the second row of control points across a border follows so "
+                + "each cross-border row stays C2. Needs degree 3 or more on both sides of a border (bicubic and up); "
+                + "implies Keep Tangent Continuity", key(KeyEvent.VK_G, CTRL | ALT));
     }
 
     private void addEditActions(EditCommands e) {

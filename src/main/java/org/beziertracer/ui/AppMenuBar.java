@@ -30,6 +30,7 @@ public final class AppMenuBar extends JMenuBar {
         edit.add(nudge);
         edit.addSeparator();
         edit.add(item("smoothJoins"));
+        edit.add(item("curvatureJoins"));
         JMenu models = new JMenu("Models");
         models.setMnemonic('M');
         for (String name : ModelLoader.BUILT_INS) {

@@ -75,6 +75,7 @@ public final class ToolboxPanel extends JPanel {
         surface.add(button("resetPoints"));
         surface.add(button("randomize"));
         surface.add(check("smoothJoins"));
+        surface.add(check("curvatureJoins"));
         surface.add(row(new JLabel("New grid u × v"), gridU, gridV));
         gridU.addChangeListener(e -> onInt(v -> s.set(Level.GRID_U, v), (Integer) gridU.getValue()));
         gridV.addChangeListener(e -> onInt(v -> s.set(Level.GRID_V, v), (Integer) gridV.getValue()));

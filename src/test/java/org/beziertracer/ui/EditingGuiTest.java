@@ -300,4 +300,49 @@ class EditingGuiTest extends GuiSession {
         assertEquals(g.copies() - 1, copiesAt(now, g.original(), r[0], 4 * r[2] + r[1]), "the other copies stayed where they were");
         assertTrue(GuiDriver.differing(g.before(), img1, 24) > 50, "the torn patch shows");
     }
+
+    @Test
+    @Order(9)
+    void keepCurvatureContinuityKeepsACutBicubicC2AcrossWhileASecondRowIsDragged() throws Exception {
+        Path file = dir.resolve("cut.bpt");
+        org.beziertracer.model.io.BptWriter.write(file, org.beziertracer.app.C2Models.cut(
+                org.beziertracer.app.C2Models.randomPatch(3, 3, 7), new double[] {0.5}, new double[] {0.5}).patches());
+        d.menu("File", "open");
+        d.chooseFile(file);
+        d.settle();
+        Scene before = GuiDriver.onEdt(() -> d.app.document().scene());
+        assertEquals(4, before.patchCount());
+        d.menu("Edit", "curvatureJoins");
+        d.settle();
+        assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().on(Toggle.CURVATURE_JOINS)), "Edit → Keep Curvature Continuity");
+        // Point (1, 1) of patch 0: the second row inward of both its borders (u = 3 and v = 3)
+        BufferedImage img0 = shot();
+        Point a2 = d.screenOfPoint(0, 1, 1);
+        d.drag(a2, new Point(a2.x + 20, a2.y - 30), 8);
+        BufferedImage img1 = shot();
+        assertTrue(GuiDriver.differing(img0, img1, 24) > 100, "the surface changed: " + GuiDriver.save(img1, "curvature-drag"));
+        Path saved = dir.resolve("cut-dragged.bpt");
+        d.menu("File", "saveAs");
+        d.chooseFile(saved);
+        d.settle();
+        Scene after = org.beziertracer.model.io.Models.load(saved.toString());
+        assertTrue(after.patches().get(0).get(1, 1, 0) != before.patches().get(0).get(1, 1, 0), "the grabbed point moved");
+        assertTrue(after.patches().get(1).get(2, 1, 0) != before.patches().get(1).get(2, 1, 0),
+                "its mirror two rows across the u border followed");
+        assertTrue(after.patches().get(2).get(1, 2, 0) != before.patches().get(2).get(1, 2, 0),
+                "its mirror two rows across the v border followed");
+        double residual = org.beziertracer.app.CurvatureJoins.worstResidual(after);
+        assertTrue(residual <= 1e-9, "every cross-border row stays C2 in the saved file: residual " + residual);
+
+        // A model cut into two biquadratic halves: its one border is too short, and the status bar says so
+        Path quadratic = dir.resolve("quadratic.bpt");
+        org.beziertracer.model.io.BptWriter.write(quadratic, org.beziertracer.app.C2Models.cut(
+                org.beziertracer.app.C2Models.randomPatch(2, 2, 4), new double[] {0.5}, new double[] {}).patches());
+        d.menu("File", "open");
+        d.chooseFile(quadratic);
+        d.waitFor("the short-border message", () -> "curvature continuity not kept across 1 border: degree below 3 across"
+                .equals(d.app.status().message()));
+        d.menu("Edit", "curvatureJoins");
+        d.settle();
+    }
 }
