@@ -22,6 +22,7 @@ import org.beziertracer.app.Axis;
 import org.beziertracer.app.Modifiers;
 import org.beziertracer.app.Picture;
 import org.beziertracer.app.PointerTool;
+import org.beziertracer.app.RenderStatus;
 import org.beziertracer.app.Toggle;
 
 /**
@@ -141,6 +142,10 @@ public final class RenderPanel extends JComponent {
             }
             PicturePainter.paint(g2, image, differences.of(app, picture), app.overlay().snapshot(), w, h,
                     t.getScaleX());
+            RenderStatus status = app.status().render();
+            if (image != null && status != null && status.shading() == app.settings().current().analysis()) {
+                LegendPainter.paint(g2, status, w, h, t.getScaleX());
+            }
             if (app.settings().current().on(Toggle.CONTINUITY)) {
                 ContinuityMarks.paint(g2, app.continuity().current(), app.view().projector(), t.getScaleX());
             }

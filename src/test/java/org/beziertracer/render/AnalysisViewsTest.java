@@ -136,6 +136,25 @@ class AnalysisViewsTest {
     }
 
     @Test
+    void theLegendRunsFromTheLowEndToTheHighEndOnTheViewsAxis() {
+        double[] a = new double[3], b = new double[3];
+        for (ShadingMode mode : new ShadingMode[] {ShadingMode.GAUSSIAN, ShadingMode.MEAN, ShadingMode.MIN_RADIUS}) {
+            double low = mode == ShadingMode.MIN_RADIUS ? 0.5 : -4, high = mode == ShadingMode.MIN_RADIUS ? 50 : 4;
+            assertEquals(low, AnalysisLegend.valueAt(mode, low, high, 0), 1e-12, mode + " low end");
+            assertEquals(high, AnalysisLegend.valueAt(mode, low, high, 1), 1e-12, mode + " high end");
+            for (double f : new double[] {0, 0.3, 0.5, 1}) {
+                AnalysisLegend.colourAt(mode, low, high, f, a);
+                AnalysisColours.curvature(mode, AnalysisLegend.valueAt(mode, low, high, f), low, high, 1, b);
+                assertArrayEquals(b, a, 1e-12, mode + " at " + f + ": the colour a point of that value gets");
+            }
+        }
+        assertEquals(0, AnalysisLegend.valueAt(ShadingMode.MEAN, -4, 4, 0.5), 0, "the middle of a signed scale is 0");
+        assertEquals(1, AnalysisLegend.valueAt(ShadingMode.GAUSSIAN, -4, 4, 0.75), 1e-12, "K on a square-root axis");
+        assertEquals(5, AnalysisLegend.valueAt(ShadingMode.MIN_RADIUS, 0.5, 50, 0.5), 1e-12, "radii on a log axis");
+        assertThrows(IllegalArgumentException.class, () -> AnalysisLegend.colourAt(ShadingMode.ZEBRA, 0, 1, 0.5, new double[3]));
+    }
+
+    @Test
     void zebraStripesAlternateAroundTheAxis() {
         Analysis a = Analysis.defaults().withZebra(new double[] {0, 0, 1}, 4, 0.5);
         // looking down −y at a mirror whose normal turns about z: the reflection turns twice as fast

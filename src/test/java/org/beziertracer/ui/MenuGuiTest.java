@@ -145,6 +145,9 @@ class MenuGuiTest extends GuiSession {
         d.settle();
         assertEquals("zebra", d.status("legend"));
         BufferedImage sixteen = d.capturePanel();
+        // the colour legend in the bottom-right corner: there for the curvature view, not for zebra
+        Rectangle corner = new Rectangle(analysed.getWidth() - 240, analysed.getHeight() - 80, 240, 80);
+        assertTrue(GuiDriver.differing(analysed, sixteen, corner, 24) > 1000, "the curvature view's legend");
         d.menuPath("View", "analysis", "analysisSettings");
         JDialog settings = d.dialogWith(javax.swing.JSpinner.class);
         d.typeSpinner(settings, "analysis.zebraStripes", "6");
