@@ -56,13 +56,11 @@ public final class AppFrame extends JFrame {
         getContentPane().add(renderPanel, BorderLayout.CENTER);
         getContentPane().add(statusBar, BorderLayout.SOUTH);
         continuity = new ContinuityPanel(app);
-        // the inspector above at its own height, View → Continuity's panel below it taking the rest (its
-        // table scrolls); a hidden one takes no room
-        javax.swing.JPanel east = new javax.swing.JPanel();
-        east.setLayout(new javax.swing.BoxLayout(east, javax.swing.BoxLayout.Y_AXIS));
-        inspector.setMaximumSize(new java.awt.Dimension(Integer.MAX_VALUE, inspector.getPreferredSize().height));
-        east.add(inspector);
-        east.add(continuity);
+        // the inspector takes the right column's height; View → Continuity's panel, when on, its own
+        // height at the bottom of it (its table scrolls)
+        javax.swing.JPanel east = new javax.swing.JPanel(new BorderLayout());
+        east.add(inspector, BorderLayout.CENTER);
+        east.add(continuity, BorderLayout.SOUTH);
         getContentPane().add(east, BorderLayout.EAST);
         setTransferHandler(new FileDrop(app.files()));
         bindExtraKeys();
