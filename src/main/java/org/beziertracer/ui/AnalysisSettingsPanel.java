@@ -1,11 +1,9 @@
 package org.beziertracer.ui;
 
 import java.awt.Component;
-import java.awt.GridLayout;
 
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
-import javax.swing.JLabel;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JSpinner;
@@ -42,16 +40,9 @@ final class AnalysisSettingsPanel {
         });
         JComboBox<String> pull = axisBox("analysis.draftPull", current.draftPull());
         JSpinner tolerance = spinner("analysis.draftTolerance", current.draftTolerance(), 0, 45, 0.5);
-        JPanel panel = new JPanel(new GridLayout(0, 2, 6, 4));
-        Object[][] rows = {{"Zebra bars along", zebraAxis}, {"Zebra bars", stripes}, {"Zebra dark share", width},
-            {"Isophote step (°)", step}, {"Curvature scale", auto}, {"Scale low end", low}, {"Scale high end", high},
-            {"Draft pull direction", pull}, {"Draft tolerance (°)", tolerance}};
-        for (Object[] row : rows) {
-            JLabel l = new JLabel((String) row[0]);
-            l.setLabelFor((Component) row[1]);
-            panel.add(l);
-            panel.add((Component) row[1]);
-        }
+        JPanel panel = SwingDialogs.form(new Object[][] {{"Zebra bars along", zebraAxis}, {"Zebra bars", stripes},
+            {"Zebra dark share", width}, {"Isophote step (°)", step}, {"Curvature scale", auto}, {"Scale low end", low},
+            {"Scale high end", high}, {"Draft pull direction", pull}, {"Draft tolerance (°)", tolerance}});
         if (JOptionPane.showConfirmDialog(parent, panel, "Analysis settings", JOptionPane.OK_CANCEL_OPTION,
                 JOptionPane.PLAIN_MESSAGE) != JOptionPane.OK_OPTION) {
             return null;

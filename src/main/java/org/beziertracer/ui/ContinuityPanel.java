@@ -4,7 +4,6 @@ import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Component;
 import java.awt.Dimension;
-import java.awt.GridLayout;
 import java.util.Locale;
 
 import javax.swing.BorderFactory;
@@ -55,13 +54,8 @@ final class ContinuityPanel extends JPanel {
         JScrollPane scroll = new JScrollPane(table);
         scroll.setPreferredSize(new Dimension(360, 200));
         scroll.setMinimumSize(new Dimension(200, 60));
-        JPanel tolerances = new JPanel(new GridLayout(0, 2, 4, 2));
-        for (Object[] row : new Object[][] {{"G0 gap ≤", g0}, {"G1 angle (°) ≤", g1}, {"G2 mismatch ≤", g2}}) {
-            JLabel l = new JLabel((String) row[0]);
-            l.setLabelFor((Component) row[1]);
-            tolerances.add(l);
-            tolerances.add((Component) row[1]);
-        }
+        JPanel tolerances = SwingDialogs.form(new Object[][] {{"G0 gap ≤", g0}, {"G1 angle (°) ≤", g1},
+            {"G2 mismatch ≤", g2}});
         JButton apply = new JButton("Apply tolerances");
         apply.setName("continuity.apply");
         apply.addActionListener(e -> app.continuityTolerances(new ContinuityAnalysis.Tolerances(

@@ -104,14 +104,8 @@ final class SwingDialogs implements UserDialogs {
         sampler.setRenderer(new LabelRenderer<>(SamplerKind.class, SamplerKind::label));
         sampler.setToolTipText("Where the samples of a pixel go: regular grid, jittered grid, or adaptive (more "
                 + "samples only where neighbours differ)");
-        javax.swing.JPanel panel = new javax.swing.JPanel(new java.awt.GridLayout(0, 2, 6, 4));
-        for (Object[] row : new Object[][] {{"Width", width}, {"Height", height}, {"Samples per pixel", spp},
-                {"Sampler", sampler}}) {
-            javax.swing.JLabel l = new javax.swing.JLabel((String) row[0]);
-            l.setLabelFor((Component) row[1]);
-            panel.add(l);
-            panel.add((Component) row[1]);
-        }
+        javax.swing.JPanel panel = form(new Object[][] {{"Width", width}, {"Height", height}, {"Samples per pixel", spp},
+                {"Sampler", sampler}});
         if (JOptionPane.showConfirmDialog(parent, panel, "Export image", JOptionPane.OK_CANCEL_OPTION,
                 JOptionPane.PLAIN_MESSAGE) != JOptionPane.OK_OPTION) {
             return null;
@@ -128,6 +122,18 @@ final class SwingDialogs implements UserDialogs {
     @Override
     public org.beziertracer.render.Analysis analysisSettings(org.beziertracer.render.Analysis current) {
         return AnalysisSettingsPanel.ask(parent, current);
+    }
+
+    /** A two-column form: each row's label (its text) beside its component, the label pointing at it. */
+    static javax.swing.JPanel form(Object[][] rows) {
+        javax.swing.JPanel panel = new javax.swing.JPanel(new java.awt.GridLayout(0, 2, 6, 4));
+        for (Object[] row : rows) {
+            javax.swing.JLabel l = new javax.swing.JLabel((String) row[0]);
+            l.setLabelFor((Component) row[1]);
+            panel.add(l);
+            panel.add((Component) row[1]);
+        }
+        return panel;
     }
 
     private static javax.swing.JSpinner spinner(String name, int value, int max, String tip) {
