@@ -123,6 +123,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         CommandLine cl = new CommandLine(new BezierTracerCommand());
         cl.setResourceBundle(new CliText());
         cl.setExecutionExceptionHandler(CliErrors::handle);
+        cl.setParameterExceptionHandler(UsageErrors::handle);
         return cl;
     }
 
