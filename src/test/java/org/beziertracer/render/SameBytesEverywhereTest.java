@@ -56,4 +56,25 @@ class SameBytesEverywhereTest {
             }
         }
     }
+
+    /** The analysis views too: the same curvature and colours from either kernel and any thread count. */
+    @ParameterizedTest
+    @ValueSource(strings = {"gaussian", "min-radius", "zebra", "draft"})
+    void anAnalysisViewIsTheSameOnAnyThreadCountAndKernel(String view) {
+        Scene scene = SceneFiles.load("wavy10").scene();
+        float[] reference = null;
+        for (LaneKernel kernel : new LaneKernel[] {Kernels.scalar(), Kernels.named("simd")}) {
+            for (int threads : new int[] {1, 2}) {
+                RenderOptions options = RenderOptions.defaults().withThreads(threads).withTileSize(16)
+                        .withProgressive(false).withKernel(kernel);
+                float[] rgb = Renderer.renderOnce(RenderJob.prepare(scene, TestScenes.settings(W, H, view), options))
+                        .film().linearRgb();
+                if (reference == null) {
+                    reference = rgb;
+                } else {
+                    assertArrayEquals(reference, rgb, view + ": " + kernel.description() + ", " + threads + " threads");
+                }
+            }
+        }
+    }
 }
