@@ -17,16 +17,16 @@ import org.beziertracer.model.BezierPatch;
  */
 public enum Method {
     /** Bézier clipping (Nishita, Sederberg, Kakimoto 1990): exact, the default. */
-    CLIPPING(ClippingLeaves::new, ClippingLeaves::estimateBytes, SplitOptions.defaults(),
+    CLIPPING(ClippingLeaves::new, ClippingLeaves::estimateBytes, SplitOptions.defaults(), true,
             "Bézier clipping: exact, the default"),
     /**
      * Newton iteration from a start given by the leaf, on leaves refined until it converges from
      * there (memoir ch. I 3.3.3.3; Martin, Cohen, Fish, Shirley 2000): {@link NewtonSolver}.
      */
-    NEWTON(NewtonLeaves::new, NewtonLeaves::estimateBytes, NewtonRefinement.SPLIT,
+    NEWTON(NewtonLeaves::new, NewtonLeaves::estimateBytes, NewtonRefinement.SPLIT, true,
             "Newton iteration from each leaf's start: exact, on finer leaves"),
     /** Recursive subdivision, then the control mesh as triangles (memoir ch. I 3.3.3.1): approximate. */
-    SUBDIVISION(SubdivisionLeaves::new, SubdivisionLeaves::estimateBytes, SplitOptions.defaults(),
+    SUBDIVISION(SubdivisionLeaves::new, SubdivisionLeaves::estimateBytes, SplitOptions.defaults(), false,
             "recursive subdivision, then the control mesh as triangles: approximate");
 
     /** About the bytes a method's leaves keep beside the sub-patch table, beyond the table itself. */
@@ -44,13 +44,23 @@ public enum Method {
     private final LeafBytes leafBytes;
     private final SplitOptions split;
     private final String description;
+    private final boolean exact;
 
-    Method(PatchLeaves.Factory leaves, LeafBytes leafBytes, SplitOptions split, String description) {
+    Method(PatchLeaves.Factory leaves, LeafBytes leafBytes, SplitOptions split, boolean exact, String description) {
+        this.exact = exact;
         this.leaves = leaves;
         this.leafBytes = leafBytes;
         this.split = split;
         this.description = description;
     }
+
+    /**
+     * True when the hits are the patch's own roots, found to rounding whatever the leaves (so an
+     * edit may keep a patch's old halvings, {@link SceneIntersector#withPatches}); false for an
+     * approximate method, whose hits are its leaves' (then an edit splits the patch afresh, so a
+     * dragged model is traced as a fresh build of it would be).
+     */
+    public boolean exact() { return exact; }
 
     /** The pre-split this method's leaves want unless told otherwise. */
     public SplitOptions defaultSplit() { return split; }

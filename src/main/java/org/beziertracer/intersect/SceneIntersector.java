@@ -123,7 +123,8 @@ public final class SceneIntersector {
     public SceneIntersector withPatches(Scene edited, int[] indices) {
         long t0 = System.nanoTime();
         double size = sizeOf(edited);
-        boolean keep = keptEdits < KEPT_EDITS;
+        // an approximate method's hits are its leaves': they must be a fresh split's (Method#exact)
+        boolean keep = keptEdits < KEPT_EDITS && options.method().exact();
         Leaves newLeaves = leaves.withPatches(edited, indices, size, keep);
         Accelerator newAccel;
         if (keep && newLeaves.count() == leaves.count() && newLeaves.keepsUntouchedLeaves(leaves)
