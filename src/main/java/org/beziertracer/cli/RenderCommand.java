@@ -65,16 +65,16 @@ final class RenderCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically)")
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically); required unless --pixel")
     Path output;
 
     @Option(names = "--size", paramLabel = "WxH", description = "image size, e.g. 800x600 (default: the scene's)")
     String size;
 
-    @Option(names = "--spp", paramLabel = "N", description = "samples per pixel, 1..1024")
+    @Option(names = "--spp", paramLabel = "N", description = "samples per pixel, 1..1024 (default: the scene file's, else 1)")
     Integer spp;
 
-    @Option(names = "--sampler", paramLabel = "regular|jittered|adaptive", description = "sample placement")
+    @Option(names = "--sampler", paramLabel = "regular|jittered|adaptive", description = "sample placement (default: the scene file's, else regular)")
     String sampler;
 
     @Option(names = "--filter", paramLabel = "box|tent", defaultValue = "box", description = "pixel filter (default: ${DEFAULT-VALUE})")
@@ -97,7 +97,8 @@ final class RenderCommand implements Callable<Integer> {
                     + "the picture is the same either way (default: ${DEFAULT-VALUE})")
     String kernel;
 
-    @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id", description = "shading mode")
+    @Option(names = "--shading", paramLabel = "phong|flat|normals|uv|patch-id",
+            description = "shading mode (default: the scene file's, else phong; --analysis for the analysis views)")
     String shading;
 
     @picocli.CommandLine.Mixin
@@ -124,7 +125,7 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "no shadow rays")
     boolean noShadows;
 
-    @Option(names = "--depth", paramLabel = "N", description = "maximum reflection/refraction depth, 0..32")
+    @Option(names = "--depth", paramLabel = "N", description = "maximum reflection/refraction depth, 0..32 (default: the scene file's, else 5)")
     Integer depth;
 
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: available processors)")

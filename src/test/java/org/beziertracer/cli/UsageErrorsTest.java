@@ -48,4 +48,18 @@ class UsageErrorsTest {
             assertTrue(!r.err().contains("Usage:"), what + ": no usage text");
         }
     }
+
+    @Test
+    void renderHelpSaysWhenOutIsNeededAndEveryDefault() {
+        Run help = Run.of("render", "--help");
+        assertEquals(0, help.code());
+        String text = help.out().replaceAll("\\s+", " ");
+        var d = org.beziertracer.model.RenderSettings.defaults();
+        assertTrue(text.contains("PNG to write (atomically); required unless --pixel"), text);
+        assertTrue(text.contains("(default: the scene file's, else " + d.spp() + ")"), "spp: " + text);
+        assertTrue(text.contains("(default: the scene file's, else " + d.sampler() + ")"), "sampler: " + text);
+        assertTrue(text.contains("(default: the scene file's, else " + d.shading() + ";"), "shading: " + text);
+        assertTrue(text.contains("(default: the scene file's, else " + d.maxDepth() + ")"), "depth: " + text);
+        assertTrue(text.contains("(default: the scene's)"), "method: " + text);
+    }
 }
