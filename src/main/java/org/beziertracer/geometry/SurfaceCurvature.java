@@ -149,13 +149,6 @@ public final class SurfaceCurvature {
         if (!(Double.isFinite(k) && Double.isFinite(h))) {
             return false;
         }
-        out[GAUSSIAN] = k;
-        out[MEAN] = h;
-        out[K1] = k1;
-        out[K2] = k2;
-        out[NORMAL] = nx;
-        out[NORMAL + 1] = ny;
-        out[NORMAL + 2] = nz;
         // Principal direction of k1: (L − kE) a + (M − kF) b = 0, or (M − kF) a + (N − kG) b = 0
         double r1a = l - k1 * e, r1b = mm - k1 * f, r2a = mm - k1 * f, r2b = nn - k1 * g;
         double pa, pb;
@@ -176,15 +169,28 @@ public final class SurfaceCurvature {
             dz = uz;
             dl = Math.sqrt(e);
         }
-        dx /= dl;
-        dy /= dl;
-        dz /= dl;
+        store(k, h, k1, k2, nx, ny, nz, dx / dl, dy / dl, dz / dl, out);
+        return true;
+    }
+
+    /**
+     * Writes a curvature record: K, H, k1, k2, the unit normal n, the unit principal direction d1
+     * and d2 = n × d1.
+     */
+    public static void store(double k, double h, double k1, double k2, double nx, double ny, double nz, double dx,
+                             double dy, double dz, double[] out) {
+        out[GAUSSIAN] = k;
+        out[MEAN] = h;
+        out[K1] = k1;
+        out[K2] = k2;
+        out[NORMAL] = nx;
+        out[NORMAL + 1] = ny;
+        out[NORMAL + 2] = nz;
         out[D1] = dx;
         out[D1 + 1] = dy;
         out[D1 + 2] = dz;
         out[D2] = ny * dz - nz * dy;
         out[D2 + 1] = nz * dx - nx * dz;
         out[D2 + 2] = nx * dy - ny * dx;
-        return true;
     }
 }
