@@ -202,6 +202,25 @@ final class GuiDriver {
      * the last item, with the mouse.
      */
     void menuPath(String title, String... path) {
+        for (int attempt = 1; ; attempt++) {
+            if (openAndClick(title, path)) {
+                return;
+            }
+            // the menu closed without the item's action firing: the click was lost (a menu closed
+            // under the mouse by a focus change or a repaint). Open the path again rather than go on
+            // with a setting that never changed.
+            if (attempt == 3) {
+                fail(title + " → " + String.join(" → ", path) + " did not fire after three tries; screen: "
+                        + save(robot.createScreenCapture(new Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize())),
+                                "menu-lost"));
+            }
+            key(KeyEvent.VK_ESCAPE);
+            robot.waitForIdle();
+        }
+    }
+
+    /** One try of {@link #menuPath}: whether the last item's action fired. */
+    private boolean openAndClick(String title, String... path) {
         JMenu m = onEdt(() -> {
             for (int k = 0; k < frame.getJMenuBar().getMenuCount(); k++) {
                 if (title.equals(frame.getJMenuBar().getMenu(k).getText())) {
@@ -238,9 +257,25 @@ final class GuiDriver {
                 waitFor(name + " open", sub::isPopupMenuVisible);
                 current = sub;
             } else {
-                clickUntil(item, name + " chosen", () -> !item.isShowing());
+                java.util.concurrent.atomic.AtomicBoolean fired = new java.util.concurrent.atomic.AtomicBoolean();
+                java.awt.event.ActionListener listener = e -> fired.set(true);
+                onEdt(() -> {
+                    item.addActionListener(listener);
+                    return null;
+                });
+                try {
+                    clickUntil(item, name + " chosen", () -> fired.get() || !item.isShowing());
+                    robot.waitForIdle();
+                    return onEdt(fired::get);
+                } finally {
+                    onEdt(() -> {
+                        item.removeActionListener(listener);
+                        return null;
+                    });
+                }
             }
         }
+        throw new AssertionError("the path " + String.join(" → ", path) + " ends in a submenu");
     }
 
     /** The visible dialog that holds a {@code type} (a file chooser, an option pane), waiting up to 10 s. */

@@ -143,6 +143,7 @@ class MenuGuiTest extends GuiSession {
         d.mouseAway();
         d.menuPath("View", "analysis", "analysis:zebra");
         d.settle();
+        assertEquals(org.beziertracer.render.ShadingMode.ZEBRA, GuiDriver.onEdt(() -> d.app.settings().current().analysis()));
         assertEquals("zebra", d.status("legend"));
         BufferedImage sixteen = d.capturePanel();
         // the colour legend in the bottom-right corner: there for the curvature view, not for zebra
