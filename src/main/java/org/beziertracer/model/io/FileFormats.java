@@ -14,10 +14,10 @@ import org.beziertracer.model.io.FileFormat.Holds;
  *
  * <pre>
  * FileFormats.find("teapot.OBJ")            → Optional[OBJ]       (by extension, any case)
- * FileFormats.ALL                           → [BPT, OBJ, scene]
- * FileFormats.holding(Holds.MODEL)          → [BPT, OBJ]          (what a scene's "file" may name)
- * FileFormats.writable()                    → [BPT, OBJ, scene]
- * FileFormats.extensionList(FileFormats.ALL) → ".bpt, .obj or .json"
+ * FileFormats.ALL                           → [BPT, OBJ, IGES, scene]
+ * FileFormats.holding(Holds.MODEL)          → [BPT, OBJ, IGES]        (what a scene's "file" may name)
+ * FileFormats.writable()                    → [BPT, OBJ, IGES, scene]
+ * FileFormats.extensionList(FileFormats.ALL) → ".bpt, .obj, .igs, .iges or .json"
  * FileFormats.OBJ.read(path) / .write(path, doc)
  * </pre>
  * Stateless and thread-safe.
@@ -42,12 +42,16 @@ public final class FileFormats {
     public static final FileFormat OBJ = FileFormat.model("OBJ", "Wavefront OBJ free-form surfaces", List.of("obj"),
             ObjReader::readScene, ObjWriter::write);
 
+    /** IGES 5.3 surfaces ({@link IgesReader}, {@link IgesWriter}). */
+    public static final FileFormat IGES = FileFormat.model("IGES", "IGES surfaces", List.of("igs", "iges"),
+            IgesReader::readScene, IgesWriter::write);
+
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),
             Holds.SCENE, SceneFiles::read, (out, doc) -> out.write(SceneWriter.toJson(doc)));
 
     /** Every format, in the order shown to users. */
-    public static final List<FileFormat> ALL = List.of(BPT, OBJ, SCENE);
+    public static final List<FileFormat> ALL = List.of(BPT, OBJ, IGES, SCENE);
 
     /** The format whose extension {@code path} has (any case), if any. */
     public static Optional<FileFormat> find(String path) {
@@ -69,7 +73,7 @@ public final class FileFormats {
         return formats.stream().flatMap(f -> f.extensions().stream()).toList();
     }
 
-    /** For messages: {@code .bpt, .obj or .json}. */
+    /** For messages: {@code .bpt, .obj, .igs, .iges or .json}. */
     public static String extensionList(List<FileFormat> formats) {
         List<String> dotted = extensions(formats).stream().map(e -> "." + e).toList();
         if (dotted.size() == 1) {

@@ -1,0 +1,188 @@
+package org.beziertracer.model.io;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The free-format parameters of one IGES record (a parameter-data entry or the global section):
+ * fields separated by the parameter delimiter, ended by the record delimiter, Hollerith strings
+ * ({@code 5HHELLO}) read whole, so they may hold either delimiter. An empty field is a default
+ * value (0, or the given default). Typed getters turn a bad field into one line naming the
+ * file, the line and the field (IGES 5.3 §2.2.3).
+ *
+ * <pre>
+ * IgesParams p = IgesParams.parse("128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.;", ',', ';', src, 40, "entity 128");
+ * p.integer(1) → 1   p.real(10) → 0.0   p.size() → 15
+ * </pre>
+ */
+final class IgesParams {
+
+    private final List<String> fields;
+    private final List<Boolean> hollerith;
+    private final TextSource source;
+    private final int line;
+    private final String what;
+
+    private IgesParams(List<String> fields, List<Boolean> hollerith, TextSource source, int line, String what) {
+        this.fields = fields;
+        this.hollerith = hollerith;
+        this.source = source;
+        this.line = line;
+        this.what = what;
+    }
+
+    /**
+     * Splits {@code text} into fields up to the record delimiter (the rest is ignored).
+     *
+     * @param line the file line the record starts on, for messages
+     * @param what what the record is, for messages ({@code "entity 128 (directory line 7)"})
+     */
+    static IgesParams parse(String text, char delimiter, char end, TextSource source, int line, String what) {
+        List<String> fields = new ArrayList<>();
+        List<Boolean> hollerith = new ArrayList<>();
+        int k = 0, n = text.length();
+        boolean ended = false;
+        while (k <= n && !ended) {
+            // skip blanks before a field
+            while (k < n && text.charAt(k) == ' ') {
+                k++;
+            }
+            int start = k;
+            while (k < n && Character.isDigit(text.charAt(k))) {
+                k++;
+            }
+            if (k > start && k < n && (text.charAt(k) == 'H' || text.charAt(k) == 'h')) {
+                int count;
+                try {
+                    count = Integer.parseInt(text.substring(start, k));
+                } catch (NumberFormatException e) {
+                    throw source.error(line, what + ": a string length " + Echo.quote(text.substring(start, k))
+                            + " too large");
+                }
+                if (count > n - k - 1) {
+                    throw source.error(line, what + ": a string of " + count + " characters runs past the record's end");
+                }
+                fields.add(text.substring(k + 1, k + 1 + count));
+                hollerith.add(true);
+                k += 1 + count;
+                while (k < n && text.charAt(k) == ' ') {
+                    k++;
+                }
+            } else {
+                k = start;
+                while (k < n && text.charAt(k) != delimiter && text.charAt(k) != end) {
+                    k++;
+                }
+                fields.add(text.substring(start, k).trim());
+                hollerith.add(false);
+            }
+            if (k >= n) {
+                throw source.error(line, what + ": the record does not end with '" + end + "'");
+            }
+            char c = text.charAt(k);
+            if (c == end) {
+                ended = true;
+            } else if (c != delimiter) {
+                throw source.error(line, what + ": expected '" + delimiter + "' or '" + end + "' after field "
+                        + fields.size() + ", found '" + c + "'");
+            }
+            k++;
+        }
+        return new IgesParams(fields, hollerith, source, line, what);
+    }
+
+    int size() { return fields.size(); }
+
+    int line() { return line; }
+
+    String what() { return what; }
+
+    /** Whether field {@code k} (0-based) is present and not empty. */
+    boolean has(int k) {
+        return k < fields.size() && !fields.get(k).isEmpty();
+    }
+
+    /** Field {@code k} as a whole number; an empty field is 0. */
+    int integer(int k) {
+        String f = field(k);
+        if (f.isEmpty()) {
+            return 0;
+        }
+        try {
+            return Integer.parseInt(f.startsWith("+") ? f.substring(1) : f);
+        } catch (NumberFormatException e) {
+            throw error("field " + (k + 1) + ": expected a whole number, found " + Echo.quote(f));
+        }
+    }
+
+    /** Field {@code k} as a pointer to a directory entry (0 = none): odd and positive, or 0. */
+    int pointer(int k) {
+        int p = integer(k);
+        if (p < 0) {
+            p = -p; // a negated pointer (a colour, a back pointer) points as well
+        }
+        return p;
+    }
+
+    /** Field {@code k} as a real; an empty field is {@code otherwise}. Fortran exponents ({@code 1.5D2}) read. */
+    double real(int k, double otherwise) {
+        String f = field(k);
+        if (f.isEmpty()) {
+            return otherwise;
+        }
+        double v;
+        try {
+            v = Double.parseDouble(f.replace('D', 'E').replace('d', 'e'));
+        } catch (NumberFormatException e) {
+            throw error("field " + (k + 1) + ": expected a number, found " + Echo.quote(f));
+        }
+        if (!Double.isFinite(v) || f.indexOf('x') >= 0 || f.indexOf('X') >= 0 || Character.isLetter(f.charAt(f.length() - 1))) {
+            throw error("field " + (k + 1) + ": expected a finite number, found " + Echo.quote(f));
+        }
+        return v;
+    }
+
+    double real(int k) {
+        return real(k, 0);
+    }
+
+    /** Field {@code k} as a string (a Hollerith string, or the bare text); empty when absent. */
+    String string(int k) {
+        return k < fields.size() ? fields.get(k) : "";
+    }
+
+    /** Whether field {@code k} was written as a Hollerith string. */
+    boolean isString(int k) {
+        return k < fields.size() && hollerith.get(k);
+    }
+
+    /** Fields {@code from .. from+count-1} as reals. */
+    double[] reals(int from, int count) {
+        double[] out = new double[count];
+        for (int k = 0; k < count; k++) {
+            out[k] = real(from + k);
+        }
+        return out;
+    }
+
+    /** Requires at least {@code count} fields ({@code naming} them for the message). */
+    void require(int count, String naming) {
+        if (fields.size() < count) {
+            throw error("expected " + count + " fields (" + naming + "), found " + fields.size());
+        }
+    }
+
+    ModelFormatException error(String detail) {
+        return source.error(line, what + ": " + detail);
+    }
+
+    private String field(int k) {
+        if (k >= fields.size()) {
+            throw error("expected at least " + (k + 1) + " fields, found " + fields.size());
+        }
+        if (hollerith.get(k)) {
+            throw error("field " + (k + 1) + ": expected a number, found the string " + Echo.quote(fields.get(k)));
+        }
+        return fields.get(k);
+    }
+}
