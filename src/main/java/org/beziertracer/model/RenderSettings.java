@@ -71,12 +71,25 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
         return v;
     }
 
+    /**
+     * {@code value} in double quotes for a message: control characters as {@code \\uXXXX}, cut to
+     * 60 characters (the model layer's copy of {@code model.io.Echo.quote}, which it cannot use).
+     */
+    static String echo(String value) {
+        StringBuilder sb = new StringBuilder("\"");
+        String v = value == null ? "" : value;
+        for (int i = 0; i < v.length() && sb.length() <= 60; i++) {
+            char c = v.charAt(i);
+            sb.append(Character.isISOControl(c) ? String.format(Locale.ROOT, "\\u%04X", (int) c) : String.valueOf(c));
+        }
+        return sb.append(v.length() > 60 ? "…\"" : "\"").toString();
+    }
+
     /** {@code value} trimmed and in lower case, refused unless it is one {@link #WORD}. */
     private static String word(String what, String value) {
         String v = value == null ? "" : value.trim().toLowerCase(Locale.ROOT);
         if (!WORD.matcher(v).matches()) {
-            throw new IllegalArgumentException(what + " must be a name (one word), got '"
-                    + (value == null ? "" : value) + "'");
+            throw new IllegalArgumentException(what + " must be a name (one word), got " + echo(value));
         }
         return v;
     }

@@ -2,6 +2,8 @@ package org.beziertracer.render;
 
 import java.util.Locale;
 
+import org.beziertracer.model.io.Echo;
+
 /**
  * What a primary hit shows. The normal used everywhere is the unit geometric normal
  * ({@code dpdu × dpdv} for patches, outward for spheres, the given normal for planes)
@@ -66,6 +68,7 @@ public enum ShadingMode {
                 return m;
             }
         }
-        throw new IllegalArgumentException("unknown shading '" + s + "': expected one of " + labels());
+        throw new IllegalArgumentException("unknown shading " + Echo.quote(s == null ? "" : s)
+                + ": expected one of " + labels());
     }
 }

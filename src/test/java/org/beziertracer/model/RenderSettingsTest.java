@@ -28,15 +28,15 @@ class RenderSettingsTest {
 
     @Test
     void aMethodThatIsNoWordIsRefusedInOneLine() {
-        assertEquals("method must be a name (one word), got ''",
+        assertEquals("method must be a name (one word), got \"\"",
                 UserMessages.of(IllegalArgumentException.class, () -> withMethod("")));
-        assertEquals("method must be a name (one word), got '  '",
+        assertEquals("method must be a name (one word), got \"  \"",
                 UserMessages.of(IllegalArgumentException.class, () -> withMethod("  ")));
-        assertEquals("method must be a name (one word), got 'two words'",
+        assertEquals("method must be a name (one word), got \"two words\"",
                 UserMessages.of(IllegalArgumentException.class, () -> withMethod("two words")));
-        assertEquals("method must be a name (one word), got 'a.b'",
+        assertEquals("method must be a name (one word), got \"a.b\"",
                 UserMessages.of(IllegalArgumentException.class, () -> withMethod("a.b")));
-        assertEquals("method must be a name (one word), got ''",
+        assertEquals("method must be a name (one word), got \"\"",
                 UserMessages.of(IllegalArgumentException.class, () -> withMethod(null)));
     }
 

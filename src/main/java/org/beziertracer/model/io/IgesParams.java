@@ -77,14 +77,15 @@ final class IgesParams {
                 hollerith.add(false);
             }
             if (k >= n) {
-                throw source.error(line, what + ": the record does not end with '" + end + "'");
+                throw source.error(line, what + ": the record does not end with " + Echo.quote(String.valueOf(end)));
             }
             char c = text.charAt(k);
             if (c == end) {
                 ended = true;
             } else if (c != delimiter) {
-                throw source.error(line, what + ": expected '" + delimiter + "' or '" + end + "' after field "
-                        + fields.size() + ", found '" + c + "'");
+                throw source.error(line, what + ": expected " + Echo.quote(String.valueOf(delimiter)) + " or "
+                        + Echo.quote(String.valueOf(end)) + " after field " + fields.size() + ", found "
+                        + Echo.quote(String.valueOf(c)));
             }
             k++;
         }

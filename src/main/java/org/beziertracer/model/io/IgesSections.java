@@ -101,7 +101,8 @@ final class IgesSections {
             }
             int s = ORDER.indexOf(letter);
             if (s < 0) {
-                throw source.error(line, "expected a section letter S, G, D, P or T in column 73, found '" + letter + "'");
+                throw source.error(line, "expected a section letter S, G, D, P or T in column 73, found "
+                        + Echo.quote(String.valueOf(letter)));
             }
             if (s < section) {
                 throw source.error(line, "a " + letter + " line after the " + ORDER.charAt(section)
@@ -233,8 +234,8 @@ final class IgesSections {
         delimiter = d;
         end = e;
         if (delimiter == end) {
-            throw source.error(line, "the global section gives the same character '" + end
-                    + "' as parameter and record delimiter");
+            throw source.error(line, "the global section gives the same character "
+                    + Echo.quote(String.valueOf(end)) + " as parameter and record delimiter");
         }
         if (delimiter == ' ' || end == ' ') {
             throw source.error(line, "the global section gives a blank delimiter");

@@ -49,7 +49,7 @@ class SceneFilesMethodTest {
     @Test
     void aMethodThatIsNoWordFailsInTheReaderWithTheSamePath() throws IOException {
         Path file = room("two words");
-        assertEquals(file + ": render.method: method must be a name (one word), got 'two words'",
+        assertEquals(file + ": render.method: method must be a name (one word), got \"two words\"",
                 UserMessages.of(ModelFormatException.class, () -> SceneFiles.load(file.toString())));
     }
 

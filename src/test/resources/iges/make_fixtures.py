@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Writes the IGES test fixtures of IgesReaderTest, independently of the Java writer.
+
+Run from this folder: python3 make_fixtures.py. Each entity is (type, form, status, params);
+directory pointers are 2*index+1. The layout follows IGES 5.3 section 2 (80 columns, S/G/D/P/T).
+"""
+import math
+
+def fmt(v):
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+def record(params):
+    out, line = [], ""
+    fields = [fmt(p) for p in params]
+    for k, f in enumerate(fields):
+        f += ";" if k == len(fields) - 1 else ","
+        if len(line) + len(f) > 64:
+            out.append(line)
+            line = ""
+        line += f
+    out.append(line)
+    return out
+
+def write(path, entities, units=2, unit_name="MM", scale=1.0):
+    lines = []
+    s = ["Bezier Tracer test fixture written by make_fixtures.py"]
+    for k, t in enumerate(s):
+        lines.append("%-72sS%7d" % (t, k + 1))
+    g = ["1H,", "1H;", "7HFIXTURE", "11Hfixture.igs", "6HPYTHON", "3H1.0", "32", "38", "6", "308", "15",
+         "7HFIXTURE", repr(scale), str(units), "%dH%s" % (len(unit_name), unit_name), "1", "0.0",
+         "15H20261205.000000", "1.0E-8", "0.0", "4HTEST", "4HTEST", "11", "0", "15H20261205.000000"]
+    gl, line = [], ""
+    for k, f in enumerate(g):
+        f += ";" if k == len(g) - 1 else ","
+        if len(line) + len(f) > 72:
+            gl.append(line)
+            line = ""
+        line += f
+    gl.append(line)
+    for k, t in enumerate(gl):
+        lines.append("%-72sG%7d" % (t, k + 1))
+    pds = [record(e[3]) for e in entities]
+    pd, d = 1, 0
+    for (etype, form, status, params, *rest), p in zip(entities, pds):
+        transform = rest[0] if rest else 0
+        colour = rest[1] if len(rest) > 1 else 0
+        d += 1
+        lines.append("%8d%8d%8d%8d%8d%8d%8d%8d%8sD%7d" % (etype, pd, 0, 1, 0, 0, transform, 0, status, d))
+        d += 1
+        lines.append("%8d%8d%8d%8d%8d%8s%8s%8s%8dD%7d" % (etype, 0, colour, len(p), form, "", "", "ENTITY", 0, d))
+        pd += len(p)
+    n = 0
+    for k, p in enumerate(pds):
+        for t in p:
+            n += 1
+            lines.append("%-64s %7dP%7d" % (t, 2 * k + 1, n))
+    lines.append("%-72sT%7d" % ("S%7dG%7dD%7dP%7d" % (len(s), len(gl), d, n), 1))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+H = math.sqrt(0.5)
+IND, DEP, PARAM = "00000000", "00010000", "00010500"
+sampler = [
+    (124, 0, IND, [124, 1.0, 0.0, 0.0, 10.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0]),                      # D1
+    (128, 0, IND, [128, 2, 1, 2, 1, 0, 0, 0, 0, 0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0,      # D3
+                   1.0, H, 1.0, 1.0, H, 1.0,
+                   2.0, 0.0, 0.0, 2.0, 2.0, 0.0, 0.0, 2.0, 0.0, 2.0, 0.0, 3.0, 2.0, 2.0, 3.0, 0.0, 2.0, 3.0,
+                   0.0, 1.0, 0.0, 1.0], 1),
+    (128, 0, DEP, [128, 1, 1, 1, 1, 0, 0, 1, 0, 0, 0.0, 0.0, 4.0, 4.0, 0.0, 0.0, 4.0, 4.0,              # D5
+                   1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 5.0, 4.0, 0.0, 5.0, 0.0, 4.0, 5.0, 4.0, 4.0, 5.0,
+                   0.0, 4.0, 0.0, 4.0]),
+    (110, 0, PARAM, [110, 1.0, 1.0, 0.0, 3.0, 1.0, 0.0]),                                                   # D7
+    (110, 0, PARAM, [110, 3.0, 1.0, 0.0, 3.0, 3.0, 0.0]),                                                   # D9
+    (110, 0, PARAM, [110, 3.0, 3.0, 0.0, 1.0, 3.0, 0.0]),                                                   # D11
+    (110, 0, PARAM, [110, 1.0, 3.0, 0.0, 1.0, 1.0, 0.0]),                                                   # D13
+    (102, 0, PARAM, [102, 4, 7, 9, 11, 13]),                                                                # D15
+    (142, 0, DEP, [142, 0, 5, 15, 0, 1]),                                                                   # D17
+    (100, 0, PARAM, [100, 0.0, 2.0, 2.0, 2.5, 2.0, 2.5, 2.0]),                                              # D19
+    (142, 0, DEP, [142, 0, 5, 19, 0, 1]),                                                                   # D21
+    (314, 0, "00000200", [314, 50.0, 25.0, 100.0, "6HPURPLE"]),                                             # D23
+    (144, 0, IND, [144, 5, 1, 1, 17, 21], 0, -23),                                                          # D25
+    (110, 0, DEP, [110, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]),                                                     # D27
+    (110, 0, DEP, [110, 1.0, 0.0, 0.0, 1.0, 0.0, 2.0]),                                                     # D29
+    (120, 0, IND, [120, 27, 29, 0.0, 2 * math.pi]),                                                         # D31
+    (100, 0, DEP, [100, 0.0, 0.0, 0.0, 3.0, 0.0, 0.0, 3.0]),                                                # D33
+    (122, 0, IND, [122, 33, 3.0, 0.0, 4.0]),                                                                # D35
+    (116, 0, IND, [116, 1.0, 2.0, 3.0, 0]),                                                                 # D37
+    (212, 0, IND, [212, 0]),                                                                                # D39
+    (128, 0, DEP, [128, 1, 1, 1, 1, 0, 0, 1, 0, 0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0,              # D41
+                   1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0,
+                   0.0, 1.0, 0.0, 1.0]),
+    (308, 0, "00000200", [308, 0, "4HPART", 1, 41]),                                                        # D43
+    (408, 0, IND, [408, 43, 0.0, 0.0, 100.0, 2.0]),                                                         # D45
+    (100, 0, DEP, [100, -1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0]),                                               # D47
+    (108, 1, IND, [108, 0.0, 0.0, 1.0, -1.0, 47, 0.0, 0.0, -1.0, 1.0]),                                     # D49
+]
+write("sampler.igs", sampler)
+
+inches = [
+    (128, 0, IND, [128, 1, 1, 1, 1, 0, 0, 1, 0, 0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0,
+                   1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0,
+                   0.0, 1.0, 0.0, 1.0]),
+]
+write("inches.igs", inches, units=1, unit_name="IN", scale=2.0)
