@@ -87,6 +87,17 @@ public final class BezierDecomposition {
      */
     public static Patches surface(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV,
                                   double[] points, int dim, double u0, double u1, double v0, double v1) {
+        if (onePiece(p, knotsU, countU, u0, u1) && onePiece(q, knotsV, countV, v0, v1)) {
+            // already one Bézier net (what the insertions below would leave untouched): a copy
+            return new Patches(p, q, dim, new double[] {u0, u1}, new double[] {v0, v1},
+                    new double[][] {Arrays.copyOf(points, countU * countV * dim)});
+        }
+        return byInsertion(p, q, knotsU, knotsV, countU, countV, points, dim, u0, u1, v0, v1);
+    }
+
+    /** {@link #surface} by knot insertion in u, then in v, whatever the knots. */
+    static Patches byInsertion(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV,
+                               double[] points, int dim, double u0, double u1, double v0, double v1) {
         // As a curve in u whose point i is the whole column (P_i0, …, P_i,countV-1)
         int dimU = countV * dim;
         double[] columns = new double[countU * dimU];
@@ -120,6 +131,22 @@ public final class BezierDecomposition {
             }
         }
         return new Patches(p, q, dim, inU.breaks(), breaksV, nets);
+    }
+
+    /**
+     * True when the knots are the Bézier ones over exactly {@code [from, to]}: {@code degree + 1}
+     * times {@code from}, then {@code degree + 1} times {@code to}, and {@code degree + 1} points.
+     */
+    static boolean onePiece(int degree, double[] knots, int count, double from, double to) {
+        if (count != degree + 1 || knots.length != 2 * degree + 2 || !(from < to)) {
+            return false;
+        }
+        for (int i = 0; i <= degree; i++) {
+            if (knots[i] != from || knots[degree + 1 + i] != to) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** {@code from}, every distinct knot strictly between, and {@code to}, in increasing order. */

@@ -130,4 +130,43 @@ class BezierDecompositionTest {
         }
         return d;
     }
+
+    @Test
+    void aSurfaceThatIsOneBezierNetComesBackAsItsOwnNetLikeTheInsertionsGive() {
+        Random rnd = new Random(53);
+        for (int n = 0; n < 200; n++) {
+            int p = 1 + rnd.nextInt(9), q = 1 + rnd.nextInt(9), dim = 3 + rnd.nextInt(2);
+            double u0 = rnd.nextGaussian(), u1 = u0 + 0.1 + rnd.nextDouble();
+            double v0 = rnd.nextGaussian(), v1 = v0 + 0.1 + rnd.nextDouble();
+            double[] ku = bezierKnots(p, u0, u1), kv = bezierKnots(q, v0, v1);
+            double[] pts = new double[(p + 1) * (q + 1) * dim];
+            for (int k = 0; k < pts.length; k++) {
+                pts[k] = 10 * rnd.nextGaussian();
+            }
+            assertTrue(BezierDecomposition.onePiece(p, ku, p + 1, u0, u1));
+            BezierDecomposition.Patches fast = BezierDecomposition.surface(p, q, ku, kv, p + 1, q + 1, pts, dim, u0, u1, v0, v1);
+            BezierDecomposition.Patches slow = BezierDecomposition.byInsertion(p, q, ku, kv, p + 1, q + 1, pts, dim, u0, u1, v0, v1);
+            assertEquals(1, fast.nets().length);
+            assertArrayEquals(slow.nets()[0], fast.nets()[0]);
+            assertArrayEquals(pts, fast.nets()[0]);
+            assertArrayEquals(slow.breaksU(), fast.breaksU());
+            assertArrayEquals(slow.breaksV(), fast.breaksV());
+        }
+    }
+
+    @Test
+    void onlyBezierKnotsOverTheWholeRangeAreOnePiece() {
+        assertTrue(BezierDecomposition.onePiece(3, new double[] {0, 0, 0, 0, 1, 1, 1, 1}, 4, 0, 1));
+        assertEquals(false, BezierDecomposition.onePiece(3, new double[] {0, 0, 0, 0, 1, 1, 1, 1}, 4, 0, 0.5));
+        assertEquals(false, BezierDecomposition.onePiece(3, new double[] {0, 0, 0, 0.5, 1, 1, 1, 1}, 5, 0, 1));
+        assertEquals(false, BezierDecomposition.onePiece(2, new double[] {0, 0, 0, 1, 1, 2}, 3, 0, 1));
+    }
+
+    private static double[] bezierKnots(int degree, double from, double to) {
+        double[] k = new double[2 * degree + 2];
+        for (int i = 0; i < k.length; i++) {
+            k[i] = i <= degree ? from : to;
+        }
+        return k;
+    }
 }

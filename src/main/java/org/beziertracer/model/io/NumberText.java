@@ -1,7 +1,6 @@
 package org.beziertracer.model.io;
 
 import java.util.Locale;
-import java.util.regex.Pattern;
 
 /**
  * Number parsing and printing shared by the readers and writers.
@@ -17,11 +16,8 @@ import java.util.regex.Pattern;
 final class NumberText {
     private NumberText() {}
 
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][+-]?\\d+)?");
     /** How overflow messages end: what the largest {@code double} is. */
     static final String BEYOND = "beyond the largest number, about 1.8e308";
-
-    private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
 
     /** Shortest round-trip text of {@code v}; whole numbers below 1e15 without a fraction. */
     static String format(double v) {
@@ -31,14 +27,54 @@ final class NumberText {
         return Double.toString(v);
     }
 
-    /** True for plain decimal or scientific notation. */
+    /**
+     * True for plain decimal or scientific notation, {@code [+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?}
+     * with ASCII digits (scanned by hand: the readers call it for every number, and a regex
+     * {@code Matcher} a call was most of what reading a large OBJ allocated).
+     */
     static boolean isDecimal(String token) {
-        return DECIMAL.matcher(token).matches();
+        int n = token.length();
+        int i = sign(token, 0);
+        int whole = digits(token, i);
+        i += whole;
+        int fraction = 0;
+        if (i < n && token.charAt(i) == '.') {
+            fraction = digits(token, i + 1);
+            i += 1 + fraction;
+        }
+        if (whole == 0 && fraction == 0) {
+            return false;
+        }
+        if (i < n && (token.charAt(i) == 'e' || token.charAt(i) == 'E')) {
+            i = sign(token, i + 1);
+            int exponent = digits(token, i);
+            if (exponent == 0) {
+                return false;
+            }
+            i += exponent;
+        }
+        return i == n;
     }
 
-    /** True for an optionally signed run of digits. */
+    /** True for an optionally signed run of ASCII digits, {@code [+-]?\d+}. */
     static boolean isWhole(String token) {
-        return WHOLE.matcher(token).matches();
+        int i = sign(token, 0);
+        int d = digits(token, i);
+        return d > 0 && i + d == token.length();
+    }
+
+    /** {@code i} past an optional sign at {@code i}. */
+    private static int sign(String s, int i) {
+        return i < s.length() && (s.charAt(i) == '+' || s.charAt(i) == '-') ? i + 1 : i;
+    }
+
+    /** How many ASCII digits start at {@code i}. */
+    private static int digits(String s, int i) {
+        int j = i;
+        while (j < s.length() && s.charAt(j) >= '0' && s.charAt(j) <= '9') {
+            j++;
+        }
+        return j - i;
     }
 
     /** True for the spellings of NaN and infinity that other tools write. */

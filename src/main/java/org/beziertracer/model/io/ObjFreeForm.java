@@ -216,20 +216,24 @@ final class ObjFreeForm {
     private int reference(String token, int position, int defined, String what, String statement, String kind) {
         int slash = token.indexOf('/');
         String v = slash >= 0 ? token.substring(0, slash) : token;
-        String expected = what + " for control point " + position + " of the " + statement;
         if (!NumberText.isWhole(v)) {
-            throw error("expected " + expected + ", found " + NumberText.describe(token));
+            throw error("expected " + expected(what, position, statement) + ", found " + NumberText.describe(token));
         }
         if (defined == 0) {
-            throw error("expected " + expected + ", found " + NumberText.describe(token) + " but no " + kind
+            throw error("expected " + expected(what, position, statement) + ", found " + NumberText.describe(token) + " but no " + kind
                     + " is defined before this line");
         }
         int index = ObjVertices.resolve(NumberText.parseWhole(v), defined);
         if (index < 0) {
-            throw error("expected " + expected + " in 1.." + defined + " or -" + defined + "..-1, found "
-                    + NumberText.describe(token) + ": index out of range");
+            throw error("expected " + expected(what, position, statement) + " in 1.." + defined + " or -" + defined
+                    + "..-1, found " + NumberText.describe(token) + ": index out of range");
         }
         return index;
+    }
+
+    /** What a control-point reference should be, for messages only (built when one is thrown). */
+    private static String expected(String what, int position, String statement) {
+        return what + " for control point " + position + " of the " + statement;
     }
 
     private void parm(String[] t) {

@@ -165,12 +165,12 @@ public final class ObjReader {
                 String s = statement.toString().strip();
                 statement.setLength(0);
                 if (!s.isEmpty()) {
-                    statement(s.split("\\s+"));
+                    statement(Fields.of(s));
                 }
             }
             if (statement.length() > 0 && !statement.toString().isBlank()) {
                 line = statementLine;
-                statement(statement.toString().strip().split("\\s+"));
+                statement(Fields.of(statement.toString()));
             }
             line = Math.max(physical, 1);
             freeForm.finish(line);
@@ -229,8 +229,11 @@ public final class ObjReader {
             int index = vertices.count() + 1;
             double[] xyz = new double[3];
             for (int c = 0; c < 3; c++) {
-                xyz[c] = NumberText.parseFinite(t[c + 1], "the " + "xyz".charAt(c) + " coordinate of vertex " + index,
-                        file, line);
+                xyz[c] = NumberText.finiteOrNaN(t[c + 1]);
+                if (Double.isNaN(xyz[c])) { // the message only when it is needed: this runs for every vertex
+                    NumberText.parseFinite(t[c + 1], "the " + "xyz".charAt(c) + " coordinate of vertex " + index,
+                            file, line);
+                }
             }
             double w = t.length == 5 ? freeForm.weight(t[4], "vertex " + index, line) : 1;
             vertices.add(xyz[0], xyz[1], xyz[2], w);

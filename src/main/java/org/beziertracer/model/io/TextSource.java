@@ -125,6 +125,12 @@ public final class TextSource {
             while (end < limit && a[end] != '\n' && a[end] != '\r') {
                 end++;
             }
+            if (sb == null && end < limit && end - start <= limits.lineChars()) {
+                chars.position(end + 1); // the whole line is in the buffer: no builder
+                line++;
+                afterCr = a[end] == '\r';
+                return new String(a, start, end - start);
+            }
             if (sb == null) {
                 sb = new StringBuilder(end - start + 16);
             }

@@ -1,0 +1,56 @@
+package org.beziertracer.model.io;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.Random;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+
+/** The hand-written scanners and splitter against the regular expressions they replace, on random text. */
+class NumberTextTest {
+
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][+-]?\\d+)?");
+    private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
+    private static final String ALPHABET = "0123456789+-.eEx \t\u000B\f\r\u00A0\u2003٣";
+
+    private static String random(Random rnd, int maxLength) {
+        int n = rnd.nextInt(maxLength + 1);
+        StringBuilder sb = new StringBuilder(n);
+        for (int i = 0; i < n; i++) {
+            // digits more often, so that long valid numbers occur too
+            sb.append(rnd.nextInt(3) == 0 ? ALPHABET.charAt(rnd.nextInt(ALPHABET.length())) : (char) ('0' + rnd.nextInt(10)));
+        }
+        return sb.toString();
+    }
+
+    @Test
+    void decimalAndWholeAgreeWithTheirRegularExpressions() {
+        Random rnd = new Random(61);
+        int decimals = 0;
+        for (int n = 0; n < 200_000; n++) {
+            String s = random(rnd, 8);
+            boolean decimal = DECIMAL.matcher(s).matches();
+            assertEquals(decimal, NumberText.isDecimal(s), s);
+            assertEquals(WHOLE.matcher(s).matches(), NumberText.isWhole(s), s);
+            decimals += decimal ? 1 : 0;
+        }
+        assertEquals(true, decimals > 20_000, "too few valid numbers drawn: " + decimals);
+        for (String s : new String[] {"1.", ".5", "+.5", "-1e-3", "1E+9", "0"}) {
+            assertEquals(true, NumberText.isDecimal(s), s);
+        }
+        for (String s : new String[] {"", ".", "+", "e5", "1e", "1e+", "1.2.3", "٣", "NaN", "0x1p3"}) {
+            assertEquals(false, NumberText.isDecimal(s), s);
+        }
+    }
+
+    @Test
+    void fieldsAreWhatStripAndSplitGive() {
+        Random rnd = new Random(67);
+        for (int n = 0; n < 100_000; n++) {
+            String s = random(rnd, 12);
+            assertArrayEquals(s.strip().split("\\s+"), Fields.of(s), "[" + s + "]");
+        }
+    }
+}
