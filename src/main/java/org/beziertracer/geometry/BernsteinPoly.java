@@ -206,14 +206,23 @@ public final class BernsteinPoly {
 
     /** The pieces on {@code [0, t]} and {@code [t, 1]}, each reparametrised to {@code [0,1]} (de Casteljau at t). */
     public BernsteinPoly[] splitAt(double t) {
-        double[] work = coeffs.clone();
-        double[] left = new double[work.length], right = new double[work.length];
-        for (int r = 0; r <= degree; r++) {
-            System.arraycopy(work, 0, left, r * dim, dim);
-            System.arraycopy(work, (degree - r) * dim, right, (degree - r) * dim, dim);
-            for (int k = 0; k < (degree - r) * dim; k++) {
-                work[k] = t == 0.5 ? 0.5 * (work[k] + work[k + dim]) : (1 - t) * work[k] + t * work[k + dim];
+        // One triangle in place: after step r, right[k] for k ≤ degree − r holds level r, and
+        // right[degree − r] is final (later steps touch lower k only); left[r] is level r at k = 0.
+        double[] left = new double[coeffs.length], right = coeffs.clone();
+        System.arraycopy(right, 0, left, 0, dim);
+        double s = 1 - t;
+        for (int r = 1; r <= degree; r++) {
+            int end = (degree - r + 1) * dim;
+            if (t == 0.5) {
+                for (int k = 0; k < end; k++) {
+                    right[k] = 0.5 * (right[k] + right[k + dim]);
+                }
+            } else {
+                for (int k = 0; k < end; k++) {
+                    right[k] = s * right[k] + t * right[k + dim];
+                }
             }
+            System.arraycopy(right, 0, left, r * dim, dim);
         }
         return new BernsteinPoly[] {new BernsteinPoly(degree, dim, left), new BernsteinPoly(degree, dim, right)};
     }
@@ -223,6 +232,9 @@ public final class BernsteinPoly {
         BernsteinPoly p = b < 1 ? splitAt(b)[0] : this;
         return a > 0 ? p.splitAt(a / b)[1] : p;
     }
+
+    /** A copy of the coefficients, {@code dim} doubles each (for tests). */
+    double[] coefficients() { return coeffs.clone(); }
 
     /** The value at {@code t} (de Casteljau), {@code dim} doubles. */
     public double[] value(double t) {

@@ -97,4 +97,32 @@ class BernsteinPolyTest {
             }
         }
     }
+
+    @Test
+    void splittingGivesTheTextbookDeCasteljauTriangleBitForBit() {
+        Random rnd = new Random(71);
+        for (int n = 0; n < 500; n++) {
+            int degree = rnd.nextInt(31), dim = 1 + rnd.nextInt(3);
+            BernsteinPoly p = random(rnd, degree, dim);
+            double t = n % 3 == 0 ? 0.5 : rnd.nextDouble();
+            // the triangle row by row: level r from level r − 1
+            double[][] level = new double[degree + 1][];
+            level[0] = p.coefficients();
+            for (int r = 1; r <= degree; r++) {
+                level[r] = new double[(degree - r + 1) * dim];
+                for (int k = 0; k < level[r].length; k++) {
+                    double a = level[r - 1][k], b = level[r - 1][k + dim];
+                    level[r][k] = t == 0.5 ? 0.5 * (a + b) : (1 - t) * a + t * b;
+                }
+            }
+            double[] left = new double[(degree + 1) * dim], right = new double[(degree + 1) * dim];
+            for (int r = 0; r <= degree; r++) {
+                System.arraycopy(level[r], 0, left, r * dim, dim);
+                System.arraycopy(level[degree - r], r * dim, right, r * dim, dim);
+            }
+            BernsteinPoly[] split = p.splitAt(t);
+            org.junit.jupiter.api.Assertions.assertArrayEquals(left, split[0].coefficients());
+            org.junit.jupiter.api.Assertions.assertArrayEquals(right, split[1].coefficients());
+        }
+    }
 }
