@@ -20,7 +20,8 @@ import picocli.CommandLine.Command;
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, versionProvider = BezierTracerCommand.Version.class,
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
                 + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
-        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class, AnalyzeCommand.class})
+        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class, AnalyzeCommand.class,
+                ConvertCommand.class})
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
 
     /** {@code --version}: the release, the Java that runs it, and which evaluation kernel runs. */
