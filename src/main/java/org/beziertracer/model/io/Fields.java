@@ -34,7 +34,7 @@ final class Fields {
     }
 
     /** The characters of the regex class {@code \s}. */
-    private static boolean separator(char c) {
+    static boolean separator(char c) {
         return c == ' ' || c == '\t' || c == '\n' || c == 0x0B || c == '\f' || c == '\r';
     }
 }

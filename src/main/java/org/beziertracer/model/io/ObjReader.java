@@ -129,6 +129,8 @@ public final class ObjReader {
         private final ObjFreeForm freeForm;
         private final ObjFaces faces;
         private int line;
+        /** The coordinates of the vertex being read. */
+        private final double[] xyz = new double[3];
 
         Parser(TextSource text) {
             this.text = text;
@@ -164,7 +166,7 @@ public final class ObjReader {
                 line = statementLine;
                 String s = statement.toString().strip();
                 statement.setLength(0);
-                if (!s.isEmpty()) {
+                if (!s.isEmpty() && !plainVertex(s)) {
                     statement(Fields.of(s));
                 }
             }
@@ -218,6 +220,38 @@ public final class ObjReader {
             };
         }
 
+        /**
+         * Reads {@code v x y z} (three finite decimals, no weight) in place, without splitting the
+         * line: most lines of a big model are such vertices. Returns false, having read nothing, for
+         * anything else, which the general path then reads or reports.
+         */
+        private boolean plainVertex(String s) {
+            int n = s.length();
+            if (n < 7 || s.charAt(0) != 'v' || !Fields.separator(s.charAt(1)) || freeForm.skipping()
+                    || vertices.count() >= limits.vertices()) {
+                return false;
+            }
+            int i = 1;
+            for (int c = 0; c < 3; c++) {
+                while (i < n && Fields.separator(s.charAt(i))) {
+                    i++;
+                }
+                int start = i;
+                while (i < n && !Fields.separator(s.charAt(i))) {
+                    i++;
+                }
+                xyz[c] = NumberText.finiteOrNaN(s, start, i);
+                if (Double.isNaN(xyz[c])) {
+                    return false;
+                }
+            }
+            if (i != n) {
+                return false; // a weight or more: the general path
+            }
+            vertices.add(xyz[0], xyz[1], xyz[2], 1);
+            return true;
+        }
+
         private void vertex(String[] t) {
             if (t.length < 4 || t.length > 5) {
                 throw error("expected 3 coordinates (and an optional weight) after v, found " + (t.length - 1)
@@ -227,7 +261,6 @@ public final class ObjReader {
                 throw error("a file may have at most " + limits.vertices() + " vertices; this is one more");
             }
             int index = vertices.count() + 1;
-            double[] xyz = new double[3];
             for (int c = 0; c < 3; c++) {
                 xyz[c] = NumberText.finiteOrNaN(t[c + 1]);
                 if (Double.isNaN(xyz[c])) { // the message only when it is needed: this runs for every vertex

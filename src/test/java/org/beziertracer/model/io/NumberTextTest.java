@@ -53,4 +53,23 @@ class NumberTextTest {
             assertArrayEquals(s.strip().split("\\s+"), Fields.of(s), "[" + s + "]");
         }
     }
+
+    @Test
+    void inPlaceParsingGivesTheBitsOfDoubleParseDouble() {
+        Random rnd = new Random(73);
+        for (int n = 0; n < 200_000; n++) {
+            String number = (rnd.nextBoolean() ? "-" : "") + rnd.nextInt(1000) + "." + Long.toString(rnd.nextLong() & Long.MAX_VALUE)
+                    + (rnd.nextInt(4) == 0 ? "e" + (rnd.nextInt(700) - 350) : "");
+            String line = "v " + number + " ";
+            double expected = Double.parseDouble(number);
+            double actual = NumberText.finiteOrNaN(line, 2, 2 + number.length());
+            if (Double.isFinite(expected)) {
+                assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual), number);
+            } else {
+                assertEquals(true, Double.isNaN(actual), number);
+            }
+        }
+        assertEquals(true, Double.isNaN(NumberText.finiteOrNaN("v 1.5x", 2, 6)));
+        assertEquals(true, Double.isNaN(NumberText.finiteOrNaN("v ", 2, 2)));
+    }
 }
