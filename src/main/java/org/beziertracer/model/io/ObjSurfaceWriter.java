@@ -28,14 +28,18 @@ import org.beziertracer.model.TrimRegion;
  * surface over its {@link PatchDomain} (so a piece keeps its parameters and its trim loops),
  * {@code cstype rat bezier} with {@code v x y z w} when it is rational. Trim curves are written
  * once each, as {@code vp} points and a {@code curv2 … end} block, before the first surface that
- * uses them. The scene's meshes follow the surfaces as {@code v}, {@code vt}, {@code vn} and
- * {@code f} statements.
+ * uses them. A control point several surfaces share (the same bits) is one {@code v} line,
+ * written before the first surface that uses it ({@link SharedVertices}). The scene's meshes
+ * follow the surfaces as {@code v}, {@code vt}, {@code vn} and {@code f} statements.
  */
 final class ObjSurfaceWriter {
     private final Writer out;
     private final StringBuilder sb = new StringBuilder(256);
     private final Map<TrimCurve, Integer> curveNumbers = new IdentityHashMap<>();
+    private final SharedVertices shared = new SharedVertices();
     private int nextVertex = 1, nextParamVertex = 1, nextTexture = 1, nextNormal = 1;
+    /** The vertex numbers of the surface being written, u fastest. */
+    private int[] refs = new int[16];
     private String cstype = "bezier";
 
     ObjSurfaceWriter(Writer out) {
@@ -151,9 +155,7 @@ final class ObjSurfaceWriter {
         sb.append("# patch ").append(number).append('\n');
         cstype(p.isRational() ? "rat bezier" : "bezier");
         double[] net = p.copyNet(), w = p.weights();
-        for (int k = 0; k < p.pointCount(); k++) {
-            vertex(net, k, w);
-        }
+        vertices(net, w, p.pointCount());
         sb.append("deg ").append(n).append(' ').append(m).append('\n');
         surf(d.u0(), d.u1(), d.v0(), d.v1(), n + 1, m + 1);
         sb.append("parm u ").append(NumberText.format(d.u0())).append(' ').append(NumberText.format(d.u1()));
@@ -169,9 +171,7 @@ final class ObjSurfaceWriter {
         sb.append("# surface from patch ").append(number).append(": ").append(s).append('\n');
         cstype((s.rational() ? "rat " : "") + s.basis().objName());
         double[] pts = s.points(), w = s.weights(), range = s.range();
-        for (int k = 0; k < s.countU() * s.countV(); k++) {
-            vertex(pts, k, w);
-        }
+        vertices(pts, w, s.countU() * s.countV());
         sb.append("deg ").append(s.degreeU()).append(' ').append(s.degreeV()).append('\n');
         surf(range[0], range[1], range[2], range[3], s.countU(), s.countV());
         values("parm u", s.parmU());
@@ -181,9 +181,8 @@ final class ObjSurfaceWriter {
         flush();
     }
 
-    /** A {@code surf} line over the next {@code countU·countV} vertices, one row of u per line. */
+    /** A {@code surf} line over the vertices just numbered ({@link #vertices}), one row of u per line. */
     private void surf(double u0, double u1, double v0, double v1, int countU, int countV) {
-        int first = nextVertex - countU * countV;
         sb.append("surf ").append(NumberText.format(u0)).append(' ').append(NumberText.format(u1)).append(' ')
                 .append(NumberText.format(v0)).append(' ').append(NumberText.format(v1));
         for (int j = 0; j < countV; j++) {
@@ -191,20 +190,35 @@ final class ObjSurfaceWriter {
                 sb.append(" \\\n    ");
             }
             for (int i = 0; i < countU; i++) {
-                sb.append(' ').append(first + j * countU + i);
+                sb.append(' ').append(refs[j * countU + i]);
             }
         }
         sb.append('\n');
     }
 
-    private void vertex(double[] xyz, int k, double[] w) {
-        sb.append("v ").append(NumberText.format(xyz[3 * k])).append(' ').append(NumberText.format(xyz[3 * k + 1]))
-                .append(' ').append(NumberText.format(xyz[3 * k + 2]));
-        if (w != null) {
-            sb.append(' ').append(NumberText.format(w[k]));
+    /**
+     * Numbers the {@code count} control points into {@link #refs}, writing a {@code v} line for
+     * each point not written before (a point patches share is written once).
+     */
+    private void vertices(double[] xyz, double[] w, int count) {
+        if (refs.length < count) {
+            refs = new int[count];
         }
-        sb.append('\n');
-        nextVertex++;
+        for (int k = 0; k < count; k++) {
+            double wk = w == null ? 1 : w[k];
+            int number = shared.intern(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2], wk);
+            if (number < 0) {
+                number = -number;
+                sb.append("v ").append(NumberText.format(xyz[3 * k])).append(' ')
+                        .append(NumberText.format(xyz[3 * k + 1])).append(' ').append(NumberText.format(xyz[3 * k + 2]));
+                if (w != null) {
+                    sb.append(' ').append(NumberText.format(wk));
+                }
+                sb.append('\n');
+                nextVertex++;
+            }
+            refs[k] = number;
+        }
     }
 
     /** The {@code curv2} blocks of the region's curves not written yet. */

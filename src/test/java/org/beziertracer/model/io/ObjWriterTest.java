@@ -58,8 +58,26 @@ class ObjWriterTest {
     }
 
     @Test
-    void laterPatchesReferToTheirOwnVertices() {
+    void aLaterPatchNamesThePointsItSharesAndWritesOnlyItsNewOnes() {
         String text = ObjWriter.toString(List.of(Models.flatGrid(2, 2), Models.flatGrid(3, 2)));
-        assertTrue(text.contains("surf 0 1 0 1 5 6 7 \\\n     8 9 10\n"), text);
+        // the 3x2 grid shares its four corners with the 2x2 one: only its two middle points are new
+        assertTrue(text.contains("# patch 2\nv 0 -1.5 0\nv 0 1.5 0\ndeg 2 1\n"), text);
+        assertTrue(text.contains("surf 0 1 0 1 1 5 2 \\\n     3 6 4\n"), text);
+    }
+
+    @Test
+    void theTeapotWritesEachDistinctControlPointOnceAndReadsBackTheSame() {
+        var teapot = Models.teapot();
+        java.util.Set<java.util.List<Double>> distinct = new java.util.HashSet<>();
+        for (var p : teapot.patches()) {
+            double[] net = p.copyNet();
+            for (int k = 0; k < net.length; k += 3) {
+                distinct.add(java.util.List.of(net[k], net[k + 1], net[k + 2]));
+            }
+        }
+        String text = ObjWriter.toString(teapot.patches());
+        long vLines = text.lines().filter(l -> l.startsWith("v ")).count();
+        assertEquals(distinct.size(), vLines);
+        assertTrue(vLines < 32 * 16, "no point shared: " + vLines);
     }
 }
