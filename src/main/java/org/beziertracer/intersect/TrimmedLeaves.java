@@ -65,9 +65,20 @@ final class TrimmedLeaves extends PatchLeaves {
         return u >= boxes[4 * s] && u <= boxes[4 * s + 1] && v >= boxes[4 * s + 2] && v <= boxes[4 * s + 3];
     }
 
-    /** True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region. */
+    /**
+     * True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region, decided
+     * as for a point just inside the patch: {@code (s,t)} is clamped to {@code [0,1]²} (a solver
+     * may stop a rounding error beyond it), an edge {@code s = 1} or {@code t = 1} maps to the
+     * domain's {@code u1} or {@code v1} exactly, and a point there that lies on a trim curve is
+     * taken a step toward the patch ({@link TrimCurves#contains(double, double, boolean, boolean,
+     * double[])}). So a loop along the surface's border trims nothing, and of two pieces that share
+     * an edge with a trim curve on it the one on the curve's inner side keeps the hit.
+     */
     static boolean inside(double[] domain, int k, TrimCurves trim, double s, double t, double[] scratch) {
-        return trim.contains(SurfaceParameters.u(domain, k, s), SurfaceParameters.v(domain, k, t), scratch);
+        boolean uBefore = s >= 1, vBefore = t >= 1;
+        double u = uBefore ? domain[4 * k + 1] : SurfaceParameters.u(domain, k, Math.max(s, 0));
+        double v = vBefore ? domain[4 * k + 3] : SurfaceParameters.v(domain, k, Math.max(t, 0));
+        return trim.contains(u, v, uBefore, vBefore, scratch);
     }
 
     @Override
