@@ -138,4 +138,15 @@ class BoundaryTrimTest {
         }
         assertEquals("0 0", misses[0] + " " + misses[1], method + ": rays of 200 through the pole that missed it, untrimmed then trimmed");
     }
+
+    @ParameterizedTest
+    @EnumSource(Method.class)
+    void theTwoFacesOfTheCadExportFixtureShowNoCrackAtTheirSharedEdge(Method method) throws java.io.IOException {
+        String text;
+        try (var in = getClass().getResourceAsStream("/org/beziertracer/model/io/cad-export.obj")) {
+            text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        }
+        List<BezierPatch> faces = org.beziertracer.model.io.ObjReader.read(text, "cad-export.obj");
+        assertEquals(0, fallThrough(faces, method, along(1, 0, 1, 1, 300, 5)), method + ": rays of 300 through x = 1");
+    }
 }

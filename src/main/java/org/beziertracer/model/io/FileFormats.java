@@ -27,7 +27,7 @@ public final class FileFormats {
 
     /** Bézier patch text ({@link BptReader}, {@link BptWriter}). */
     public static final FileFormat BPT = FileFormat.model("BPT", "Bézier patch text", List.of("bpt"),
-            BptReader::readScene, (out, scene) -> {
+            (text, notes) -> BptReader.readScene(text), (out, scene) -> {
                 // a BPT file holds Bézier patches only: a mesh would be lost without a word
                 int meshes = scene.meshes().size();
                 if (meshes > 0) {

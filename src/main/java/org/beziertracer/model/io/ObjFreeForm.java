@@ -29,7 +29,8 @@ import org.beziertracer.model.TrimRegion;
 final class ObjFreeForm {
 
     /** Statements handled here. */
-    static final Set<String> KEYWORDS = Set.of("vp", "cstype", "deg", "surf", "curv2", "parm", "trim", "hole", "end");
+    static final Set<String> KEYWORDS = Set.of("vp", "cstype", "deg", "surf", "curv2", "curv", "parm", "trim", "hole",
+            "end");
     private static final double[] DEFAULT_PARM = {0, 1};
 
     private final String file;
@@ -73,6 +74,7 @@ final class ObjFreeForm {
             case "deg" -> degree(t);
             case "surf" -> surf(t);
             case "curv2" -> curv2(t);
+            case "curv" -> curv();
             case "parm" -> parm(t);
             case "trim" -> trim(t, false);
             case "hole" -> trim(t, true);
@@ -203,6 +205,17 @@ final class ObjFreeForm {
         block = b;
     }
 
+    /**
+     * A 3-D curve ({@code curv u0 u1 v1 v2 …} … {@code end}): not drawn, so its block is read past
+     * (its {@code parm} lines unchecked); {@link ObjReader} counts it for the note.
+     */
+    private void curv() {
+        if (block != null) {
+            throw error("expected end for the " + block.keyword() + " at line " + block.line + ", found curv");
+        }
+        block = Block.skipped("curv", line);
+    }
+
     private void openBlock(String keyword) {
         if (block != null) {
             throw error("expected end for the " + block.keyword() + " at line " + block.line + ", found " + keyword);
@@ -235,6 +248,9 @@ final class ObjFreeForm {
     private void parm(String[] t) {
         if (block == null) {
             throw error("expected parm inside a surf or curv2 … end block, found parm outside one");
+        }
+        if (block.skipped) {
+            return;
         }
         boolean isU = t.length > 1 && t[1].equals("u");
         if (t.length < 4 || !(isU || t[1].equals("v")) || (!isU && block.degreeV == 0)) {
@@ -322,6 +338,9 @@ final class ObjFreeForm {
         }
         Block b = block;
         block = null;
+        if (b.skipped) {
+            return;
+        }
         if (b.degreeV == 0) {
             curves.add(ObjBlocks.curve(b, vertices, file));
             return;
@@ -352,14 +371,27 @@ final class ObjFreeForm {
         double[] parmU, parmV;
         int parmULine, parmVLine;
         final List<TrimLoop> outer = new ArrayList<>(), holes = new ArrayList<>();
+        /** True for a block read past without building anything ({@code curv}). */
+        final boolean skipped;
 
         Block(String keyword, int line, SplineBasis basis, boolean rational, int degreeU, int degreeV) {
+            this(keyword, line, basis, rational, degreeU, degreeV, false);
+        }
+
+        private Block(String keyword, int line, SplineBasis basis, boolean rational, int degreeU, int degreeV,
+                      boolean skipped) {
+            this.skipped = skipped;
             this.keyword = keyword;
             this.line = line;
             this.basis = basis;
             this.rational = rational;
             this.degreeU = degreeU;
             this.degreeV = degreeV;
+        }
+
+        /** A block read past: its {@code parm} lines are not checked and its {@code end} builds nothing. */
+        static Block skipped(String keyword, int line) {
+            return new Block(keyword, line, null, false, 0, 0, true);
         }
 
         String keyword() { return keyword; }

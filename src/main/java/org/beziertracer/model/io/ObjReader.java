@@ -39,12 +39,14 @@ import org.beziertracer.model.Scene;
  * Each surface is kept as read ({@link org.beziertracer.model.FreeFormSurface}) and becomes its
  * Bézier pieces by knot insertion, in the order v piece major, u piece fastest; each piece
  * reports its part of the surface's parameter range (the {@code surf} range, which may be any
- * part of the knot range) and carries the trim loops. Points and lines ({@code p}, {@code l}),
+ * part of the knot range) and carries the trim loops. What CAD tools write beside the surfaces
+ * and is not drawn — 3-D curves ({@code curv} … {@code end}), special curves and points
+ * ({@code scrv}, {@code sp}), connectivity ({@code con}), points and lines ({@code p},
+ * {@code l}) — is skipped and counted in one note ({@link Model#notes()}, {@link ObjSkipped});
  * grouping statements ({@code g}, {@code o}, {@code s}, {@code usemtl}, {@code mtllib}, …) and
- * display hints ({@code ctech}, {@code stech}) are skipped. Basis-matrix,
- * Cardinal and Taylor forms, 3-D curves ({@code curv}), special curves and points
- * ({@code scrv}, {@code sp}) and connectivity ({@code con}) get a one-line "unsupported: …" error
- * with the line number. A file without any surface or face is an error.
+ * display hints ({@code ctech}, {@code stech}) are skipped without a note. Basis-matrix,
+ * Cardinal and Taylor forms get a one-line "unsupported: …" error with the line number. A file
+ * without any surface or face is an error.
  *
  * <p>Every error is a one-line {@link ModelFormatException} whose line number is the first
  * physical line of the statement ({@link ObjFreeForm} lists the free-form ones). The caps of
@@ -56,11 +58,10 @@ import org.beziertracer.model.Scene;
 public final class ObjReader {
     private ObjReader() {}
 
-    private static final Set<String> SKIPPED = Set.of("p", "l", "g", "o", "s", "mg",
+    private static final Set<String> SKIPPED = Set.of("g", "o", "s", "mg",
             "usemtl", "mtllib", "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "maplib",
             "usemap", "ctech", "stech", "call", "csh");
-    private static final Set<String> UNSUPPORTED = Set.of("curv", "scrv", "sp", "con",
-            "bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
+    private static final Set<String> UNSUPPORTED = Set.of("bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
 
     /** A statement joined from continuation lines may hold this many lines' worth of characters. */
     static final int STATEMENT_LINES = 4;
@@ -74,15 +75,23 @@ public final class ObjReader {
         }
     }
 
-    /** What an OBJ file holds: its surfaces' Bézier patches and its faces' mesh (null without faces). */
-    public record Model(List<BezierPatch> patches, Mesh mesh) {}
+    /**
+     * What an OBJ file holds: its surfaces' Bézier patches, its faces' mesh (null without faces)
+     * and the notes of the read (what it skipped, {@link ObjSkipped}; empty when nothing).
+     */
+    public record Model(List<BezierPatch> patches, Mesh mesh, List<String> notes) {
+        public Model {
+            notes = List.copyOf(notes);
+        }
+    }
 
     /**
      * The patches and the mesh of {@code text} as a scene, both with material 0 (the reader
      * {@link FileFormats#OBJ} declares).
      */
-    static Scene readScene(TextSource text) throws IOException {
+    static Scene readScene(TextSource text, List<String> notes) throws IOException {
         Model model = readModel(text);
+        notes.addAll(model.notes());
         Scene.Builder b = Scene.builder().patches(model.patches());
         if (model.mesh() != null) {
             b.addMesh(model.mesh(), 0);
@@ -128,6 +137,7 @@ public final class ObjReader {
         private final ObjVertices vertices = new ObjVertices();
         private final ObjFreeForm freeForm;
         private final ObjFaces faces;
+        private final ObjSkipped skipped = new ObjSkipped();
         private int line;
 
         Parser(TextSource text) {
@@ -179,11 +189,18 @@ public final class ObjReader {
                 throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
                         + (physical == 0 ? "an empty file" : "none"));
             }
-            return new Model(patches, faces.mesh(vertices));
+            String note = skipped.note(file);
+            return new Model(patches, faces.mesh(vertices), note == null ? List.of() : List.of(note));
         }
 
         private void statement(String[] t) {
             String keyword = t[0];
+            if (ObjSkipped.counts(keyword)) {
+                skipped.add(keyword);
+                if (!keyword.equals("curv")) {
+                    return; // a curv opens a block (parm, end) the free-form state reads past
+                }
+            }
             if (freeForm.skipping() || ObjFreeForm.KEYWORDS.contains(keyword)) {
                 freeForm.statement(t, line);
                 return;
@@ -210,9 +227,6 @@ public final class ObjReader {
 
         private static String explain(String keyword) {
             return switch (keyword) {
-                case "curv" -> "3-D free-form curves";
-                case "scrv", "sp" -> "special curves and points";
-                case "con" -> "surface connectivity";
                 case "bmat", "step" -> "basis-matrix surfaces";
                 default -> "free-form attribute";
             };
