@@ -47,12 +47,13 @@ public final class FileFormat {
     }
 
     /**
-     * A model format's reader: surfaces only. It adds to {@code notes} one line for each thing
-     * worth telling that is not an error (what it read past without drawing, naming the file).
+     * A model format's reader: surfaces only. {@code baseDir} resolves the files a file names
+     * (OBJ {@code call}; null = the working directory). It adds to {@code notes} one line for each
+     * thing worth telling that is not an error (what it read past without drawing, naming the file).
      */
     @FunctionalInterface
     public interface ModelReader {
-        Scene read(TextSource text, List<String> notes) throws IOException;
+        Scene read(TextSource text, Path baseDir, List<String> notes) throws IOException;
     }
 
     /** A model format's writer: the scene's surfaces only. */
@@ -93,7 +94,7 @@ public final class FileFormat {
         return new FileFormat(name, description, extensions, Holds.MODEL,
                 (text, baseDir) -> {
                     List<String> notes = new ArrayList<>();
-                    Scene scene = reader.read(text, notes);
+                    Scene scene = reader.read(text, baseDir, notes);
                     return new SceneDocument(scene, RenderSettings.defaults(), notes);
                 },
                 writer == null ? null : (out, doc) -> writer.write(out, doc.scene()));

@@ -33,7 +33,7 @@ final class ObjFreeForm {
             "end");
     private static final double[] DEFAULT_PARM = {0, 1};
 
-    private final String file;
+    private String file;
     private final ObjVertices vertices;
     private final ReadLimits limits;
     private final List<BezierPatch> patches = new ArrayList<>();
@@ -52,6 +52,11 @@ final class ObjFreeForm {
         this.file = file;
         this.vertices = vertices;
         this.limits = limits;
+    }
+
+    /** Errors from now on name {@code name} (the file a {@code call} reads, then the caller again). */
+    void file(String name) {
+        this.file = name;
     }
 
     /** The Bézier patches of every surface read so far. */

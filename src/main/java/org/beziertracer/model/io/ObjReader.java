@@ -2,6 +2,7 @@ package org.beziertracer.model.io;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 
@@ -30,6 +31,9 @@ import org.beziertracer.model.Scene;
  *       an outer loop or a hole made of curve pieces (a negative {@code c} counts back);</li>
  *   <li>{@code end}; {@code #} comments; a trailing backslash continues a statement on the next
  *       line;</li>
+ *   <li>{@code call FILE.obj}: the named file, relative to the calling one, read in place (one
+ *       vertex list across the files); cycles, nesting deeper than 8 and arguments are refused
+ *       ({@link ObjCalls});</li>
  *   <li>{@code vt u [v [w]]}, {@code vn x y z} and {@code f} (or {@code fo}) faces of 3 or more
  *       corners {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn} (1-based or negative):
  *       every face of the file goes into one {@link Mesh}, cut into fans of triangles
@@ -60,7 +64,7 @@ public final class ObjReader {
 
     private static final Set<String> SKIPPED = Set.of("g", "o", "s", "mg",
             "usemtl", "mtllib", "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "maplib",
-            "usemap", "ctech", "stech", "call", "csh");
+            "usemap", "ctech", "stech", "csh");
     private static final Set<String> UNSUPPORTED = Set.of("bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
 
     /** A statement joined from continuation lines may hold this many lines' worth of characters. */
@@ -89,8 +93,8 @@ public final class ObjReader {
      * The patches and the mesh of {@code text} as a scene, both with material 0 (the reader
      * {@link FileFormats#OBJ} declares).
      */
-    static Scene readScene(TextSource text, List<String> notes) throws IOException {
-        Model model = readModel(text);
+    static Scene readScene(TextSource text, Path baseDir, List<String> notes) throws IOException {
+        Model model = readModel(text, baseDir);
         notes.addAll(model.notes());
         Scene.Builder b = Scene.builder().patches(model.patches());
         if (model.mesh() != null) {
@@ -106,7 +110,17 @@ public final class ObjReader {
      *                              naming {@link TextSource#fileName()}
      */
     public static Model readModel(TextSource text) throws IOException {
-        return new Parser(text).parse();
+        return readModel(text, null);
+    }
+
+    /**
+     * Reads OBJ text whose {@code call} statements name files relative to {@code baseDir} (null:
+     * the working directory); {@link ObjCalls}.
+     *
+     * @throws ModelFormatException for any problem, naming the file (the called one for a problem in it)
+     */
+    public static Model readModel(TextSource text, Path baseDir) throws IOException {
+        return new Parser(text, baseDir).parse();
     }
 
     /** {@link #readModel(TextSource)} of in-memory text; for tests. */
@@ -133,22 +147,41 @@ public final class ObjReader {
     private static final class Parser {
         private final TextSource text;
         private final ReadLimits limits;
-        private final String file;
+        private final String topFile;
+        private final ObjCalls calls;
+        /** The file being read (a called one while its statements are read). */
+        private String file;
         private final ObjVertices vertices = new ObjVertices();
         private final ObjFreeForm freeForm;
         private final ObjFaces faces;
         private final ObjSkipped skipped = new ObjSkipped();
         private int line;
 
-        Parser(TextSource text) {
+        Parser(TextSource text, Path baseDir) {
             this.text = text;
             this.limits = text.limits();
             this.file = text.fileName();
+            this.topFile = file;
+            this.calls = new ObjCalls(file, baseDir);
             this.freeForm = new ObjFreeForm(file, vertices, limits);
             this.faces = new ObjFaces(file, limits);
         }
 
         Model parse() throws IOException {
+            int physical = readAll(text);
+            line = Math.max(physical, 1);
+            freeForm.finish(line);
+            List<BezierPatch> patches = freeForm.patches();
+            if (patches.isEmpty() && !faces.any()) {
+                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
+                        + (physical == 0 ? "an empty file" : "none"));
+            }
+            String note = skipped.note(topFile);
+            return new Model(patches, faces.mesh(vertices), note == null ? List.of() : List.of(note));
+        }
+
+        /** Reads the statements of {@code text} (the file opened, or a called one); its last line number. */
+        private int readAll(TextSource text) throws IOException {
             int physical = 0;
             String raw;
             StringBuilder statement = new StringBuilder();
@@ -182,18 +215,31 @@ public final class ObjReader {
                 line = statementLine;
                 statement(statement.toString().strip().split("\\s+"));
             }
-            line = Math.max(physical, 1);
-            freeForm.finish(line);
-            List<BezierPatch> patches = freeForm.patches();
-            if (patches.isEmpty() && !faces.any()) {
-                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
-                        + (physical == 0 ? "an empty file" : "none"));
-            }
-            String note = skipped.note(file);
-            return new Model(patches, faces.mesh(vertices), note == null ? List.of() : List.of(note));
+            return physical;
         }
 
-        private void statement(String[] t) {
+        /** {@code call FILE.obj}: the file's statements, read in place ({@link ObjCalls}). */
+        private void call(String[] t) throws IOException {
+            TextSource called = calls.enter(t, line, limits);
+            int callLine = line;
+            try {
+                named(calls.current());
+                readAll(called);
+            } finally {
+                calls.leave();
+                named(calls.current());
+                line = callLine;
+            }
+        }
+
+        /** Errors from now on name {@code name}. */
+        private void named(String name) {
+            file = name;
+            freeForm.file(name);
+            faces.file(name);
+        }
+
+        private void statement(String[] t) throws IOException {
             String keyword = t[0];
             if (ObjSkipped.counts(keyword)) {
                 skipped.add(keyword);
@@ -210,6 +256,7 @@ public final class ObjReader {
                 case "vt" -> faces.textureVertex(t, line);
                 case "vn" -> faces.normal(t, line);
                 case "f", "fo" -> faces.face(t, line, vertices.count());
+                case "call" -> call(t);
                 default -> other(keyword);
             }
         }
