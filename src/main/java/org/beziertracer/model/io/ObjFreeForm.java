@@ -107,6 +107,9 @@ final class ObjFreeForm {
     // ------------------------------------------------------------------ state statements
 
     private void paramVertex(String[] t) {
+        if (t.length == 2) {
+            throw error("unsupported: vp u (1-D parameter vertices); trim curves need vp u v [w]");
+        }
         if (t.length < 3 || t.length > 4) {
             throw error("expected u v (and an optional weight) after vp, found " + (t.length - 1) + " values");
         }
@@ -194,9 +197,9 @@ final class ObjFreeForm {
 
     private void curv2(String[] t) {
         openBlock("curv2");
-        if (degreeU == 0 || degreeV != 0) {
-            throw error("expected deg n (one degree) before curv2, found "
-                    + (degreeU == 0 ? "no deg statement" : "deg " + degreeU + " " + degreeV));
+        // a curve needs only the first degree: after deg n m it is of degree n (the spec reads on)
+        if (degreeU == 0) {
+            throw error("expected deg n before curv2, found no deg statement");
         }
         if (t.length < 3) {
             throw error("expected curv2 followed by at least 2 parameter-vertex indices, found " + (t.length - 1));
@@ -278,7 +281,8 @@ final class ObjFreeForm {
             run = values[k] == values[k - 1] ? run + 1 : 1;
             if (run > degree + 1) {
                 throw error("expected each knot at most degree + 1 = " + (degree + 1) + " times in parm " + t[1]
-                        + ", found " + NumberText.describe(t[k + 2]) + " " + run + " times");
+                        + ", found " + NumberText.describe(t[k + 2]) + " " + (run + repeats(t, k + 3, values[k]))
+                        + " times");
             }
         }
         if (isU) {
@@ -288,6 +292,15 @@ final class ObjFreeForm {
             block.parmV = values;
             block.parmVLine = line;
         }
+    }
+
+    /** How many tokens from {@code from} on repeat the value {@code knot} (the rest of a run, for its count). */
+    private static int repeats(String[] t, int from, double knot) {
+        int n = 0;
+        while (from + n < t.length && NumberText.finiteOrNaN(t[from + n]) == knot) {
+            n++;
+        }
+        return n;
     }
 
     private void trim(String[] t, boolean hole) {

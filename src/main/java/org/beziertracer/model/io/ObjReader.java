@@ -275,7 +275,12 @@ public final class ObjReader {
         private static String explain(String keyword) {
             return switch (keyword) {
                 case "bmat", "step" -> "basis-matrix surfaces";
-                default -> "free-form attribute";
+                case "bsp" -> "a superseded geometry statement of older OBJ versions: a B-spline patch";
+                case "bzp" -> "a superseded geometry statement of older OBJ versions: a Bézier patch";
+                case "cdc" -> "a superseded geometry statement of older OBJ versions: a Cardinal curve";
+                case "cdp" -> "a superseded geometry statement of older OBJ versions: a Cardinal patch";
+                default -> "a superseded geometry statement of older OBJ versions: the resolution of bsp, bzp, "
+                        + "cdc and cdp";
             };
         }
 
