@@ -68,17 +68,18 @@ final class TrimmedLeaves extends PatchLeaves {
     /**
      * True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region, decided
      * as for a point just inside the patch: {@code (s,t)} is clamped to {@code [0,1]²} (a solver
-     * may stop a rounding error beyond it), an edge {@code s = 1} or {@code t = 1} maps to the
-     * domain's {@code u1} or {@code v1} exactly, and a point there that lies on a trim curve is
-     * taken a step toward the patch ({@link TrimCurves#contains(double, double, boolean, boolean,
-     * double[])}). So a loop along the surface's border trims nothing, and of two pieces that share
-     * an edge with a trim curve on it the one on the curve's inner side keeps the hit.
+     * may stop a rounding error beyond it), a surface parameter that maps onto or past the
+     * domain's {@code u1} or {@code v1} is that edge exactly, and a point there that lies on a trim
+     * curve is taken a step toward the patch ({@link TrimCurves#contains(double, double, boolean,
+     * boolean, double[])}). So a loop along the surface's border trims nothing, and of two pieces
+     * that share an edge with a trim curve on it the one on the curve's inner side keeps the hit.
      */
     static boolean inside(double[] domain, int k, TrimCurves trim, double s, double t, double[] scratch) {
-        boolean uBefore = s >= 1, vBefore = t >= 1;
-        double u = uBefore ? domain[4 * k + 1] : SurfaceParameters.u(domain, k, Math.max(s, 0));
-        double v = vBefore ? domain[4 * k + 3] : SurfaceParameters.v(domain, k, Math.max(t, 0));
-        return trim.contains(u, v, uBefore, vBefore, scratch);
+        double u1 = domain[4 * k + 1], v1 = domain[4 * k + 3];
+        double u = SurfaceParameters.u(domain, k, Math.min(Math.max(s, 0), 1));
+        double v = SurfaceParameters.v(domain, k, Math.min(Math.max(t, 0), 1));
+        boolean uBefore = u >= u1, vBefore = v >= v1;
+        return trim.contains(uBefore ? u1 : u, vBefore ? v1 : v, uBefore, vBefore, scratch);
     }
 
     @Override

@@ -149,4 +149,29 @@ class BoundaryTrimTest {
         List<BezierPatch> faces = org.beziertracer.model.io.ObjReader.read(text, "cad-export.obj");
         assertEquals(0, fallThrough(faces, method, along(1, 0, 1, 1, 300, 5)), method + ": rays of 300 through x = 1");
     }
+
+    @org.junit.jupiter.api.Test
+    void aHitJustBelowTheEdgeThatMapsOntoU1ByRoundingIsStillInside() {
+        // pieces of surfaces over awkward ranges: s a few ulps below 1 may map onto u1 (or past it)
+        double[][] ranges = {{0.1, 0.7}, {0.2, 0.7}, {1.0 / 3, 2.0 / 3}, {-0.3, 0.9}, {0.7, 1.1}};
+        double[] scratch = new double[org.beziertracer.geometry.TrimCurves.SCRATCH_LENGTH];
+        int ontoEdge = 0;
+        for (double[] r : ranges) {
+            double[] domain = {r[0], r[1], r[0], r[1]};
+            var trim = org.beziertracer.geometry.TrimCurves.of(boundary(r[0], r[1], r[0], r[1]));
+            double s = 1;
+            for (int k = 0; k < 40; k++, s = Math.nextDown(s)) {
+                if (k > 0 && SurfaceParameters.u(domain, 0, s) >= r[1]) {
+                    ontoEdge++;
+                }
+                String at = "range " + r[0] + ".." + r[1] + ", s = " + s;
+                assertEquals(true, TrimmedLeaves.inside(domain, 0, trim, s, 0.5, scratch), "u edge, " + at);
+                assertEquals(true, TrimmedLeaves.inside(domain, 0, trim, 0.5, s, scratch), "v edge, " + at);
+                assertEquals(true, TrimmedLeaves.inside(domain, 0, trim, s, s, scratch), "corner, " + at);
+            }
+            assertEquals(true, TrimmedLeaves.inside(domain, 0, trim, 1 + 1e-9, 0.5, scratch), "a rounding error past the edge");
+            assertEquals(true, TrimmedLeaves.inside(domain, 0, trim, -1e-9, 0.5, scratch), "a rounding error before u0");
+        }
+        assertEquals(true, ontoEdge > 0, "cases where s < 1 maps onto u1 (the ones this test is for): " + ontoEdge);
+    }
 }
