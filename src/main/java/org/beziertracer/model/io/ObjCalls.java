@@ -37,7 +37,8 @@ final class ObjCalls {
         Path key = null;
         if (baseDir != null) {
             try {
-                key = baseDir.resolve(Path.of(fileName).getFileName()).toAbsolutePath().normalize();
+                Path name = Path.of(fileName).getFileName();
+                key = name == null ? null : baseDir.resolve(name).toAbsolutePath().normalize();
             } catch (InvalidPathException e) {
                 key = null; // a name that is no path (in-memory text): it cannot be called again
             }
