@@ -369,6 +369,14 @@ public final class AppModel {
         public void failed(String title, Throwable e) { AppModel.this.failed(title, e); }
     }
 
+    /**
+     * The status line after an open: {@code opened cad.obj}, then the reader's notes (what it read
+     * past without drawing), shown this once: {@code opened cad.obj — cad.obj: skipped 2 curv (…)}.
+     */
+    static String openedMessage(String name, java.util.List<String> notes) {
+        return notes.isEmpty() ? "opened " + name : "opened " + name + " — " + String.join("; ", notes);
+    }
+
     private final class LoaderTarget implements DocumentLoader.Target {
         @Override
         public void opened(DocumentLoader.Loaded l) {
@@ -391,7 +399,7 @@ public final class AppModel {
             if (l.source() != null) {
                 prefs.addRecent(l.source());
             }
-            status.message("opened " + l.name());
+            status.message(openedMessage(l.name(), l.document().notes()));
         }
 
         @Override

@@ -11,6 +11,7 @@ import org.beziertracer.app.ContinuityAnalysis.Tolerances;
 import org.beziertracer.geometry.BorderContinuity;
 import org.beziertracer.geometry.BorderStrip;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.SceneFiles;
 
 import com.google.gson.GsonBuilder;
@@ -75,7 +76,7 @@ final class AnalyzeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Scene scene = SceneFiles.load(model).scene();
+        Scene scene = ReadNotes.show(SceneFiles.load(model), spec.commandLine().getErr()).scene();
         Tolerances d = Tolerances.defaults(scene);
         Tolerances tol = new Tolerances(check("--g0", g0, d.g0()), check("--g1", g1, d.g1Degrees()),
                 check("--g2", g2, d.g2()));

@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.SceneFiles;
 
 import org.beziertracer.intersect.HeapBudget;
@@ -23,6 +24,7 @@ import picocli.CommandLine.Spec;
  * {@code info MODEL_OR_SCENE}: prints patch count, the degree histogram, the rational and trimmed
  * patches and the free-form surfaces they came from ({@link SurfaceSummary}), the control-point
  * bounding box and, for a scene, its planes, spheres and lights.
+ * The reader's notes follow the model line, one {@code note: …} each ({@link ReadNotes}).
  * <pre>
  * model: teapot-room
  * patches: 32
@@ -56,9 +58,11 @@ final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Scene scene = SceneFiles.load(model, Method::parse).scene();
+        SceneDocument doc = SceneFiles.load(model, Method::parse);
+        Scene scene = doc.scene();
         PrintWriter out = spec.commandLine().getOut();
         out.println("model: " + model);
+        ReadNotes.show(doc, out);
         out.println("patches: " + scene.patchCount());
         out.println("degrees: " + degreeHistogram(scene));
         SurfaceSummary.lines(scene).forEach(out::println);

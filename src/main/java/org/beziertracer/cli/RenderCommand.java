@@ -159,7 +159,7 @@ final class RenderCommand implements Callable<Integer> {
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
                 .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
                 .withAnalysis(analysisOptions.settings());
-        SceneDocument doc = SceneFiles.load(model, Method::parse);
+        SceneDocument doc = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr());
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
         Scene scene = doc.scene();

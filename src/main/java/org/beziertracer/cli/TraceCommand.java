@@ -25,6 +25,7 @@ import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
 import org.beziertracer.model.io.Echo;
 import org.beziertracer.model.io.IoReasons;
+import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.TextSource;
 
@@ -96,7 +97,7 @@ final class TraceCommand implements Callable<Integer> {
         if (random != null && (random < 0 || random > 100_000_000)) {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
-        Scene scene = SceneFiles.load(model, Method::parse).scene();
+        Scene scene = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr()).scene();
         boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.meshes().isEmpty();
         IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
         HeapBudget.require(model, scene, io);

@@ -38,6 +38,16 @@ import org.beziertracer.model.TrimRegion;
  * {@link #TINY} of the region's size is replaced by its chord, so the answer is exact for every
  * point farther than that from the curves. A region point is inside when it is inside some
  * outer loop (or there is none) and inside no hole.
+ *
+ * <h2>Points on a curve</h2>
+ * The half-open rule decides a point on a curve as the point an infinitesimal step toward
+ * {@code +u} and {@code +v} (a symbolic perturbation in the sense of Edelsbrunner and Mücke,
+ * "Simulation of Simplicity", ACM TOG 9(1), 1990): every point of the plane belongs to exactly
+ * one of two regions that share a curve, so no ray slips between them. The step may also be taken
+ * toward {@code −u} or {@code −v} ({@link #contains(double, double, boolean, boolean, double[])}):
+ * a hit on a patch's {@code u1} or {@code v1} edge is decided as a point just inside the patch,
+ * so a loop running along the domain's border (a CAD face trimmed by its own edges) keeps its
+ * {@code u_max} and {@code v_max} edges and a sphere's pole.
  */
 public final class TrimCurves {
 
@@ -141,19 +151,32 @@ public final class TrimCurves {
     public int segmentCount() { return count; }
 
     /**
-     * True when {@code (u,v)} (surface parameters) is in the trimmed region. Allocation-free for
-     * regions of up to 64 loops; {@code scratch} needs {@link #SCRATCH_LENGTH} doubles.
+     * True when {@code (u,v)} (surface parameters) is in the trimmed region, a point on a curve
+     * decided as the point a step toward {@code +u, +v}. Allocation-free for regions of up to 64
+     * loops; {@code scratch} needs {@link #SCRATCH_LENGTH} doubles.
      */
     public boolean contains(double u, double v, double[] scratch) {
+        return contains(u, v, false, false, scratch);
+    }
+
+    /**
+     * True when {@code (u,v)} is in the trimmed region, a point on a curve decided as the point an
+     * infinitesimal step toward {@code −u} when {@code uBefore} (else {@code +u}) and toward
+     * {@code −v} when {@code vBefore} (else {@code +v}). Exact like {@link #contains(double, double,
+     * double[])}; allocation-free for regions of up to 64 loops.
+     */
+    public boolean contains(double u, double v, boolean uBefore, boolean vBefore, double[] scratch) {
         long parity = 0; // bit l: loop l crossed an odd number of times (loops ≥ 64 go to the slow path)
         boolean[] odd = hole.length > 64 ? new boolean[hole.length] : null;
         for (int s = 0; s < count; s++) {
             int b = 4 * s;
-            if (boxes[b + 2] > v || boxes[b + 3] <= v || boxes[b + 1] <= u) {
+            if (above(boxes[b + 2], v, vBefore) || !above(boxes[b + 3], v, vBefore) || !right(boxes[b + 1], u, uBefore)) {
                 continue; // wholly above, below or left: no crossing
             }
             // wholly right: a crossing exactly when the end points lie on different sides
-            boolean crossed = boxes[b] > u ? (endV[2 * s] > v) != (endV[2 * s + 1] > v) : crossings(s, u, v, scratch);
+            boolean crossed = right(boxes[b], u, uBefore)
+                    ? above(endV[2 * s], v, vBefore) != above(endV[2 * s + 1], v, vBefore)
+                    : crossings(s, u, v, uBefore, vBefore, scratch);
             if (crossed) {
                 if (odd != null) {
                     odd[loop[s]] ^= true;
@@ -192,8 +215,8 @@ public final class TrimCurves {
         return contains(0.5 * (u0 + u1), 0.5 * (v0 + v1), scratch) ? INSIDE : OUTSIDE;
     }
 
-    /** Parity of the crossings of segment {@code s} with the half-line right of {@code (u,v)}. */
-    private boolean crossings(int s, double u, double v, double[] arena) {
+    /** Parity of the crossings of segment {@code s} with the half-line right of {@code (u,v)}, perturbed as told. */
+    private boolean crossings(int s, double u, double v, boolean uBefore, boolean vBefore, double[] arena) {
         int d = degree[s], len = 3 * (d + 1), stride = 3 * DeCasteljau.MAX_ORDER;
         System.arraycopy(points, offset[s], arena, 0, len);
         boolean odd = false;
@@ -202,19 +225,19 @@ public final class TrimCurves {
             int e = (top - 1) * stride;
             box(arena, e, d, arena, BOX);
             double uMin = arena[BOX], uMax = arena[BOX + 1], vMin = arena[BOX + 2], vMax = arena[BOX + 3];
-            if (vMin > v || vMax <= v || uMax <= u) {
+            if (above(vMin, v, vBefore) || !above(vMax, v, vBefore) || !right(uMax, u, uBefore)) {
                 top--;
                 continue;
             }
             int last = e + 3 * d;
             double y0 = arena[e + 1] / arena[e + 2], y1 = arena[last + 1] / arena[last + 2];
-            if (uMin > u) {
-                odd ^= (y0 > v) != (y1 > v);
+            if (right(uMin, u, uBefore)) {
+                odd ^= above(y0, v, vBefore) != above(y1, v, vBefore);
                 top--;
                 continue;
             }
             if (Math.max(uMax - uMin, vMax - vMin) <= tiny || top == STACK) {
-                odd ^= chordCrosses(arena[e] / arena[e + 2], y0, arena[last] / arena[last + 2], y1, u, v);
+                odd ^= chordCrosses(arena[e] / arena[e + 2], y0, arena[last] / arena[last + 2], y1, u, v, uBefore, vBefore);
                 top--;
                 continue;
             }
@@ -226,11 +249,27 @@ public final class TrimCurves {
 
     /** Crossing of the segment (x0,y0)–(x1,y1) with the half-line right of (u,v), half-open in v. */
     static boolean chordCrosses(double x0, double y0, double x1, double y1, double u, double v) {
-        if ((y0 > v) == (y1 > v)) {
+        return chordCrosses(x0, y0, x1, y1, u, v, false, false);
+    }
+
+    /** {@link #chordCrosses(double, double, double, double, double, double)} for the point perturbed as told. */
+    static boolean chordCrosses(double x0, double y0, double x1, double y1, double u, double v, boolean uBefore,
+            boolean vBefore) {
+        if (above(y0, v, vBefore) == above(y1, v, vBefore)) {
             return false;
         }
         double x = x0 + (x1 - x0) * ((v - y0) / (y1 - y0));
-        return x > u;
+        return right(x, u, uBefore);
+    }
+
+    /** True when curve ordinate {@code y} lies above the point's {@code v} (a step below it when {@code vBefore}, above else). */
+    private static boolean above(double y, double v, boolean vBefore) {
+        return vBefore ? y >= v : y > v;
+    }
+
+    /** True when curve abscissa {@code x} lies right of the point's {@code u} (perturbed as in {@link #above}). */
+    private static boolean right(double x, double u, boolean uBefore) {
+        return uBefore ? x >= u : x > u;
     }
 
     /** True when some piece of segment {@code s} of size above {@code fine} meets the box (conservative). */

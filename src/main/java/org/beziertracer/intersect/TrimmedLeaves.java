@@ -65,9 +65,21 @@ final class TrimmedLeaves extends PatchLeaves {
         return u >= boxes[4 * s] && u <= boxes[4 * s + 1] && v >= boxes[4 * s + 2] && v <= boxes[4 * s + 3];
     }
 
-    /** True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region. */
+    /**
+     * True when patch {@code k}'s own parameters {@code (s,t)} lie inside its trim region, decided
+     * as for a point just inside the patch: {@code (s,t)} is clamped to {@code [0,1]²} (a solver
+     * may stop a rounding error beyond it), a surface parameter that maps onto or past the
+     * domain's {@code u1} or {@code v1} is that edge exactly, and a point there that lies on a trim
+     * curve is taken a step toward the patch ({@link TrimCurves#contains(double, double, boolean,
+     * boolean, double[])}). So a loop along the surface's border trims nothing, and of two pieces
+     * that share an edge with a trim curve on it the one on the curve's inner side keeps the hit.
+     */
     static boolean inside(double[] domain, int k, TrimCurves trim, double s, double t, double[] scratch) {
-        return trim.contains(SurfaceParameters.u(domain, k, s), SurfaceParameters.v(domain, k, t), scratch);
+        double u1 = domain[4 * k + 1], v1 = domain[4 * k + 3];
+        double u = SurfaceParameters.u(domain, k, Math.min(Math.max(s, 0), 1));
+        double v = SurfaceParameters.v(domain, k, Math.min(Math.max(t, 0), 1));
+        boolean uBefore = u >= u1, vBefore = v >= v1;
+        return trim.contains(uBefore ? u1 : u, vBefore ? v1 : v, uBefore, vBefore, scratch);
     }
 
     @Override

@@ -157,6 +157,21 @@ class AppModelTest {
     }
 
     @Test
+    void aFileWithReaderNotesShowsThemOnceInTheStatusLine() throws IOException {
+        Path cad = dir.resolve("cad-export.obj");
+        try (var in = getClass().getResourceAsStream("/org/beziertracer/model/io/cad-export.obj")) {
+            Files.write(cad, in.readAllBytes());
+        }
+        app.files().open(cad);
+        assertEquals(2, app.document().scene().patchCount());
+        assertEquals("opened cad-export.obj — " + cad + ": skipped 2 curv, 1 scrv, 1 sp, 1 con (3-D curves, special "
+                + "curves, special points and connectivity hints are not drawn)", app.status().message());
+        assertTrue(dialogs.errors.isEmpty(), "a note is not an error: " + dialogs.errors);
+        app.files().openBuiltIn("teapot");
+        assertEquals("opened teapot", app.status().message(), "the next file's status has no note of the last");
+    }
+
+    @Test
     void unsavedEditsPromptBeforeOpeningAndCancelKeepsThem() {
         dragPoint(2, 2, 0, -50);
         Scene edited = app.document().scene();

@@ -132,4 +132,35 @@ class TrimCurvesTest {
             assertEquals(r < 1, t.contains(r * Math.cos(angle), r * Math.sin(angle), scratch), "angle " + angle);
         }
     }
+
+    @Test
+    void aPointOnACurveIsDecidedAsThePointAStepTowardTheChosenSide() {
+        // the square [0,1]² as the loop (the domain's border), with a curved edge on top for the subdivision path
+        TrimCurves square = TrimCurves.of(new TrimRegion(List.of(TrimShapes.polygon(0, 0, 1, 0, 1, 1, 0, 1)), List.of()));
+        TrimCurves circle = TrimCurves.of(new TrimRegion(List.of(TrimShapes.circle(0.5, 0.5, 0.5, true)), List.of()));
+        Random rnd = new Random(43);
+        for (int r = 0; r < 200; r++) {
+            double f = 0.01 + 0.98 * rnd.nextDouble();
+            String at = " at " + f;
+            // left and bottom edges: inside a step toward +u / +v (the default), outside a step back
+            assertTrue(square.contains(0, f, scratch), "left edge" + at);
+            assertFalse(square.contains(0, f, true, false, scratch), "left edge, a step toward -u" + at);
+            assertTrue(square.contains(f, 0, scratch), "bottom edge" + at);
+            assertFalse(square.contains(f, 0, false, true, scratch), "bottom edge, a step toward -v" + at);
+            // right and top edges: outside by default, inside a step back
+            assertFalse(square.contains(1, f, scratch), "right edge" + at);
+            assertTrue(square.contains(1, f, true, false, scratch), "right edge, a step toward -u" + at);
+            assertFalse(square.contains(f, 1, scratch), "top edge" + at);
+            assertTrue(square.contains(f, 1, false, true, scratch), "top edge, a step toward -v" + at);
+        }
+        // corners: (1,1) belongs to the square only a step toward -u and -v
+        assertTrue(square.contains(1, 1, true, true, scratch));
+        assertFalse(square.contains(1, 1, true, false, scratch));
+        assertFalse(square.contains(1, 1, false, true, scratch));
+        // the circle's rightmost and topmost points (exact in its control points)
+        assertFalse(circle.contains(1, 0.5, scratch));
+        assertTrue(circle.contains(1, 0.5, true, false, scratch));
+        assertFalse(circle.contains(0.5, 1, scratch));
+        assertTrue(circle.contains(0.5, 1, false, true, scratch));
+    }
 }

@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
@@ -45,10 +46,14 @@ public final class FileFormat {
         void write(java.io.Writer out, SceneDocument doc) throws IOException;
     }
 
-    /** A model format's reader: surfaces only. */
+    /**
+     * A model format's reader: surfaces only. {@code baseDir} resolves the files a file names
+     * (OBJ {@code call}; null = the working directory). It adds to {@code notes} one line for each
+     * thing worth telling that is not an error (what it read past without drawing, naming the file).
+     */
     @FunctionalInterface
     public interface ModelReader {
-        Scene read(TextSource text) throws IOException;
+        Scene read(TextSource text, Path baseDir, List<String> notes) throws IOException;
     }
 
     /** A model format's writer: the scene's surfaces only. */
@@ -87,7 +92,11 @@ public final class FileFormat {
     public static FileFormat model(String name, String description, List<String> extensions, ModelReader reader,
                                    ModelWriter writer) {
         return new FileFormat(name, description, extensions, Holds.MODEL,
-                (text, baseDir) -> new SceneDocument(reader.read(text), RenderSettings.defaults()),
+                (text, baseDir) -> {
+                    List<String> notes = new ArrayList<>();
+                    Scene scene = reader.read(text, baseDir, notes);
+                    return new SceneDocument(scene, RenderSettings.defaults(), notes);
+                },
                 writer == null ? null : (out, doc) -> writer.write(out, doc.scene()));
     }
 

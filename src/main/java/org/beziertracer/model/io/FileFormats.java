@@ -27,7 +27,7 @@ public final class FileFormats {
 
     /** Bézier patch text ({@link BptReader}, {@link BptWriter}). */
     public static final FileFormat BPT = FileFormat.model("BPT", "Bézier patch text", List.of("bpt"),
-            BptReader::readScene, (out, scene) -> {
+            (text, baseDir, notes) -> BptReader.readScene(text), (out, scene) -> {
                 // a BPT file holds Bézier patches only: a mesh would be lost without a word
                 int meshes = scene.meshes().size();
                 if (meshes > 0) {
@@ -44,7 +44,7 @@ public final class FileFormats {
 
     /** IGES 5.3 surfaces ({@link IgesReader}, {@link IgesWriter}). */
     public static final FileFormat IGES = FileFormat.model("IGES", "IGES surfaces", List.of("igs", "iges"),
-            IgesReader::readScene, IgesWriter::write);
+            (text, baseDir, notes) -> IgesReader.readScene(text, notes), IgesWriter::write);
 
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),

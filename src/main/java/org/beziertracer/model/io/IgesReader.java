@@ -64,8 +64,12 @@ public final class IgesReader {
             Map.entry(406, "property"), Map.entry(410, "view"), Map.entry(502, "vertex list"), Map.entry(504, "edge list"),
             Map.entry(508, "loop"), Map.entry(510, "face"), Map.entry(514, "shell"));
 
-    static Scene readScene(TextSource text) throws IOException {
+    /** The surfaces of {@code text} as a scene (the reader {@link FileFormats#IGES} declares); the summary as a note. */
+    static Scene readScene(TextSource text, List<String> notes) throws IOException {
         Model m = readModel(text);
+        if (!m.summary().isEmpty()) {
+            notes.add(text.fileName() + ": " + m.summary());
+        }
         Scene.Builder b = Scene.builder();
         for (Material mat : m.materials()) {
             b.addMaterial(mat);

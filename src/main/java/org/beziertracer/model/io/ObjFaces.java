@@ -23,7 +23,7 @@ final class ObjFaces {
 
     private record Corner(int v, int vt, int vn) {}
 
-    private final String file;
+    private String file;
     private final ReadLimits limits;
     private double[] uvs = new double[2 * 16];
     private int uvCount;
@@ -41,6 +41,11 @@ final class ObjFaces {
     ObjFaces(String file, ReadLimits limits) {
         this.file = file;
         this.limits = limits;
+    }
+
+    /** Errors from now on name {@code name} (the file a {@code call} reads, then the caller again). */
+    void file(String name) {
+        this.file = name;
     }
 
     /** True when at least one face was read. */

@@ -29,10 +29,11 @@ import org.beziertracer.model.TrimRegion;
 final class ObjFreeForm {
 
     /** Statements handled here. */
-    static final Set<String> KEYWORDS = Set.of("vp", "cstype", "deg", "surf", "curv2", "parm", "trim", "hole", "end");
+    static final Set<String> KEYWORDS = Set.of("vp", "cstype", "deg", "surf", "curv2", "curv", "parm", "trim", "hole",
+            "end");
     private static final double[] DEFAULT_PARM = {0, 1};
 
-    private final String file;
+    private String file;
     private final ObjVertices vertices;
     private final ReadLimits limits;
     private final List<BezierPatch> patches = new ArrayList<>();
@@ -51,6 +52,11 @@ final class ObjFreeForm {
         this.file = file;
         this.vertices = vertices;
         this.limits = limits;
+    }
+
+    /** Errors from now on name {@code name} (the file a {@code call} reads, then the caller again). */
+    void file(String name) {
+        this.file = name;
     }
 
     /** The Bézier patches of every surface read so far. */
@@ -73,6 +79,7 @@ final class ObjFreeForm {
             case "deg" -> degree(t);
             case "surf" -> surf(t);
             case "curv2" -> curv2(t);
+            case "curv" -> curv();
             case "parm" -> parm(t);
             case "trim" -> trim(t, false);
             case "hole" -> trim(t, true);
@@ -100,6 +107,9 @@ final class ObjFreeForm {
     // ------------------------------------------------------------------ state statements
 
     private void paramVertex(String[] t) {
+        if (t.length == 2) {
+            throw error("unsupported: vp u (1-D parameter vertices); trim curves need vp u v [w]");
+        }
         if (t.length < 3 || t.length > 4) {
             throw error("expected u v (and an optional weight) after vp, found " + (t.length - 1) + " values");
         }
@@ -187,9 +197,9 @@ final class ObjFreeForm {
 
     private void curv2(String[] t) {
         openBlock("curv2");
-        if (degreeU == 0 || degreeV != 0) {
-            throw error("expected deg n (one degree) before curv2, found "
-                    + (degreeU == 0 ? "no deg statement" : "deg " + degreeU + " " + degreeV));
+        // a curve needs only the first degree: after deg n m it is of degree n (the spec reads on)
+        if (degreeU == 0) {
+            throw error("expected deg n before curv2, found no deg statement");
         }
         if (t.length < 3) {
             throw error("expected curv2 followed by at least 2 parameter-vertex indices, found " + (t.length - 1));
@@ -201,6 +211,17 @@ final class ObjFreeForm {
                     "parameter vertex (vp)");
         }
         block = b;
+    }
+
+    /**
+     * A 3-D curve ({@code curv u0 u1 v1 v2 …} … {@code end}): not drawn, so its block is read past
+     * (its {@code parm} lines unchecked); {@link ObjReader} counts it for the note.
+     */
+    private void curv() {
+        if (block != null) {
+            throw error("expected end for the " + block.keyword() + " at line " + block.line + ", found curv");
+        }
+        block = Block.skipped("curv", line);
     }
 
     private void openBlock(String keyword) {
@@ -240,6 +261,9 @@ final class ObjFreeForm {
         if (block == null) {
             throw error("expected parm inside a surf or curv2 … end block, found parm outside one");
         }
+        if (block.skipped) {
+            return;
+        }
         boolean isU = t.length > 1 && t[1].equals("u");
         if (t.length < 4 || !(isU || t[1].equals("v")) || (!isU && block.degreeV == 0)) {
             throw error("expected parm u" + (block.degreeV == 0 ? "" : "|v")
@@ -261,7 +285,8 @@ final class ObjFreeForm {
             run = values[k] == values[k - 1] ? run + 1 : 1;
             if (run > degree + 1) {
                 throw error("expected each knot at most degree + 1 = " + (degree + 1) + " times in parm " + t[1]
-                        + ", found " + NumberText.describe(t[k + 2]) + " " + run + " times");
+                        + ", found " + NumberText.describe(t[k + 2]) + " " + (run + repeats(t, k + 3, values[k]))
+                        + " times");
             }
         }
         if (isU) {
@@ -271,6 +296,15 @@ final class ObjFreeForm {
             block.parmV = values;
             block.parmVLine = line;
         }
+    }
+
+    /** How many tokens from {@code from} on repeat the value {@code knot} (the rest of a run, for its count). */
+    private static int repeats(String[] t, int from, double knot) {
+        int n = 0;
+        while (from + n < t.length && NumberText.finiteOrNaN(t[from + n]) == knot) {
+            n++;
+        }
+        return n;
     }
 
     private void trim(String[] t, boolean hole) {
@@ -326,6 +360,9 @@ final class ObjFreeForm {
         }
         Block b = block;
         block = null;
+        if (b.skipped) {
+            return;
+        }
         if (b.degreeV == 0) {
             curves.add(ObjBlocks.curve(b, vertices, file));
             return;
@@ -356,14 +393,27 @@ final class ObjFreeForm {
         double[] parmU, parmV;
         int parmULine, parmVLine;
         final List<TrimLoop> outer = new ArrayList<>(), holes = new ArrayList<>();
+        /** True for a block read past without building anything ({@code curv}). */
+        final boolean skipped;
 
         Block(String keyword, int line, SplineBasis basis, boolean rational, int degreeU, int degreeV) {
+            this(keyword, line, basis, rational, degreeU, degreeV, false);
+        }
+
+        private Block(String keyword, int line, SplineBasis basis, boolean rational, int degreeU, int degreeV,
+                      boolean skipped) {
+            this.skipped = skipped;
             this.keyword = keyword;
             this.line = line;
             this.basis = basis;
             this.rational = rational;
             this.degreeU = degreeU;
             this.degreeV = degreeV;
+        }
+
+        /** A block read past: its {@code parm} lines are not checked and its {@code end} builds nothing. */
+        static Block skipped(String keyword, int line) {
+            return new Block(keyword, line, null, false, 0, 0, true);
         }
 
         String keyword() { return keyword; }

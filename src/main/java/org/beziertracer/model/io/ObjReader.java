@@ -2,6 +2,7 @@ package org.beziertracer.model.io;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 
@@ -30,6 +31,9 @@ import org.beziertracer.model.Scene;
  *       an outer loop or a hole made of curve pieces (a negative {@code c} counts back);</li>
  *   <li>{@code end}; {@code #} comments; a trailing backslash continues a statement on the next
  *       line;</li>
+ *   <li>{@code call FILE.obj}: the named file, relative to the calling one, read in place (one
+ *       vertex list across the files); cycles, nesting deeper than 8 and arguments are refused
+ *       ({@link ObjCalls});</li>
  *   <li>{@code vt u [v [w]]}, {@code vn x y z} and {@code f} (or {@code fo}) faces of 3 or more
  *       corners {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn} (1-based or negative):
  *       every face of the file goes into one {@link Mesh}, cut into fans of triangles
@@ -39,12 +43,14 @@ import org.beziertracer.model.Scene;
  * Each surface is kept as read ({@link org.beziertracer.model.FreeFormSurface}) and becomes its
  * Bézier pieces by knot insertion, in the order v piece major, u piece fastest; each piece
  * reports its part of the surface's parameter range (the {@code surf} range, which may be any
- * part of the knot range) and carries the trim loops. Points and lines ({@code p}, {@code l}),
+ * part of the knot range) and carries the trim loops. What CAD tools write beside the surfaces
+ * and is not drawn — 3-D curves ({@code curv} … {@code end}), special curves and points
+ * ({@code scrv}, {@code sp}), connectivity ({@code con}), points and lines ({@code p},
+ * {@code l}) — is skipped and counted in one note ({@link Model#notes()}, {@link ObjSkipped});
  * grouping statements ({@code g}, {@code o}, {@code s}, {@code usemtl}, {@code mtllib}, …) and
- * display hints ({@code ctech}, {@code stech}) are skipped. Basis-matrix,
- * Cardinal and Taylor forms, 3-D curves ({@code curv}), special curves and points
- * ({@code scrv}, {@code sp}) and connectivity ({@code con}) get a one-line "unsupported: …" error
- * with the line number. A file without any surface or face is an error.
+ * display hints ({@code ctech}, {@code stech}) are skipped without a note. Basis-matrix,
+ * Cardinal and Taylor forms get a one-line "unsupported: …" error with the line number. A file
+ * without any surface or face is an error.
  *
  * <p>Every error is a one-line {@link ModelFormatException} whose line number is the first
  * physical line of the statement ({@link ObjFreeForm} lists the free-form ones). The caps of
@@ -56,11 +62,10 @@ import org.beziertracer.model.Scene;
 public final class ObjReader {
     private ObjReader() {}
 
-    private static final Set<String> SKIPPED = Set.of("p", "l", "g", "o", "s", "mg",
+    private static final Set<String> SKIPPED = Set.of("g", "o", "s", "mg",
             "usemtl", "mtllib", "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "maplib",
-            "usemap", "ctech", "stech", "call", "csh");
-    private static final Set<String> UNSUPPORTED = Set.of("curv", "scrv", "sp", "con",
-            "bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
+            "usemap", "ctech", "stech", "csh");
+    private static final Set<String> UNSUPPORTED = Set.of("bmat", "step", "bsp", "bzp", "cdc", "cdp", "res");
 
     /** A statement joined from continuation lines may hold this many lines' worth of characters. */
     static final int STATEMENT_LINES = 4;
@@ -74,15 +79,23 @@ public final class ObjReader {
         }
     }
 
-    /** What an OBJ file holds: its surfaces' Bézier patches and its faces' mesh (null without faces). */
-    public record Model(List<BezierPatch> patches, Mesh mesh) {}
+    /**
+     * What an OBJ file holds: its surfaces' Bézier patches, its faces' mesh (null without faces)
+     * and the notes of the read (what it skipped, {@link ObjSkipped}; empty when nothing).
+     */
+    public record Model(List<BezierPatch> patches, Mesh mesh, List<String> notes) {
+        public Model {
+            notes = List.copyOf(notes);
+        }
+    }
 
     /**
      * The patches and the mesh of {@code text} as a scene, both with material 0 (the reader
      * {@link FileFormats#OBJ} declares).
      */
-    static Scene readScene(TextSource text) throws IOException {
-        Model model = readModel(text);
+    static Scene readScene(TextSource text, Path baseDir, List<String> notes) throws IOException {
+        Model model = readModel(text, baseDir);
+        notes.addAll(model.notes());
         Scene.Builder b = Scene.builder().patches(model.patches());
         if (model.mesh() != null) {
             b.addMesh(model.mesh(), 0);
@@ -97,7 +110,17 @@ public final class ObjReader {
      *                              naming {@link TextSource#fileName()}
      */
     public static Model readModel(TextSource text) throws IOException {
-        return new Parser(text).parse();
+        return readModel(text, null);
+    }
+
+    /**
+     * Reads OBJ text whose {@code call} statements name files relative to {@code baseDir} (null:
+     * the working directory); {@link ObjCalls}.
+     *
+     * @throws ModelFormatException for any problem, naming the file (the called one for a problem in it)
+     */
+    public static Model readModel(TextSource text, Path baseDir) throws IOException {
+        return new Parser(text, baseDir).parse();
     }
 
     /** {@link #readModel(TextSource)} of in-memory text; for tests. */
@@ -124,23 +147,43 @@ public final class ObjReader {
     private static final class Parser {
         private final TextSource text;
         private final ReadLimits limits;
-        private final String file;
+        private final String topFile;
+        private final ObjCalls calls;
+        /** The file being read (a called one while its statements are read). */
+        private String file;
         private final ObjVertices vertices = new ObjVertices();
         private final ObjFreeForm freeForm;
         private final ObjFaces faces;
+        private final ObjSkipped skipped = new ObjSkipped();
         private int line;
         /** The coordinates of the vertex being read. */
         private final double[] xyz = new double[3];
 
-        Parser(TextSource text) {
+        Parser(TextSource text, Path baseDir) {
             this.text = text;
             this.limits = text.limits();
             this.file = text.fileName();
+            this.topFile = file;
+            this.calls = new ObjCalls(file, baseDir);
             this.freeForm = new ObjFreeForm(file, vertices, limits);
             this.faces = new ObjFaces(file, limits);
         }
 
         Model parse() throws IOException {
+            int physical = readAll(text);
+            line = Math.max(physical, 1);
+            freeForm.finish(line);
+            List<BezierPatch> patches = freeForm.patches();
+            if (patches.isEmpty() && !faces.any()) {
+                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
+                        + (physical == 0 ? "an empty file" : "none"));
+            }
+            String note = skipped.note(topFile);
+            return new Model(patches, faces.mesh(vertices), note == null ? List.of() : List.of(note));
+        }
+
+        /** Reads the statements of {@code text} (the file opened, or a called one); its last line number. */
+        private int readAll(TextSource text) throws IOException {
             int physical = 0;
             String raw;
             StringBuilder statement = new StringBuilder();
@@ -174,18 +217,38 @@ public final class ObjReader {
                 line = statementLine;
                 statement(Fields.of(statement.toString()));
             }
-            line = Math.max(physical, 1);
-            freeForm.finish(line);
-            List<BezierPatch> patches = freeForm.patches();
-            if (patches.isEmpty() && !faces.any()) {
-                throw error("expected at least one Bézier surface (cstype bezier, deg n m, surf … end) or face (f), found "
-                        + (physical == 0 ? "an empty file" : "none"));
-            }
-            return new Model(patches, faces.mesh(vertices));
+            return physical;
         }
 
-        private void statement(String[] t) {
+        /** {@code call FILE.obj}: the file's statements, read in place ({@link ObjCalls}). */
+        private void call(String[] t) throws IOException {
+            TextSource called = calls.enter(t, line, limits);
+            int callLine = line;
+            try {
+                named(calls.current());
+                readAll(called);
+            } finally {
+                calls.leave();
+                named(calls.current());
+                line = callLine;
+            }
+        }
+
+        /** Errors from now on name {@code name}. */
+        private void named(String name) {
+            file = name;
+            freeForm.file(name);
+            faces.file(name);
+        }
+
+        private void statement(String[] t) throws IOException {
             String keyword = t[0];
+            if (ObjSkipped.counts(keyword)) {
+                skipped.add(keyword);
+                if (!keyword.equals("curv")) {
+                    return; // a curv opens a block (parm, end) the free-form state reads past
+                }
+            }
             if (freeForm.skipping() || ObjFreeForm.KEYWORDS.contains(keyword)) {
                 freeForm.statement(t, line);
                 return;
@@ -195,6 +258,7 @@ public final class ObjReader {
                 case "vt" -> faces.textureVertex(t, line);
                 case "vn" -> faces.normal(t, line);
                 case "f", "fo" -> faces.face(t, line, vertices.count());
+                case "call" -> call(t);
                 default -> other(keyword);
             }
         }
@@ -212,11 +276,13 @@ public final class ObjReader {
 
         private static String explain(String keyword) {
             return switch (keyword) {
-                case "curv" -> "3-D free-form curves";
-                case "scrv", "sp" -> "special curves and points";
-                case "con" -> "surface connectivity";
                 case "bmat", "step" -> "basis-matrix surfaces";
-                default -> "free-form attribute";
+                case "bsp" -> "a superseded geometry statement of older OBJ versions: a B-spline patch";
+                case "bzp" -> "a superseded geometry statement of older OBJ versions: a Bézier patch";
+                case "cdc" -> "a superseded geometry statement of older OBJ versions: a Cardinal curve";
+                case "cdp" -> "a superseded geometry statement of older OBJ versions: a Cardinal patch";
+                default -> "a superseded geometry statement of older OBJ versions: the resolution of bsp, bzp, "
+                        + "cdc and cdp";
             };
         }
 

@@ -44,6 +44,8 @@ final class SceneReader {
     private final Scene.Builder builder = Scene.builder();
     private final List<Material> materials = new ArrayList<>();
     private final Map<String, Integer> named = new HashMap<>();
+    /** The notes of the model files read, each file's once. */
+    private final List<String> notes = new ArrayList<>();
 
     /** @param baseDir directory against which relative model paths resolve; null = working directory */
     SceneReader(Path baseDir, ReadLimits limits) {
@@ -92,7 +94,7 @@ final class SceneReader {
         RenderSettings settings = root.has("render") ? settings(root.get("render")) : RenderSettings.defaults();
         materials.forEach(builder::addMaterial);
         Scene scene = build(root, builder::build);
-        return new SceneDocument(scene, settings);
+        return new SceneDocument(scene, settings, notes);
     }
 
     private static void checkVersion(JsonNode root) {
@@ -223,9 +225,10 @@ final class SceneReader {
             return known;
         }
         try {
-            Scene read = format.get().read(file).scene();
-            loaded.put(key, read);
-            return read;
+            SceneDocument read = format.get().read(file);
+            loaded.put(key, read.scene());
+            notes.addAll(read.notes());
+            return read.scene();
         } catch (ModelFormatException e) {
             throw f.error(e.getMessage());
         }

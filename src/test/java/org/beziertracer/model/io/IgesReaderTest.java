@@ -76,6 +76,13 @@ class IgesReaderTest {
     }
 
     @Test
+    void theSkippedSummaryIsTheDocumentsNoteNamingTheFile() throws Exception {
+        Path file = Path.of(IgesReaderTest.class.getResource("/iges/sampler.igs").toURI());
+        assertEquals(java.util.List.of(file + ": skipped 2 entities: 1 × 116 (point), 1 × 212 (note)"),
+                FileFormats.IGES.read(file).notes());
+    }
+
+    @Test
     void everySurfaceOfTheSamplerIsReadWithItsMatrixColourAndTrims() throws Exception {
         IgesReader.Model m = sampler();
         // 128 in a 124, 144, 120, 122, the 128 of the 408 instance, 108

@@ -1,6 +1,7 @@
 package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -218,11 +219,52 @@ class ObjFreeFormTest {
 
     @Test
     void curveStatementsNeedACurveDegreeAndABlock() {
-        fails("vp 0 0\nvp 1 1\ncstype bezier\ndeg 1 1\ncurv2 1 2\nend\n", "5", "expected deg n (one degree) before curv2");
+        fails("vp 0 0\nvp 1 1\ncstype bezier\ncurv2 1 2\nend\n", "4", "expected deg n before curv2, found no deg statement");
         fails("vp 0 0\nvp 1 1\ncstype bezier\ndeg 1\ncurv2 1 3\nend\n", "5",
                 "parameter-vertex index for control point 2 of the curv2 in 1..2");
         fails("vp 0 0\nvp 1 1\ncstype bezier\ndeg 1\ncurv2 1 2\nparm v 0 1\nend\n", "6", "expected parm u followed");
         fails("vp 0 0\ncstype rat bezier extra\n", "2", "expected cstype [rat] bezier|bspline");
-        fails("vp 0\n", "1", "expected u v (and an optional weight) after vp");
+        fails("vp 0 0 0 0\n", "1", "expected u v (and an optional weight) after vp");
+    }
+
+    @Test
+    void aSurfaceDegreeBeforeACurv2GivesTheCurveItsUDegree() {
+        // the spec asks only the first degree of a curve and reads on (CAD tools leave deg 1 1 standing)
+        String curves = "vp 0.2 0.2\nvp 0.8 0.2\nvp 0.8 0.8\nvp 0.2 0.8\ncstype bezier\ndeg 1 1\n"
+                + "curv2 1 2 3 4 1\nparm u 0 1 2 3 4\nend\n";
+        String surf = SQUARE + "surf 0 1 0 1 1 2 3 4\ntrim 0 4 1\nend\n";
+        BezierPatch p = ObjReader.read(curves + surf, "deg.obj").get(0);
+        assertEquals(1, p.domain().trim().outer().get(0).pieces().get(0).curve().degree());
+        // deg 2 2: a quadratic curve of 3 points
+        String quadratic = "vp 0.2 0.2\nvp 0.8 0.2\nvp 0.8 0.8\ncstype bezier\ndeg 2 2\ncurv2 1 2 3\nend\n";
+        assertEquals(1, ObjReader.readModel(quadratic + SQUARE + "deg 1 1\nsurf 0 1 0 1 1 2 3 4\nend\n", "q.obj")
+                .patches().size());
+    }
+
+    @Test
+    void aOneDimensionalParameterVertexIsUnsupportedNotMalformed() {
+        fails("vp 0.5\n", "1", "unsupported: vp u (1-D parameter vertices)");
+        fails("vp 0.5 1\nvp 0.25\n", "2", "unsupported: vp u (1-D parameter vertices)");
+    }
+
+    @Test
+    void supersededGeometryStatementsAreNamedAsSuch() {
+        for (String keyword : new String[] {"bsp", "bzp", "cdc", "cdp", "res"}) {
+            ModelFormatException e = assertThrows(ModelFormatException.class,
+                    () -> ObjReader.read("v 0 0 0\n" + keyword + " 1 2\n", "old.obj"));
+            String msg = e.getMessage();
+            assertTrue(msg.startsWith("old.obj:2: unsupported: " + keyword + " (a superseded geometry statement"), msg);
+            assertFalse(msg.contains("attribute"), msg);
+        }
+    }
+
+    @Test
+    void aKnotRepeatedTooOftenIsCountedWhole() {
+        String net = SQUARE + "cstype bspline\ndeg 1 3\n";
+        // six times -2.00 in parm v of a cubic direction: the whole run is counted, not the first too many
+        fails(net + "surf 0 1 0 1 1 2 3 4\nparm u 0 0 1 1\nparm v -2.00 -2.00 -2.00 -2.00 -2.00 -2.00 1 1\nend\n",
+                "9", "expected each knot at most degree + 1 = 4 times in parm v, found \"-2.00\" 6 times");
+        fails(net + "surf 0 1 0 1 1 2 3 4\nparm u 0 0 1 1\nparm v 0 1 1 1 1 1\nend\n",
+                "9", "at most degree + 1 = 4 times in parm v, found \"1\" 5 times");
     }
 }

@@ -152,10 +152,6 @@ class ObjReaderTest {
                 {"cstype bmatrix\n", "unsupported: cstype bmatrix"},
                 {"cstype rat cardinal\n", "unsupported: cstype rat cardinal"},
                 {"cstype taylor\n", "unsupported: cstype taylor"},
-                {"curv 0 1 1 2\n", "unsupported: curv"},
-                {"con 1 0 1 1 2 0 1 2\n", "unsupported: con"},
-                {"scrv 0 1 1\n", "unsupported: scrv"},
-                {"sp 1\n", "unsupported: sp"},
                 {"bmat u 1 0 0 1\n", "unsupported: bmat"},
         };
         for (String[] c : cases) {
