@@ -21,7 +21,7 @@ import picocli.CommandLine.Spec;
  * format {@code OUT}'s extension names, atomically, so that a model goes back to the CAD tool it
  * came from ({@code convert part.obj part.igs}). The output may not be the input; a format that
  * cannot hold what was read (a mesh into IGES or BPT) refuses in one line before anything is
- * written, as the app's Save does.
+ * written, as the app's Save does. What the reader skipped is noted on standard error ({@link ReadNotes}).
  */
 @Command(name = "convert", mixinStandardHelpOptions = true,
         description = "Writes a model or scene in the format the output's extension names (for example "
@@ -49,7 +49,7 @@ final class ConvertCommand implements Callable<Integer> {
         if (Files.exists(source) && Files.exists(target) && Files.isSameFile(source, target)) {
             throw new IllegalArgumentException(output + ": is the input file; write to another name");
         }
-        SceneDocument doc = SceneFiles.load(input, Method::parse);
+        SceneDocument doc = ReadNotes.show(SceneFiles.load(input, Method::parse), spec.commandLine().getErr());
         format.write(target, doc);
         int patches = doc.scene().patchCount();
         spec.commandLine().getOut().println("wrote " + output + " (" + format + "): " + patches

@@ -69,4 +69,14 @@ class ConvertCommandTest {
         assertTrue(r.err().contains("triangle mesh"), r.err());
         assertEquals("old", Files.readString(out));
     }
+
+    @Test
+    void whatTheReaderSkippedIsNotedOnStandardError() throws Exception {
+        Path in = Path.of(ConvertCommandTest.class.getResource("/org/beziertracer/model/io/cad-export.obj").toURI());
+        Path out = dir.resolve("cad.igs");
+        Run r = Run.of("convert", in.toString(), out.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().startsWith("note: " + in + ": skipped 2 curv"), r.err());
+        assertEquals(SceneFiles.load(in.toString()).scene().patchCount(), SceneFiles.load(out.toString()).scene().patchCount());
+    }
 }
