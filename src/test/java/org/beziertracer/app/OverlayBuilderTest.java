@@ -84,6 +84,25 @@ class OverlayBuilderTest {
         assertEquals(16, none.pointCount(), "the count is of the model, drawn or not");
     }
 
+    @Test
+    void theWireframeViewDrawsControlPolygonAndPointsOnlyWhenTheirTogglesAreOn() {
+        Scene s = randomPatch();
+        ScreenProjector p = fit(s, 40, 640, 480);
+        Settings wireframe = Settings.defaults().with(Toggle.RAY_TRACE, false);
+        Settings neither = wireframe.with(Toggle.CONTROL_POLYGON, false).with(Toggle.CONTROL_POINTS, false);
+        OverlayGeometry none = OverlayBuilder.build(OverlayRequest.of(s, p, neither, 1));
+        assertEquals(0, none.handleCount(), "Control Points unchecked: no handles in the wireframe view");
+        assertEquals(0, none.segmentCount(), "Control Polygon unchecked: no polygon in the wireframe view");
+        assertFalse(none.isoCurves().isEmpty(), "the wireframe view still draws its iso-curves");
+        assertFalse(neither.pointsShown(), "unchecked points cannot be picked either");
+        OverlayGeometry pointsOnly = OverlayBuilder.build(OverlayRequest.of(s, p, wireframe.with(Toggle.CONTROL_POLYGON, false), 1));
+        assertEquals(16, pointsOnly.handleCount());
+        assertEquals(0, pointsOnly.segmentCount());
+        OverlayGeometry polygonOnly = OverlayBuilder.build(OverlayRequest.of(s, p, wireframe.with(Toggle.CONTROL_POINTS, false), 1));
+        assertEquals(0, polygonOnly.handleCount());
+        assertEquals(24, polygonOnly.segmentCount());
+    }
+
     /** A grid of side × side flat bicubic patches, one unit each, in z = 0. */
     static Scene grid(int side) {
         return Scene.builder().patches(BigModels.grid(side * side)).build();
