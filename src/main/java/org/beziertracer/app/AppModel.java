@@ -329,6 +329,9 @@ public final class AppModel {
 
     /** The selection is now {@code s} (widgets that show it are told). */
     void select(Selection s) {
+        if (!s.equals(selection)) {
+            inspector.clearMessage();
+        }
         selection = s;
         overlay.selected(selectedHandles());
         notifyListeners();
@@ -383,6 +386,7 @@ public final class AppModel {
             document.replace(scene, l.name(), l.source());
             view.replace(ViewModel.home(scene, l.bounds(), s.fovDegrees()));
             selection = Selection.EMPTY;
+            inspector.clearMessage();
             overlay.hover(null);
             requestOverlay(true);
             render();
