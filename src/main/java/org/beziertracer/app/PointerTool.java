@@ -229,7 +229,7 @@ public final class PointerTool {
 
         @Override
         public void to(double x, double y) {
-            app.view().rotate(x - lastX, y - lastY);
+            app.view().turn(lastX, lastY, x, y);
             lastX = x;
             lastY = y;
         }
