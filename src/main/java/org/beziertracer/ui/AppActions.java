@@ -90,7 +90,8 @@ public final class AppActions {
     private void addRecentActions() {
         for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
             int place = k;
-            add("recent" + k, " ", "Open this file again", key(KeyEvent.VK_1 + k, CTRL), () -> openRecent(place));
+            add("recent" + k, " ", "Open file " + (k + 1) + " of File → Open Recent again", key(KeyEvent.VK_1 + k, CTRL),
+                    () -> openRecent(place));
         }
     }
 
@@ -271,6 +272,7 @@ public final class AppActions {
             }
         };
         a.putValue(Action.SHORT_DESCRIPTION, key == null ? tip : tip + " (" + keyText(key) + ")");
+        a.putValue(Action.LONG_DESCRIPTION, tip);
         a.putValue(Action.ACCELERATOR_KEY, key);
         a.putValue("id", id);
         byId.put(id, a);

@@ -16,7 +16,11 @@ public final class AppMenuBar extends JMenuBar {
     private final JMenu recent = new JMenu("Open Recent");
     private final JMenuItem noRecent = new JMenuItem("(no recent files)");
 
-    public AppMenuBar(AppActions actions, Runnable about) {
+    /**
+     * @param about     Help → About
+     * @param shortcuts Help → Keyboard Shortcuts
+     */
+    public AppMenuBar(AppActions actions, Runnable about, Runnable shortcuts) {
         this.a = actions;
         JMenu file = menu("File", 'F', "open");
         file.add(recentMenu());
@@ -55,7 +59,16 @@ public final class AppMenuBar extends JMenuBar {
                 "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
         help.setMnemonic('H');
+        help.setName("menu.help");
+        JMenuItem shortcutsItem = new JMenuItem("Keyboard Shortcuts");
+        shortcutsItem.setName("menu.shortcuts");
+        shortcutsItem.setMnemonic('K');
+        shortcutsItem.setToolTipText("Every keyboard shortcut, as the keys are bound now");
+        shortcutsItem.addActionListener(e -> shortcuts.run());
+        help.add(shortcutsItem);
+        help.addSeparator();
         JMenuItem aboutItem = new JMenuItem("About Bézier Tracer");
+        aboutItem.setName("menu.about");
         aboutItem.addActionListener(e -> about.run());
         help.add(aboutItem);
         for (JMenu m : new JMenu[] {file, edit, models, view, surface, render, help}) {
