@@ -54,7 +54,7 @@ public final class AppMenuBar extends JMenuBar {
         analysis.addSeparator();
         analysis.add(item("analysisSettings"));
         view.insert(analysis, 5);
-        JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
+        JMenu surface = menu("Surface", 'S', "revertPoints", "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,
                 "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
