@@ -243,7 +243,8 @@ public final class AppModel {
     }
 
     private void requestOverlay(boolean fresh) {
-        OverlayRequest r = OverlayRequest.of(document.scene(), view.projector(), settings.current(), view.scale());
+        OverlayRequest r = OverlayRequest.of(document.scene(), view.projector(), settings.current(), view.scale(), mouseX,
+                mouseY, OverlayRequest.patchesOf(selection));
         if (fresh) {
             overlay.replace(r);
         } else {
@@ -333,8 +334,27 @@ public final class AppModel {
             inspector.clearMessage();
         }
         selection = s;
-        overlay.selected(selectedHandles());
+        if (overlay.geometry().focused()) {
+            requestOverlay(false); // dense handles: the selected patches' handles are drawn
+        } else {
+            overlay.selected(selectedHandles());
+        }
         notifyListeners();
+    }
+
+    private double mouseX = Double.NaN, mouseY = Double.NaN;
+
+    /**
+     * The mouse is over the picture at {@code (x, y)} (device pixels; NaN: it left). With dense
+     * handles ({@link OverlayGeometry#focused}) the overlay is built again for the patch under it
+     * (coalesced: the newest position only).
+     */
+    void pointerAt(double x, double y) {
+        mouseX = x;
+        mouseY = y;
+        if (overlay.geometry().focused()) {
+            requestOverlay(false);
+        }
     }
 
     /** A drag that started from {@code base} ended: one undoable edit called {@code name} (unless the model moved on). */
