@@ -243,7 +243,8 @@ public final class AppModel {
     }
 
     private void requestOverlay(boolean fresh) {
-        OverlayRequest r = OverlayRequest.of(document.scene(), view.projector(), settings.current(), view.scale());
+        OverlayRequest r = OverlayRequest.of(document.scene(), view.projector(), settings.current(), view.scale(), mouseX,
+                mouseY, OverlayRequest.patchesOf(selection));
         if (fresh) {
             overlay.replace(r);
         } else {
@@ -329,9 +330,31 @@ public final class AppModel {
 
     /** The selection is now {@code s} (widgets that show it are told). */
     void select(Selection s) {
+        if (!s.equals(selection)) {
+            inspector.clearMessage();
+        }
         selection = s;
-        overlay.selected(selectedHandles());
+        if (overlay.geometry().focused()) {
+            requestOverlay(false); // dense handles: the selected patches' handles are drawn
+        } else {
+            overlay.selected(selectedHandles());
+        }
         notifyListeners();
+    }
+
+    private double mouseX = Double.NaN, mouseY = Double.NaN;
+
+    /**
+     * The mouse is over the picture at {@code (x, y)} (device pixels; NaN: it left). With dense
+     * handles ({@link OverlayGeometry#focused}) the overlay is built again for the patch under it
+     * (coalesced: the newest position only).
+     */
+    void pointerAt(double x, double y) {
+        mouseX = x;
+        mouseY = y;
+        if (overlay.geometry().focused()) {
+            requestOverlay(false);
+        }
     }
 
     /** A drag that started from {@code base} ended: one undoable edit called {@code name} (unless the model moved on). */
@@ -391,6 +414,7 @@ public final class AppModel {
             document.replace(scene, l.name(), l.source());
             view.replace(ViewModel.home(scene, l.bounds(), s.fovDegrees()));
             selection = Selection.EMPTY;
+            inspector.clearMessage();
             overlay.hover(null);
             requestOverlay(true);
             render();

@@ -16,14 +16,19 @@ import org.beziertracer.model.Scene;
 public final class Document {
 
     private final EditHistory history;
+    private Scene original;
     private String name;
     private Path file;
     private long epoch;
 
     Document(Scene scene, String name) {
         this.history = new EditHistory(scene);
+        this.original = scene;
         this.name = name;
     }
+
+    /** The scene as it was opened, before any edit (Surface → Revert to Original goes back to it). */
+    public Scene original() { return original; }
 
     public Scene scene() { return history.current(); }
 
@@ -50,6 +55,7 @@ public final class Document {
     /** Starts over on a freshly opened scene. {@code source} is the file it came from, or null. */
     void replace(Scene scene, String newName, Path source) {
         history.reset(scene);
+        original = scene;
         name = newName;
         file = source != null && ModelLoader.savesInPlace(source) ? source : null;
         bump();

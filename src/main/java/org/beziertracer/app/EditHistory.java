@@ -8,7 +8,7 @@ import org.beziertracer.model.Scene;
 /**
  * The edited scene with undo/redo and the dirty flag. Scenes are immutable snapshots, so an edit
  * is just the pair (before, after) and undo restores the exact previous control points. An edit
- * that re-framed the view (Reset Control Points to a grid of another size) also keeps the framing
+ * that re-framed the view (Replace with Flat Grid to a grid of another size) also keeps the framing
  * before and after, and undo and redo hand it back so the view follows.
  *
  * <p>A drag is <b>one</b> edit: {@link #preview} replaces the current scene on every mouse event

@@ -5,7 +5,7 @@ import org.beziertracer.math.Vec3;
 
 /**
  * What the view is centred on: the model's bounding sphere ({@code target}, {@code radius}).
- * Rotation and zoom are not part of it, so an edit that re-frames the view (Reset Control Points
+ * Rotation and zoom are not part of it, so an edit that re-frames the view (Replace with Flat Grid
  * to a grid of another size) and its undo move the view back and forth without losing the user's
  * rotation and zoom.
  */

@@ -13,8 +13,9 @@ import org.beziertracer.model.io.Echo;
  * indices, coordinates and (for a rational patch) weight; for several, how many and their common
  * centroid — and the edits it makes: a typed coordinate moves the handle (or shifts the whole
  * selection so that its centroid lands there), a typed weight re-weights every copy of the handle;
- * each is one undoable edit, made off the UI thread. Reading the state costs the size of the
- * selection. UI thread only.
+ * each is one undoable edit, made off the UI thread. A refused value leaves its one-line reason in
+ * {@link #message()} until the next value is typed, the selection changes or a model is opened.
+ * Reading the state costs the size of the selection. UI thread only.
  */
 public final class Inspector {
 
@@ -50,6 +51,7 @@ public final class Inspector {
     }
 
     private final AppModel app;
+    private String message;
 
     Inspector(AppModel app) {
         this.app = app;
@@ -86,6 +88,17 @@ public final class Inspector {
      * undoable edit and returns null, or returns the one-line reason it cannot (nothing changes).
      */
     public String set(Field f, String text) {
+        message = apply(f, text);
+        return message;
+    }
+
+    /** Why the last typed value was refused, or null (none, or it was cleared since). */
+    public String message() { return message; }
+
+    /** Forgets the refusal: the selection it was about changed, or another model was opened. */
+    void clearMessage() { message = null; }
+
+    private String apply(Field f, String text) {
         State st = state();
         if (st == null) {
             return "select a control point first";

@@ -21,7 +21,7 @@ public enum Level {
      * smallest such K is 15; docs/performance-journal.md, "Exact vs tessellated at equal accuracy").
      */
     TESSELLATION("tessellation", 1, Tessellator.MAX_SEGMENTS, 16, 4, 8, 16, 32, 64),
-    /** Control points along u of the grid that Reset Control Points makes. */
+    /** Control points along u of the grid that Replace with Flat Grid makes. */
     GRID_U("grid points along u", 2, 10, 4),
     /** Control points along v of that grid. */
     GRID_V("grid points along v", 2, 10, 4);

@@ -1,6 +1,7 @@
 package org.beziertracer.app;
 
 import org.beziertracer.math.Vec3;
+import org.beziertracer.render.DefaultLight;
 
 /**
  * Where the light is, as the toolbox offers it: the scene's own lights; one light that follows
@@ -13,11 +14,12 @@ import org.beziertracer.math.Vec3;
 public enum LightPlacement {
     SCENE("Scene's lights", Frame.SCENE, null),
     /**
-     * The default: up and to the left as seen from the eye, three quarters of the way to the model,
-     * so it lights the model about 45° off the line of sight and, at the default perspective, its
-     * marker shows inside the picture.
+     * The default, shared with the command line ({@link DefaultLight}): up and to the left as seen
+     * from the eye, between the eye and the model, placed from the model's bounding sphere so that
+     * it never sits inside or on the edge of the model; at the default perspective its marker shows
+     * inside the picture.
      */
-    EYE_ABOVE_LEFT("Above left of the eye", Frame.VIEW, new Vec3(-0.2, 0.14, 0.75)),
+    EYE_ABOVE_LEFT("Above left of the eye", Frame.MODEL, DefaultLight.OFFSET),
     AT_EYE("At the eye", Frame.VIEW, Vec3.ZERO),
     ABOVE_LEFT("Above left", Frame.WORLD, new Vec3(-1, -1, 1.5).normalize().scale(4)),
     ABOVE_RIGHT("Above right", Frame.WORLD, new Vec3(1, -1, 1.5).normalize().scale(4)),
@@ -32,6 +34,11 @@ public enum LightPlacement {
          * in eye-to-target distances.
          */
         VIEW,
+        /**
+         * Follows the view: the offset from the centre of the view's framing (the model's bounding
+         * sphere) along the camera's right, up and forward axes, in framing radii ({@link DefaultLight}).
+         */
+        MODEL,
         /** Fixed in the scene: the offset from the centre of the view's framing, in framing radii. */
         WORLD
     }

@@ -7,6 +7,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.Scene;
+import org.beziertracer.render.DefaultLight;
 
 /**
  * The light of the settings ({@link LightPlacement} and its offset) in the scene for one view: where
@@ -31,6 +32,7 @@ public final class LightRig {
         return switch (placement.frame()) {
             case SCENE -> null;
             case WORLD -> framing.target().add(offset.scale(radius(framing)));
+            case MODEL -> DefaultLight.position(camera, framing.target(), framing.radius(), offset);
             case VIEW -> {
                 Vec3[] axes = axes(camera);
                 double dist = camera.target().sub(camera.eye()).length();
@@ -45,6 +47,7 @@ public final class LightRig {
         return switch (placement.frame()) {
             case SCENE -> null;
             case WORLD -> position.sub(framing.target()).scale(1 / radius(framing));
+            case MODEL -> DefaultLight.offsetOf(camera, framing.target(), framing.radius(), position);
             case VIEW -> {
                 Vec3[] axes = axes(camera);
                 Vec3 d = position.sub(camera.eye());

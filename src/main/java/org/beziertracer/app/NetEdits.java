@@ -19,7 +19,7 @@ public final class NetEdits {
     public static final double RANDOM_Z_RANGE = 1.0;
 
     /**
-     * Reset Control Points: the patches are replaced by one flat square grid of
+     * Replace with Flat Grid: the patches are replaced by one flat square grid of
      * {@code pointsU × pointsV} control points ({@link Models#flatGrid}); planes, spheres,
      * lights, materials and camera are kept.
      */

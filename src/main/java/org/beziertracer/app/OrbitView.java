@@ -9,9 +9,8 @@ import org.beziertracer.model.CameraSpec;
  * orthonormal {@code right} and {@code up} axes (the forward axis is {@code up × right}), a zoom
  * factor and the perspective amount. Immutable; every interaction returns a new view.
  *
- * <p>Dragging empty space rotates the model about the screen's X and Y axes, which is the same as
- * rotating the camera the other way about its own {@code right} and {@code up} axes
- * ({@link #rotated}). The wheel scales the visible half-width at the target ({@link #zoomed}).
+ * <p>Dragging empty space turns the model with an {@link Arcball}, which is the same as turning the
+ * camera the other way about the same axis ({@link #turned}). The wheel scales the visible half-width at the target ({@link #zoomed}).
  *
  * <p>Framing: the model's bounding sphere (centre {@code target}, {@code radius}) fills the
  * smaller side of the picture at zoom 1. The perspective runs from 0 (parallel rays,
@@ -103,20 +102,21 @@ public record OrbitView(Vec3 target, double radius, Vec3 right, Vec3 up, double 
     }
 
     /**
-     * The view after dragging by {@code (dxPixels, dyPixels)}: the model turns about the screen's
-     * Y axis by {@code dx · radiansPerPixel} and about its X axis by {@code dy · radiansPerPixel}.
+     * The view after the model turned by {@code t} ({@link Arcball}): the camera turns the other way
+     * about the same axis, taken from view into world coordinates (x → right, y → up, z → −forward).
      */
-    public OrbitView rotated(double dxPixels, double dyPixels, double radiansPerPixel) {
-        double a = -dxPixels * radiansPerPixel;   // model right = camera left about up
-        double b = -dyPixels * radiansPerPixel;   // model down = camera up about right
-        Vec3 r = rotate(right, up, a);
-        Vec3 u = up;
-        Vec3 u2 = rotate(u, r, b);
-        Vec3 r2 = r;
+    public OrbitView turned(Arcball.Turn t) {
+        if (t.angle() == 0) {
+            return this;
+        }
+        Vec3 f = forward();
+        Vec3 a = right.scale(t.axis().x()).add(up.scale(t.axis().y())).sub(f.scale(t.axis().z())).normalize();
+        Vec3 r2 = rotate(right, a, -t.angle());
+        Vec3 u2 = rotate(up, a, -t.angle());
         // Re-orthonormalise against drift
-        Vec3 f = u2.cross(r2).normalize();
-        r2 = f.cross(u2).normalize();
-        u2 = r2.cross(f).normalize();
+        Vec3 f2 = u2.cross(r2).normalize();
+        r2 = f2.cross(u2).normalize();
+        u2 = r2.cross(f2).normalize();
         return new OrbitView(target, radius, r2, u2, zoom, fovDegrees);
     }
 

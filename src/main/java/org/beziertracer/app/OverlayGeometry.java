@@ -19,7 +19,7 @@ public final class OverlayGeometry {
 
     /** Nothing to draw (before the first build, and while a newly opened model is prepared). */
     public static final OverlayGeometry EMPTY = new OverlayGeometry(null, null, new float[0], new float[0], new int[0],
-            new int[0], 0, false, List.of(), List.of(), 0);
+            new int[0], 0, false, List.of(), List.of(), 0, false, -1);
 
     private final Scene scene;
     private final ScreenProjector projector;
@@ -32,10 +32,12 @@ public final class OverlayGeometry {
     private final List<float[]> polygon;
     private final List<float[]> isoCurves;
     private final long pointCount;
+    private final boolean focused;
+    private final int underMouse;
 
     OverlayGeometry(Scene scene, ScreenProjector projector, float[] handleXY, float[] handleDepth, int[] handlePatch,
                     int[] handlePoint, int handleCount, boolean thinned, List<float[]> polygon,
-                    List<float[]> isoCurves, long pointCount) {
+                    List<float[]> isoCurves, long pointCount, boolean focused, int underMouse) {
         this.scene = scene;
         this.projector = projector;
         this.handleXY = handleXY;
@@ -47,7 +49,18 @@ public final class OverlayGeometry {
         this.polygon = List.copyOf(polygon);
         this.isoCurves = List.copyOf(isoCurves);
         this.pointCount = pointCount;
+        this.focused = focused;
+        this.underMouse = underMouse;
     }
+
+    /**
+     * True when the handles were too dense to show them all and only those of the patch under the
+     * mouse and of the selected patches are drawn ({@link OverlayBuilder}).
+     */
+    public boolean focused() { return focused; }
+
+    /** The patch whose handles the mouse brought up (nearest the eye under it), or −1. */
+    public int underMouse() { return underMouse; }
 
     /** The scene this was built for (null for {@link #EMPTY}). */
     public Scene scene() { return scene; }

@@ -24,7 +24,7 @@ final class PatchProjection {
     private final double[] net = new double[3 * MAX_POINTS];
     private final double[] out = new double[3];
     private final ScreenProjector projector;
-    private double minX, minY, maxX, maxY;
+    private double minX, minY, maxX, maxY, nearest;
 
     PatchProjection(ScreenProjector projector) {
         this.projector = projector;
@@ -35,6 +35,7 @@ final class PatchProjection {
         patch.copyNetInto(net, 0);
         minX = minY = Double.POSITIVE_INFINITY;
         maxX = maxY = Double.NEGATIVE_INFINITY;
+        nearest = Double.POSITIVE_INFINITY;
         for (int k = 0, count = patch.pointCount(); k < count; k++) {
             if (!projector.project(net[3 * k], net[3 * k + 1], net[3 * k + 2], out)) {
                 return false;
@@ -42,6 +43,7 @@ final class PatchProjection {
             xy[2 * k] = out[0];
             xy[2 * k + 1] = out[1];
             depth[k] = out[2];
+            nearest = Math.min(nearest, out[2]);
             minX = Math.min(minX, out[0]);
             maxX = Math.max(maxX, out[0]);
             minY = Math.min(minY, out[1]);
@@ -58,6 +60,14 @@ final class PatchProjection {
         }
         return true;
     }
+
+    /** True when pixel {@code (x, y)} lies in the last projected net's pixel box (its convex hull holds the patch). */
+    boolean covers(double x, double y) {
+        return x >= minX && x <= maxX && y >= minY && y <= maxY;
+    }
+
+    /** The depth of the last projected net's point nearest the eye. */
+    double nearestDepth() { return nearest; }
 
     /**
      * The larger side of the last projected net's pixel box, or −1 when that box lies wholly

@@ -48,8 +48,14 @@ public final class PointerTool {
     }
 
     public void moved(double x, double y) {
+        app.pointerAt(x, y);
         app.overlay().hover(pick(x, y));
         app.hover().request(x, y);
+    }
+
+    /** The mouse left the picture (with dense handles, the patch it was over hides its handles again). */
+    public void left() {
+        app.pointerAt(Double.NaN, Double.NaN);
     }
 
     /** Left button pressed at {@code (x, y)} with no modifier key held. */
@@ -229,7 +235,7 @@ public final class PointerTool {
 
         @Override
         public void to(double x, double y) {
-            app.view().rotate(x - lastX, y - lastY);
+            app.view().turn(lastX, lastY, x, y);
             lastX = x;
             lastY = y;
         }

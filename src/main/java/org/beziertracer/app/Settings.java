@@ -149,14 +149,14 @@ public final class Settings {
         return on(Toggle.SUPER_SAMPLING) ? level(Level.SAMPLES_PER_PIXEL) : 1;
     }
 
-    /** True when control points are shown and can be picked (always in the wireframe view). */
+    /** True when control points are shown and can be picked (their toggle decides, in both views). */
     public boolean pointsShown() {
-        return on(Toggle.CONTROL_POINTS) || !on(Toggle.RAY_TRACE);
+        return on(Toggle.CONTROL_POINTS);
     }
 
-    /** True when the control polygon is drawn (always in the wireframe view). */
+    /** True when the control polygon is drawn (its toggle decides, in both views). */
     public boolean polygonShown() {
-        return on(Toggle.CONTROL_POLYGON) || !on(Toggle.RAY_TRACE);
+        return on(Toggle.CONTROL_POLYGON);
     }
 
     /** True when the projected iso-curves are drawn (always in the wireframe view). */

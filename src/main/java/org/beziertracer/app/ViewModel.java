@@ -11,8 +11,6 @@ import org.beziertracer.model.Scene;
  */
 public final class ViewModel {
 
-    /** Rotation per dragged pixel at scale 1. */
-    public static final double RADIANS_PER_PIXEL = 0.01;
     /** Zoom factor per wheel click. */
     public static final double ZOOM_PER_CLICK = 1.1;
     /** Picture size assumed before the view has been laid out. */
@@ -54,9 +52,19 @@ public final class ViewModel {
         view = v;
     }
 
-    /** Dragging empty space by {@code (dx, dy)} device pixels turns the model. */
+    /**
+     * Dragging empty space from {@code (x0, y0)} to {@code (x1, y1)} (device pixels of the picture)
+     * turns the model with the picture's {@link Arcball}: the centre to the rim, half the picture's
+     * smaller side, is 180°.
+     */
+    public void turn(double x0, double y0, double x1, double y1) {
+        set(view.turned(new Arcball(width(), height()).drag(x0, y0, x1, y1)));
+    }
+
+    /** A drag by {@code (dx, dy)} device pixels from the middle of the picture ({@link #turn}). */
     public void rotate(double dx, double dy) {
-        set(view.rotated(dx, dy, RADIANS_PER_PIXEL / scale));
+        double cx = width() / 2.0, cy = height() / 2.0;
+        turn(cx, cy, cx + dx, cy + dy);
     }
 
     /** Wheel: positive {@code clicks} move away from the model. */

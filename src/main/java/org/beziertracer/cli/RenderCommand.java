@@ -20,6 +20,7 @@ import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
+import org.beziertracer.render.DefaultLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.SceneFiles;
@@ -47,7 +48,8 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code render MODEL_OR_SCENE -o OUT.png}: ray traces a model or scene into a PNG. Options override
- * the scene's settings, camera and lights. {@code --stats} prints one JSON line; {@code --pixel x,y}
+ * the scene's settings, camera and lights; a model or scene without lights is lit as the desktop app
+ * lights it by default ({@link DefaultLight}). {@code --stats} prints one JSON line; {@code --pixel x,y}
  * prints the full trace of one pixel. While rendering, a progress bar goes to standard error when
  * it is a terminal (not with {@code --quiet}). Bad values end with one error line and exit code 1.
  */
@@ -173,6 +175,9 @@ final class RenderCommand implements Callable<Integer> {
         HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
         RenderJob job = RenderJob.prepare(scene, settings, options);
         job = job.withCamera(camera(job.camera()));
+        if (scene.lights().isEmpty()) { // the desktop app's default light, not the renderer's light at the eye
+            job = job.withLights(List.of(new PointLight(DefaultLight.position(job.camera().spec(), scene.bounds()))));
+        }
         RenderJob otherJob = differenceTo == null ? null : other(scene, settings, options, job);
         PrintWriter out = spec.commandLine().getOut();
         if (pixel != null) {
@@ -237,7 +242,7 @@ final class RenderCommand implements Callable<Integer> {
     private RenderJob other(Scene scene, RenderSettings s, RenderOptions options, RenderJob job) {
         RenderSettings o = new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
                 differenceTo.trim().toLowerCase(Locale.ROOT), s.bvh(), s.shading(), s.checker(), s.shadows(), s.maxDepth());
-        return RenderJob.prepare(scene, o, options).withCamera(job.camera());
+        return RenderJob.prepare(scene, o, options).withCamera(job.camera()).withLights(job.lights());
     }
 
     /** Prints how many pixels of {@code mine} differ from {@code theirs}; the overlay image. */

@@ -90,7 +90,8 @@ public final class AppActions {
     private void addRecentActions() {
         for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
             int place = k;
-            add("recent" + k, " ", "Open this file again", key(KeyEvent.VK_1 + k, CTRL), () -> openRecent(place));
+            add("recent" + k, " ", "Open file " + (k + 1) + " of File → Open Recent again", key(KeyEvent.VK_1 + k, CTRL),
+                    () -> openRecent(place));
         }
     }
 
@@ -135,8 +136,10 @@ public final class AppActions {
     private void addEditActions(EditCommands e) {
         add("undo", "Undo", "Undo the last edit", key(KeyEvent.VK_Z, CTRL), e::undo);
         add("redo", "Redo", "Redo the edit just undone", key(KeyEvent.VK_Z, CTRL | SHIFT), e::redo);
-        add("resetPoints", "Reset Control Points", "Replace the surface by a flat square grid of the chosen size",
-                key(KeyEvent.VK_R, CTRL), e::resetControlPoints);
+        add("resetPoints", "Replace with Flat Grid", "Replace the whole model by one flat square grid of control points "
+                + "of the size chosen in New grid u × v (undoable)", key(KeyEvent.VK_R, CTRL), e::replaceWithFlatGrid);
+        add("revertPoints", "Revert to Original", "Put every control point back where it was when the model was opened "
+                + "(undoable)", key(KeyEvent.VK_R, CTRL | ALT), e::revertToOriginal);
         add("randomize", "Randomize Control Points", "Random Z offsets within a fixed range (seed in the status bar)",
                 key(KeyEvent.VK_R, CTRL | SHIFT), e::randomize);
     }
@@ -271,6 +274,7 @@ public final class AppActions {
             }
         };
         a.putValue(Action.SHORT_DESCRIPTION, key == null ? tip : tip + " (" + keyText(key) + ")");
+        a.putValue(Action.LONG_DESCRIPTION, tip);
         a.putValue(Action.ACCELERATOR_KEY, key);
         a.putValue("id", id);
         byId.put(id, a);
@@ -298,6 +302,9 @@ public final class AppActions {
         get("rayTrace").putValue(Action.NAME, app.settings().current().on(Toggle.RAY_TRACE)
                 ? "Switch to Wireframe" : "Switch to Ray Trace");
         get("undo").setEnabled(h.canUndo());
+        get("revertPoints").setEnabled(app.document().scene() != app.document().original());
+        get("resetPoints").putValue(Action.NAME, "Replace with Flat " + app.settings().current().level(Level.GRID_U) + "×"
+                + app.settings().current().level(Level.GRID_V) + " Grid");
         get("redo").setEnabled(h.canRedo());
         get("undo").putValue(Action.NAME, h.canUndo() ? "Undo " + h.undoName() : "Undo");
         get("redo").putValue(Action.NAME, h.canRedo() ? "Redo " + h.redoName() : "Redo");

@@ -47,7 +47,7 @@ public final class AppFrame extends JFrame {
         toolbox = new ToolboxPanel(app, actions);
         statusBar = new StatusBar(app);
         inspector = new InspectorPanel(app);
-        setJMenuBar(new AppMenuBar(actions, this::about));
+        setJMenuBar(new AppMenuBar(actions, this::about, this::shortcuts));
         JScrollPane side = new JScrollPane(toolbox, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED,
                 JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
         side.setBorder(null);
@@ -98,6 +98,16 @@ public final class AppFrame extends JFrame {
     private void toggleTheme() {
         theme.toggle();
         actions.refresh();
+    }
+
+    /** The shortcuts as bound now: the actions' accelerators and the window's own bindings. */
+    java.util.List<ShortcutList.Row> shortcutRows() {
+        return ShortcutList.of(actions.all().values(), getRootPane().getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW),
+                getRootPane().getActionMap());
+    }
+
+    private void shortcuts() {
+        ShortcutsDialog.show(this, shortcutRows());
     }
 
     private void about() {

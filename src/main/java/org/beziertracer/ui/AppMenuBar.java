@@ -16,7 +16,11 @@ public final class AppMenuBar extends JMenuBar {
     private final JMenu recent = new JMenu("Open Recent");
     private final JMenuItem noRecent = new JMenuItem("(no recent files)");
 
-    public AppMenuBar(AppActions actions, Runnable about) {
+    /**
+     * @param about     Help → About
+     * @param shortcuts Help → Keyboard Shortcuts
+     */
+    public AppMenuBar(AppActions actions, Runnable about, Runnable shortcuts) {
         this.a = actions;
         JMenu file = menu("File", 'F', "open");
         file.add(recentMenu());
@@ -50,12 +54,21 @@ public final class AppMenuBar extends JMenuBar {
         analysis.addSeparator();
         analysis.add(item("analysisSettings"));
         view.insert(analysis, 5);
-        JMenu surface = menu("Surface", 'S', "resetPoints", "randomize", null, "gridU", "gridV");
+        JMenu surface = menu("Surface", 'S', "revertPoints", "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,
                 "superSampling", "spp", "moreInteractive", "lessInteractive", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
         help.setMnemonic('H');
+        help.setName("menu.help");
+        JMenuItem shortcutsItem = new JMenuItem("Keyboard Shortcuts");
+        shortcutsItem.setName("menu.shortcuts");
+        shortcutsItem.setMnemonic('K');
+        shortcutsItem.setToolTipText("Every keyboard shortcut, as the keys are bound now");
+        shortcutsItem.addActionListener(e -> shortcuts.run());
+        help.add(shortcutsItem);
+        help.addSeparator();
         JMenuItem aboutItem = new JMenuItem("About Bézier Tracer");
+        aboutItem.setName("menu.about");
         aboutItem.addActionListener(e -> about.run());
         help.add(aboutItem);
         for (JMenu m : new JMenu[] {file, edit, models, view, surface, render, help}) {

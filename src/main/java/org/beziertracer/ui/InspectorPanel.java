@@ -29,14 +29,17 @@ import org.beziertracer.app.Toggle;
  * The inspector: the selected handle's patch, indices and coordinates (and weight, for a rational
  * patch), or the centroid of several; typing a value and pressing Enter moves them
  * ({@link Inspector#set}, one undoable edit), Escape puts the shown value back. A field being typed
- * in is not overwritten by refreshes. Shown while View → Inspector is on.
+ * in is not overwritten by refreshes. A refused value's reason ({@link Inspector#message}) and the
+ * hint wrap to the panel's width, whole. Shown while View → Inspector is on.
  */
 final class InspectorPanel extends JPanel {
 
     private final AppModel app;
     private final JLabel title = new JLabel(" ");
-    private final JLabel where = new JLabel(" ");
-    private final JLabel message = new JLabel(" ");
+    /** Width of the panel (user-space pixels). */
+    static final int WIDTH = 200;
+    private final WrappingText where = new WrappingText("inspector.where", WIDTH - 40);
+    private final WrappingText message = new WrappingText("inspector.message", WIDTH - 40);
     private final Map<Field, JTextField> fields = new EnumMap<>(Field.class);
     private final Map<Field, JLabel> labels = new EnumMap<>(Field.class);
     private final Map<Field, Boolean> typing = new EnumMap<>(Field.class);
@@ -48,8 +51,6 @@ final class InspectorPanel extends JPanel {
         setBorder(BorderFactory.createCompoundBorder(BorderFactory.createEmptyBorder(6, 0, 6, 6),
                 BorderFactory.createTitledBorder("Inspector")));
         title.setName("inspector.title");
-        where.setName("inspector.where");
-        message.setName("inspector.message");
         message.setForeground(new Color(0xC0392B));
         JPanel grid = new JPanel(new GridBagLayout());
         GridBagConstraints c = new GridBagConstraints();
@@ -60,6 +61,7 @@ final class InspectorPanel extends JPanel {
         c.anchor = GridBagConstraints.WEST;
         grid.add(title, c);
         c.gridy++;
+        c.fill = GridBagConstraints.HORIZONTAL;
         grid.add(where, c);
         c.gridwidth = 1;
         for (Field f : Field.values()) {
@@ -78,9 +80,10 @@ final class InspectorPanel extends JPanel {
         c.gridy++;
         c.gridx = 0;
         c.gridwidth = 2;
+        c.fill = GridBagConstraints.HORIZONTAL;
         grid.add(message, c);
         add(grid, BorderLayout.NORTH);
-        setPreferredSize(new Dimension(200, getPreferredSize().height));
+        setPreferredSize(new Dimension(WIDTH, getPreferredSize().height));
         app.addListener(this::refresh);
         refresh();
     }
@@ -143,21 +146,24 @@ final class InspectorPanel extends JPanel {
     private void apply(Field f) {
         String error = app.inspector().set(f, fields.get(f).getText());
         typing.put(f, false);
-        message.setText(error == null ? " " : error);
         refresh();
     }
 
-    /** Shows the selection as it is now. */
+    static final String HINT = "Click a control point; Shift-click adds, Ctrl-click toggles, Shift-drag on empty space "
+            + "selects an area. Then drag, nudge with the arrow keys, or type a coordinate here.";
+
+    /** Shows the selection as it is now, and why the last typed value was refused (wrapped, never cut). */
     void refresh() {
+        String refused = app.inspector().message();
+        message.setText(refused == null ? "" : refused);
+        message.setVisible(refused != null);
         setVisible(app.settings().current().on(Toggle.INSPECTOR));
         Inspector.State st = app.inspector().state();
         refreshing = true;
         try {
             if (st == null) {
                 title.setText("No point selected");
-                where.setText("<html><div style='width:150px'>Click a control point; Shift-click adds, Ctrl-click "
-                        + "toggles, Shift-drag on empty space selects an area. Then drag, nudge with the arrow keys, or "
-                        + "type a coordinate here.</div></html>");
+                where.setText(HINT);
             } else if (st.handles() == 1) {
                 title.setText("Patch " + st.primary().patch() + ", point (" + st.primary().i() + ", " + st.primary().j() + ")");
                 where.setText(st.copies() == 1 ? "1 copy" : st.copies() + " welded copies");

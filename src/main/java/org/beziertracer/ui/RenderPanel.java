@@ -73,6 +73,9 @@ public final class RenderPanel extends JComponent {
             }
 
             @Override
+            public void mouseExited(MouseEvent e) { p.left(); }
+
+            @Override
             public void mouseWheelMoved(MouseWheelEvent e) { p.wheel(e.getPreciseWheelRotation()); }
         };
         addMouseListener(mouse);

@@ -1,6 +1,5 @@
 package org.beziertracer.ui;
 
-import java.awt.FlowLayout;
 import java.util.Locale;
 
 import javax.swing.BorderFactory;
@@ -22,7 +21,9 @@ import org.beziertracer.app.Toggle;
 /**
  * Frame ms, Mrays/s, pass k of n, samples per pixel, method, BVH speed-up, model size, the last
  * message (for instance the random seed), and — while a model is being opened — a progress bar
- * with a Cancel button. Reads the app's status snapshot on every refresh.
+ * with a Cancel button. Reads the app's status snapshot on every refresh. Fields that do not fit
+ * on one row wrap to the next ({@link WrapFlowLayout}); none is ever dropped, and one wider than the
+ * whole bar is elided with its full text in its tooltip.
  */
 public final class StatusBar extends JPanel {
 
@@ -44,7 +45,7 @@ public final class StatusBar extends JPanel {
     private final JButton cancel = new JButton("Cancel");
 
     public StatusBar(AppModel app) {
-        super(new FlowLayout(FlowLayout.LEFT, 8, 2));
+        super(new WrapFlowLayout(8, 2));
         this.app = app;
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, getForeground().darker()));
         progress.setName("status.progress");
@@ -85,10 +86,21 @@ public final class StatusBar extends JPanel {
         }
     }
 
+    private static final String ABOUT = "status.about";
+
     private static JLabel label(String tip) {
         JLabel l = new JLabel(" ");
+        l.putClientProperty(ABOUT, tip);
         l.setToolTipText(tip);
         return l;
+    }
+
+    /** Each field's tooltip: its whole text (shown even when the field is elided), then what it is. */
+    private void tooltips() {
+        for (JLabel l : new JLabel[] {frame, rays, pass, spp, method, bvh, legend, model, selection, difference, message}) {
+            String text = l.getText() == null ? "" : l.getText().strip();
+            l.setToolTipText(text.isEmpty() ? (String) l.getClientProperty(ABOUT) : text + " — " + l.getClientProperty(ABOUT));
+        }
     }
 
     public void refresh() {
@@ -117,6 +129,7 @@ public final class StatusBar extends JPanel {
         selection.setText(handles == 0 ? "nothing selected" : handles == 1 ? "1 point selected" : handles + " points selected");
         differenceText(t);
         message.setText(app.status().message());
+        tooltips();
         Task task = app.status().task();
         progress.setVisible(task != null);
         cancel.setVisible(task != null);

@@ -72,6 +72,7 @@ public final class ToolboxPanel extends JPanel {
 
     private JPanel surfaceSection(SettingsModel s) {
         JPanel surface = section("Surface");
+        surface.add(button("revertPoints"));
         surface.add(button("resetPoints"));
         surface.add(button("randomize"));
         surface.add(check("smoothJoins"));

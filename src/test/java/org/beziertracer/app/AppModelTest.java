@@ -261,7 +261,7 @@ class AppModelTest {
         assertTrue(app.status().message().contains("1234"), app.status().message());
         assertEquals(NetEdits.randomize(Models.patch(), 1234).patches(), app.document().scene().patches());
         app.settings().set(Level.GRID_U, 6);
-        app.edits().resetControlPoints();
+        app.edits().replaceWithFlatGrid();
         assertEquals(5, app.document().scene().patches().get(0).degreeU());
         app.edits().undo();
         app.edits().undo();
@@ -274,7 +274,7 @@ class AppModelTest {
         app.view().rotate(40, -10);
         app.view().zoom(2);
         OrbitView teapotView = app.view().view();
-        app.edits().resetControlPoints();
+        app.edits().replaceWithFlatGrid();
         assertEquals(1, app.document().scene().patchCount());
         assertNotEquals(teapotView.framing(), app.view().view().framing(), "the reset re-frames on the grid");
         assertEquals(teapotView.zoom(), app.view().view().zoom(), "and keeps the zoom");
@@ -284,6 +284,32 @@ class AppModelTest {
         app.edits().redo();
         assertEquals(1, app.document().scene().patchCount());
         assertEquals(Framing.of(app.document().scene().controlBounds()), app.view().view().framing());
+    }
+
+    @Test
+    void revertToOriginalBringsBackTheOpenedModelAsOneUndoableEditBesideTheFlatGrid() {
+        app.files().openBuiltIn("teapot");
+        Scene teapot = app.document().scene();
+        assertSame(teapot, app.document().original());
+        app.edits().revertToOriginal();
+        assertFalse(app.document().history().canUndo(), "the original already: no edit");
+        assertTrue(app.status().message().contains("as it was opened"), app.status().message());
+        app.edits().randomize(99);
+        app.edits().replaceWithFlatGrid();
+        assertEquals(1, app.document().scene().patchCount(), "the flat grid is one patch");
+        assertEquals(EditCommands.FLAT_GRID, app.document().history().undoName());
+        app.edits().revertToOriginal();
+        assertSame(teapot, app.document().scene(), "every point of the teapot back, all 32 patches");
+        assertEquals(EditCommands.REVERT, app.document().history().undoName());
+        assertEquals(Framing.of(teapot.controlBounds()), app.view().view().framing(), "framed on the teapot again");
+        app.edits().undo();
+        assertEquals(1, app.document().scene().patchCount(), "undo: the flat grid again");
+        app.edits().redo();
+        assertSame(teapot, app.document().scene());
+        assertFalse(app.document().isDirty(), "the original is what was opened: nothing to save");
+        // A model opened afterwards is the new original
+        app.files().openBuiltIn("sphere");
+        assertSame(app.document().scene(), app.document().original());
     }
 
     @Test

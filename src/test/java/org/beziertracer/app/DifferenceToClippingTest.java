@@ -141,7 +141,7 @@ class DifferenceToClippingTest {
 
     @Test
     void aResultThatArrivesAfterTheViewMovedIsDropped() {
-        OrbitView turned = home.rotated(40, 0, ViewModel.RADIANS_PER_PIXEL);
+        OrbitView turned = home.turned(new Arcball(800, 600).drag(400, 300, 440, 300));
         request(home, TESSELLATED);
         assertTrue(model.computing());
         runAll(worker); // the first comparison finished, its result is on its way to the UI thread

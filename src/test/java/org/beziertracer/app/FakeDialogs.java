@@ -7,7 +7,7 @@ import java.util.List;
 import org.beziertracer.UserMessages;
 
 /** Scripted {@link UserDialogs} for controller tests: records errors, answers prompts as told. */
-final class FakeDialogs implements UserDialogs {
+public final class FakeDialogs implements UserDialogs {
     /** The errors shown (the app may show one from any of its threads' callbacks). */
     final List<String> errors = java.util.Collections.synchronizedList(new ArrayList<>());
     Path open;

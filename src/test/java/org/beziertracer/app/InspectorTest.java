@@ -86,6 +86,33 @@ class InspectorTest {
     }
 
     @Test
+    void aRefusalStaysUntilTheSelectionChangesOrAModelIsOpened() {
+        app.select(Selection.of(new PointRef(0, 1, 1)));
+        app.inspector().set(Inspector.Field.X, "abc");
+        assertEquals("x: expected a number, found \"abc\"", app.inspector().message());
+        app.select(Selection.of(new PointRef(0, 1, 1)));
+        assertEquals("x: expected a number, found \"abc\"", app.inspector().message(), "the same selection keeps it");
+        app.select(Selection.of(new PointRef(0, 2, 1)));
+        assertNull(app.inspector().message(), "another selection clears it");
+        app.inspector().set(Inspector.Field.Y, "NaN");
+        assertTrue(app.inspector().message().startsWith("y must be a finite number"));
+        assertNull(app.inspector().set(Inspector.Field.Y, "0.5"));
+        assertNull(app.inspector().message(), "an accepted value clears it");
+        app.document().history().markSaved(); // opening another model asks nothing
+        for (String model : new String[] {"teapot", "sphere", "patch"}) {
+            app.select(Selection.of(new PointRef(0, 1, 1)));
+            app.inspector().set(Inspector.Field.Z, "z?");
+            assertTrue(app.inspector().message() != null);
+            app.files().openBuiltIn(model);
+            assertNull(app.inspector().message(), "opening " + model + " clears it");
+        }
+        app.inspector().set(Inspector.Field.Z, "1");
+        assertEquals("select a control point first", app.inspector().message());
+        app.files().openBuiltIn("torus");
+        assertNull(app.inspector().message(), "a load with nothing selected clears it too");
+    }
+
+    @Test
     void numbersAreShownShortAndExact() {
         assertEquals("1.5", Inspector.format(1.5));
         assertEquals("-0.333333333", Inspector.format(-1.0 / 3));

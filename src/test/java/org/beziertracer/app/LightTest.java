@@ -97,4 +97,46 @@ class LightTest {
         app.files().openBuiltIn("patch");
         assertEquals(LightPlacement.EYE_ABOVE_LEFT, app.settings().current().light(), "a model without lights: the default");
     }
+
+    /** Luminance of an sRGB ARGB pixel, 0..255. */
+    private static double luminance(int argb) {
+        return 0.2126 * (argb >> 16 & 255) + 0.7152 * (argb >> 8 & 255) + 0.0722 * (argb & 255);
+    }
+
+    @Test
+    void theDefaultLightLightsMostOfTheSpheresDiscSoItReadsAsASolid() throws Exception {
+        app.files().openBuiltIn("sphere");
+        assertEquals(LightPlacement.EYE_ABOVE_LEFT, app.settings().current().light());
+        RenderRequest r = last();
+        int w = 160, h = 120;
+        RenderSettings s = r.settings();
+        RenderSettings small = new RenderSettings(w, h, 1, s.sampler(), s.method(), s.bvh(), s.shading(), s.checker(),
+                s.shadows(), s.maxDepth());
+        var si = org.beziertracer.intersect.SceneIntersector.build(r.scene(), r.intersect());
+        var options = r.options().withProgressive(false).withThreads(2);
+        var camera = new org.beziertracer.render.Camera(r.camera());
+        // The same view lit from far behind the sphere: every pixel of its disc gets the ambient term only
+        Framing f = app.view().view().framing();
+        Vec3 behind = f.target().add(camera.forward().scale(1000 * f.radius()));
+        int[] lit, dark;
+        try (var session = new org.beziertracer.render.RenderSession(2, org.beziertracer.render.FrameSink.NONE,
+                org.beziertracer.render.RenderProgress.NONE)) {
+            lit = session.render(new org.beziertracer.render.RenderJob(si, camera, small, options, r.lights())).argb();
+            dark = session.render(new org.beziertracer.render.RenderJob(si, camera, small, options,
+                    List.of(new PointLight(behind)))).argb();
+        }
+        int background = dark[0], disc = 0, litCount = 0;
+        for (int k = 0; k < lit.length; k++) {
+            if (dark[k] != background) {
+                disc++;
+                litCount += luminance(lit[k]) > luminance(dark[k]) + 10 ? 1 : 0;
+            }
+        }
+        assertTrue(disc > w * h / 10, "the sphere covers the picture's middle: " + disc + " pixels");
+        double fraction = (double) litCount / disc;
+        // The old light (from the eye, 3/4 of the way to the target) lit 64 %: the dark side took a third of the disc
+        assertTrue(fraction >= 0.75, "lit over " + Math.round(100 * fraction) + " % of its disc (" + litCount + " of "
+                + disc + " pixels), light at " + r.lights());
+        assertTrue(fraction < 1, "with a terminator (not lit head-on as a flat disc): " + fraction);
+    }
 }

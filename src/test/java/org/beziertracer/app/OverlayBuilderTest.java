@@ -84,6 +84,25 @@ class OverlayBuilderTest {
         assertEquals(16, none.pointCount(), "the count is of the model, drawn or not");
     }
 
+    @Test
+    void theWireframeViewDrawsControlPolygonAndPointsOnlyWhenTheirTogglesAreOn() {
+        Scene s = randomPatch();
+        ScreenProjector p = fit(s, 40, 640, 480);
+        Settings wireframe = Settings.defaults().with(Toggle.RAY_TRACE, false);
+        Settings neither = wireframe.with(Toggle.CONTROL_POLYGON, false).with(Toggle.CONTROL_POINTS, false);
+        OverlayGeometry none = OverlayBuilder.build(OverlayRequest.of(s, p, neither, 1));
+        assertEquals(0, none.handleCount(), "Control Points unchecked: no handles in the wireframe view");
+        assertEquals(0, none.segmentCount(), "Control Polygon unchecked: no polygon in the wireframe view");
+        assertFalse(none.isoCurves().isEmpty(), "the wireframe view still draws its iso-curves");
+        assertFalse(neither.pointsShown(), "unchecked points cannot be picked either");
+        OverlayGeometry pointsOnly = OverlayBuilder.build(OverlayRequest.of(s, p, wireframe.with(Toggle.CONTROL_POLYGON, false), 1));
+        assertEquals(16, pointsOnly.handleCount());
+        assertEquals(0, pointsOnly.segmentCount());
+        OverlayGeometry polygonOnly = OverlayBuilder.build(OverlayRequest.of(s, p, wireframe.with(Toggle.CONTROL_POINTS, false), 1));
+        assertEquals(0, polygonOnly.handleCount());
+        assertEquals(24, polygonOnly.segmentCount());
+    }
+
     /** A grid of side × side flat bicubic patches, one unit each, in z = 0. */
     static Scene grid(int side) {
         return Scene.builder().patches(BigModels.grid(side * side)).build();
@@ -93,7 +112,10 @@ class OverlayBuilderTest {
     void aDenseModelGetsABoundedOverlayThatThinsByScreenDensity() {
         Scene s = grid(100); // 10 000 patches, 160 000 points, on a big picture: more cells than the budget
         ScreenProjector far = fit(s, 40, 1600, 1200);
-        OverlayGeometry g = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 12, 1));
+        // Every patch selected: all their handles stay drawn, thinned (with none, only the focus would be)
+        int[] all = java.util.stream.IntStream.range(0, s.patchCount()).toArray();
+        OverlayGeometry g = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 12, 1, Double.NaN, Double.NaN, all));
+        assertTrue(g.focused());
         assertTrue(g.handleCount() <= OverlayBuilder.HANDLE_BUDGET, "handles " + g.handleCount());
         assertTrue(g.handleCount() > OverlayBuilder.HANDLE_BUDGET / 4, "the screen still fills with handles: "
                 + g.handleCount());
@@ -108,6 +130,83 @@ class OverlayBuilderTest {
         for (int k = 0; k < g.handleCount(); k++) {
             long key = (long) Math.floor(g.handleX(k) / cell) * 100_000 + (long) Math.floor(g.handleY(k) / cell);
             assertTrue(cells.add(key), "one handle per cell at most");
+        }
+    }
+
+    /** The pixel of the centroid of patch {@code p}'s control points. */
+    private static double[] centreOf(Scene s, int p, ScreenProjector projector) {
+        var patch = s.patches().get(p);
+        double x = 0, y = 0, z = 0;
+        for (int j = 0; j <= patch.degreeV(); j++) {
+            for (int i = 0; i <= patch.degreeU(); i++) {
+                x += patch.get(i, j, 0) / patch.pointCount();
+                y += patch.get(i, j, 1) / patch.pointCount();
+                z += patch.get(i, j, 2) / patch.pointCount();
+            }
+        }
+        double[] at = new double[3];
+        projector.project(x, y, z, at);
+        return at;
+    }
+
+    @Test
+    void denseHandlesShowOnlyThePatchUnderTheMouseAndTheSelectedPatches() {
+        Scene s = grid(100); // 10 000 patches on 1600×1200: about 16 pixels a patch, handles far denser than points
+        ScreenProjector far = fit(s, 40, 1600, 1200);
+        OverlayGeometry none = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 0, 1));
+        assertTrue(none.focused(), "dense: focus mode");
+        assertEquals(0, none.handleCount(), "no mouse, nothing selected: no handles cover the surface");
+        assertEquals(-1, none.underMouse());
+        double[] at = centreOf(s, 4242, far);
+        OverlayGeometry hovered = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 0, 1, at[0], at[1], new int[0]));
+        assertEquals(4242, hovered.underMouse(), "the patch under the mouse");
+        assertTrue(hovered.handleCount() > 0 && hovered.handleCount() <= 16, "its handles: " + hovered.handleCount());
+        for (int k = 0; k < hovered.handleCount(); k++) {
+            assertEquals(4242, hovered.handle(k).ref().patch(), "only the hovered patch's handles");
+        }
+        assertNotNull(hovered.pick(at[0], at[1], 16), "and they can be picked");
+        int[] selected = {17, 9001};
+        OverlayGeometry both = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 0, 1, at[0], at[1], selected));
+        Set<Integer> patches = new HashSet<>();
+        for (int k = 0; k < both.handleCount(); k++) {
+            patches.add(both.handle(k).ref().patch());
+        }
+        assertEquals(Set.of(17, 4242, 9001), patches, "the hovered and the selected patches");
+        // Not dense: the teapot, and the same grid zoomed in, show every handle whatever the mouse
+        Scene teapot = Models.teapot();
+        OverlayGeometry t = OverlayBuilder.build(new OverlayRequest(teapot, fit(teapot, 40, 1600, 1200), true, true, 0, 1));
+        assertFalse(t.focused());
+        assertTrue(t.handleCount() > 250, "the teapot's handles: " + t.handleCount());
+        CameraSpec close = new CameraSpec(new Vec3(1.5, 1.5, 10), new Vec3(1.5, 1.5, 0), new Vec3(0, 1, 0), 0, 20);
+        OverlayGeometry zoomed = build(s, new ScreenProjector(close, 800, 800), 0);
+        assertFalse(zoomed.focused(), "zoomed in, a handle per point: " + zoomed.handleCount());
+    }
+
+    @Test
+    void theAppRebuildsDenseHandlesForTheMouseAndTheSelection() {
+        AppModel app = new AppModel(new FakeEngine(), new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
+        try {
+            app.view().resize(1600, 1200, 1);
+            Scene s = grid(100);
+            app.files().open("grid", () -> new org.beziertracer.model.io.SceneDocument(s,
+                    org.beziertracer.model.RenderSettings.defaults()));
+            OverlayGeometry g = app.overlay().geometry();
+            assertTrue(g.focused(), "10 000 patches on screen: dense");
+            assertEquals(0, g.handleCount());
+            double[] at = centreOf(app.document().scene(), 4242, app.view().projector());
+            app.pointer().moved(at[0], at[1]);
+            assertEquals(4242, app.overlay().geometry().underMouse(), "the mouse brings up the patch under it");
+            assertTrue(app.overlay().geometry().handleCount() > 0);
+            app.select(Selection.of(new PointRef(17, 1, 1)));
+            Set<Integer> patches = new HashSet<>();
+            for (int k = 0; k < app.overlay().geometry().handleCount(); k++) {
+                patches.add(app.overlay().geometry().handle(k).ref().patch());
+            }
+            assertEquals(Set.of(17, 4242), patches, "and a selection keeps its patch's handles");
+            app.pointer().left();
+            assertEquals(-1, app.overlay().geometry().underMouse(), "the mouse left the picture");
+        } finally {
+            app.close();
         }
     }
 

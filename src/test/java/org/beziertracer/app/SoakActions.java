@@ -13,7 +13,7 @@ import org.beziertracer.model.io.BuiltIns;
  * A seeded stream of random app commands for the soak tests, made through the same entry points
  * the window's one-line handlers call: the pointer (press on a drawn handle or on empty space,
  * drag, release, hover, wheel), undo and redo, every {@link Toggle}, the methods, the levels, the
- * light, the built-in models, Randomize, Reset Control Points and Reset View. A drag is a gesture
+ * light, the built-in models, Randomize, Replace with Flat Grid and Reset View. A drag is a gesture
  * spread over several steps, and other commands may land between its steps (a key pressed while
  * the mouse is down).
  *
@@ -104,7 +104,7 @@ public final class SoakActions {
                 }
             }
             case RANDOMIZE -> app.edits().randomize((long) (a * 1_000_000));
-            case RESET_POINTS -> app.edits().resetControlPoints();
+            case RESET_POINTS -> app.edits().replaceWithFlatGrid();
             case RESET_VIEW -> app.resetView();
             case RESIZE -> {
                 if (resizes) {

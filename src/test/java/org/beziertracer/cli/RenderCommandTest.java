@@ -138,6 +138,30 @@ class RenderCommandTest {
     }
 
     @Test
+    void aModelWithoutLightsIsLitByTheAppsDefaultLightNotALightAtTheEye() throws IOException {
+        Path byDefault = dir.resolve("default.png"), placed = dir.resolve("placed.png"), atEye = dir.resolve("eye.png");
+        assertEquals(0, run("render", "sphere", "-o", byDefault.toString(), "--size", "80x60", "--threads", "1").code());
+        var scene = org.beziertracer.model.io.Models.sphere();
+        var camera = org.beziertracer.render.RenderJob.defaultCamera(scene, 80.0 / 60).spec();
+        var light = org.beziertracer.render.DefaultLight.position(camera, org.beziertracer.render.RenderJob.bounds(scene));
+        String xyz = light.x() + "," + light.y() + "," + light.z();
+        assertEquals(0, run("render", "sphere", "-o", placed.toString(), "--size", "80x60", "--threads", "1", "--light", xyz).code());
+        var eye = camera.eye();
+        assertEquals(0, run("render", "sphere", "-o", atEye.toString(), "--size", "80x60", "--threads", "1", "--light",
+                eye.x() + "," + eye.y() + "," + eye.z()).code());
+        BufferedImage a = ImageIO.read(byDefault.toFile()), b = ImageIO.read(placed.toFile()), c = ImageIO.read(atEye.toFile());
+        int same = 0, eyeSame = 0;
+        for (int y = 0; y < 60; y++) {
+            for (int x = 0; x < 80; x++) {
+                same += a.getRGB(x, y) == b.getRGB(x, y) ? 1 : 0;
+                eyeSame += a.getRGB(x, y) == c.getRGB(x, y) ? 1 : 0;
+            }
+        }
+        assertEquals(80 * 60, same, "lit exactly as with --light at DefaultLight's place " + xyz);
+        assertTrue(eyeSame < 80 * 60 - 500, "not as with the light at the eye: " + eyeSame + " pixels alike");
+    }
+
+    @Test
     void pixelTracePrintsRaysHitsAndTerms() {
         Run r = run("render", "teapot", "--size", "80x60", "--pixel", "40,30");
         assertEquals(0, r.code(), r.err());

@@ -90,8 +90,15 @@ class BigModelGuiTest extends GuiSession {
         assertTrue(repaintMillis <= MILLIS, "the window repainted " + repaintMillis + " ms after the model opened" + stalls);
         assertTrue(worstStall.get() <= MILLIS, "the event thread stalled for " + worstStall.get() + " ms" + stalls);
 
+        // Dense handles: only the patch under the mouse shows its own; bring the mouse to the middle
+        Point middle = d.screenOf(GuiDriver.onEdt(() -> d.app.view().width()) / 2.0,
+                GuiDriver.onEdt(() -> d.app.view().height()) / 2.0);
+        d.robot.mouseMove(middle.x, middle.y);
+        d.robot.mouseMove(middle.x + 1, middle.y);
+        d.settle();
         OverlayGeometry g = GuiDriver.onEdt(() -> d.app.overlay().geometry());
         assertTrue(g.scene() == big, "the overlay shows the big model");
+        assertTrue(g.focused() && g.underMouse() >= 0, "focused on the patch under the mouse: " + g.underMouse());
         assertEquals(16L * PATCHES, g.pointCount());
         assertTrue(g.handleCount() > 0 && g.handleCount() <= OverlayBuilder.HANDLE_BUDGET, "handles " + g.handleCount());
         assertTrue(d.status("model").startsWith(PATCHES + " patches, " + 16L * PATCHES + " points"), d.status("model"));

@@ -156,7 +156,7 @@ class EditingGuiTest extends GuiSession {
         assertTrue(typed == GuiDriver.onEdt(() -> d.app.document().scene()), "Up in the field does not nudge the point");
         d.typeInto(z, "abc");
         d.settle();
-        javax.swing.JLabel message = d.find("inspector.message");
+        WrappingText message = d.find("inspector.message");
         assertEquals("z: expected a number, found \"abc\"", GuiDriver.onEdt(() -> message.getText()));
         d.focusPicture();
         d.ctrl(KeyEvent.VK_Z);
