@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashSet;
@@ -180,6 +181,34 @@ class OverlayBuilderTest {
         CameraSpec close = new CameraSpec(new Vec3(1.5, 1.5, 10), new Vec3(1.5, 1.5, 0), new Vec3(0, 1, 0), 0, 20);
         OverlayGeometry zoomed = build(s, new ScreenProjector(close, 800, 800), 0);
         assertFalse(zoomed.focused(), "zoomed in, a handle per point: " + zoomed.handleCount());
+    }
+
+    @Test
+    void refocusingReusesTheLastBuildAndGivesWhatAFullBuildGives() {
+        Scene s = grid(100);
+        ScreenProjector far = fit(s, 40, 1600, 1200);
+        OverlayGeometry first = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 0, 1));
+        java.util.Random rnd = new java.util.Random(8);
+        OverlayGeometry last = first;
+        for (int trial = 0; trial < 20; trial++) {
+            double x = rnd.nextDouble() * 1600, y = rnd.nextDouble() * 1200;
+            int[] focus = trial % 3 == 0 ? new int[] {rnd.nextInt(s.patchCount())} : new int[0];
+            OverlayRequest r = new OverlayRequest(s, fit(s, 40, 1600, 1200), true, true, 0, 1, x, y, focus);
+            OverlayGeometry full = OverlayBuilder.build(r), again = OverlayBuilder.build(last, r);
+            String at = "mouse at " + x + ", " + y + ", focus " + java.util.Arrays.toString(focus);
+            assertEquals(full.underMouse(), again.underMouse(), at);
+            assertEquals(full.handleCount(), again.handleCount(), at);
+            for (int k = 0; k < full.handleCount(); k++) {
+                assertEquals(full.handle(k), again.handle(k), at);
+            }
+            assertSame(first.focusIndex(), again.focusIndex(), "the boxes are reused, not projected again: " + at);
+            last = again;
+        }
+        // Another view: built afresh
+        ScreenProjector turned = new ScreenProjector(OrbitView.fit(s.controlBounds(), 40)
+                .turned(new Arcball(1600, 1200).drag(800, 600, 900, 600)).camera(1600.0 / 1200), 1600, 1200);
+        OverlayGeometry moved = OverlayBuilder.build(last, new OverlayRequest(s, turned, true, true, 0, 1));
+        assertTrue(moved.focusIndex() != null && moved.focusIndex() != first.focusIndex(), "a new view is built again");
     }
 
     @Test
