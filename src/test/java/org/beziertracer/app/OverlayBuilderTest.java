@@ -226,6 +226,12 @@ class OverlayBuilderTest {
             app.pointer().moved(at[0], at[1]);
             assertEquals(4242, app.overlay().geometry().underMouse(), "the mouse brings up the patch under it");
             assertTrue(app.overlay().geometry().handleCount() > 0);
+            // Over one of its handles the focus stays, though the neighbours' boxes hold a border point too
+            Handle h = app.overlay().geometry().handle(0);
+            app.pointer().moved(h.x(), h.y());
+            assertEquals(4242, app.overlay().geometry().underMouse(), "the handle under the mouse stays grabbable");
+            assertEquals(h.ref(), app.overlay().hover().ref());
+            app.pointer().moved(at[0], at[1]);
             app.select(Selection.of(new PointRef(17, 1, 1)));
             Set<Integer> patches = new HashSet<>();
             for (int k = 0; k < app.overlay().geometry().handleCount(); k++) {
