@@ -347,12 +347,13 @@ public final class AppModel {
     /**
      * The mouse is over the picture at {@code (x, y)} (device pixels; NaN: it left). With dense
      * handles ({@link OverlayGeometry#focused}) the overlay is built again for the patch under it
-     * (coalesced: the newest position only).
+     * (coalesced: the newest position only) — except while it is over a drawn handle: a point on a
+     * border lies in its neighbours' boxes too, and the handle about to be grabbed must stay.
      */
     void pointerAt(double x, double y) {
         mouseX = x;
         mouseY = y;
-        if (overlay.geometry().focused()) {
+        if (overlay.geometry().focused() && overlay.hover() == null) {
             requestOverlay(false);
         }
     }

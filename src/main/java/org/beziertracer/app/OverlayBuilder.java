@@ -45,6 +45,8 @@ public final class OverlayBuilder {
         HandleGrid grid = r.points() ? new HandleGrid(projector.width(), projector.height(), cell, margin) : null;
         PatchProjection projection = new PatchProjection(projector);
         float[] extent = new float[scene.patchCount()];
+        // Per patch on screen: its net's pixel box and nearest depth, for refocusing without projecting again
+        float[] boxes = grid != null ? new float[5 * extent.length] : null;
         long pointCount = 0;
         int underMouse = -1;
         double nearest = Double.POSITIVE_INFINITY;
@@ -53,6 +55,13 @@ public final class OverlayBuilder {
             BezierPatch patch = scene.patches().get(p);
             pointCount += patch.pointCount();
             extent[p] = projection.project(patch) ? (float) projection.extent(margin) : -1;
+            if (boxes != null) {
+                if (extent[p] >= 0) {
+                    projection.box(boxes, 5 * p);
+                } else {
+                    boxes[5 * p] = Float.NaN; // off screen: never under the mouse
+                }
+            }
             if (extent[p] >= 0 && projection.covers(r.mouseX(), r.mouseY()) && projection.nearestDepth() < nearest) {
                 nearest = projection.nearestDepth();
                 underMouse = p;
@@ -80,7 +89,37 @@ public final class OverlayBuilder {
                 : Double.POSITIVE_INFINITY;
         details.add(scene, extent, polygonFrom, curvesFrom, r.isoCurves());
         return new OverlayGeometry(scene, projector, kept.xy(), kept.depth(), kept.patch(), kept.point(), kept.count(),
-                kept.thinned(), details.polygon(), details.curves(), pointCount, focused, focused ? underMouse : -1);
+                kept.thinned(), details.polygon(), details.curves(), pointCount, focused, focused ? underMouse : -1)
+                .withFocusIndex(focused ? new OverlayGeometry.FocusIndex(r, boxes) : null);
+    }
+
+    /**
+     * The overlay for {@code r}: when {@code previous} was focused and was built for the same scene,
+     * view and switches (only the mouse or the selection moved), its polygon, curves and per-patch
+     * boxes are reused and only the focus handles are found again — a scan of the boxes, O(patches),
+     * instead of projecting every control point; otherwise {@link #build}.
+     */
+    public static OverlayGeometry build(OverlayGeometry previous, OverlayRequest r) {
+        OverlayGeometry.FocusIndex index = previous == null ? null : previous.focusIndex();
+        if (index == null || !index.sameView(r)) {
+            return build(r);
+        }
+        float[] boxes = index.boxes();
+        int underMouse = -1;
+        double nearest = Double.POSITIVE_INFINITY;
+        double x = r.mouseX(), y = r.mouseY();
+        for (int p = 0, n = boxes.length / 5; p < n; p++) {
+            int o = 5 * p;
+            if (x >= boxes[o] && x <= boxes[o + 2] && y >= boxes[o + 1] && y <= boxes[o + 3] && boxes[o + 4] < nearest) {
+                nearest = boxes[o + 4];
+                underMouse = p;
+            }
+        }
+        double cell = Math.ceil(2 * HANDLE_RADIUS * r.unit());
+        HandleGrid.Kept kept = focusHandles(r, new PatchProjection(r.projector()), cell, 2 * cell, underMouse);
+        return new OverlayGeometry(r.scene(), r.projector(), kept.xy(), kept.depth(), kept.patch(), kept.point(), kept.count(),
+                kept.thinned(), previous.polygon(), previous.isoCurves(), previous.pointCount(), true, underMouse)
+                .withFocusIndex(index);
     }
 
     /** The handles of the patch under the mouse and of the focus patches, thinned by density. */

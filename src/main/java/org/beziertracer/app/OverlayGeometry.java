@@ -34,6 +34,31 @@ public final class OverlayGeometry {
     private final long pointCount;
     private final boolean focused;
     private final int underMouse;
+    private FocusIndex focusIndex;
+
+    /**
+     * What a focused overlay keeps to be focused again cheaply: the request it was built for and,
+     * per patch, its control net's pixel box and nearest depth ({@code minX, minY, maxX, maxY,
+     * depth}; NaN for a patch off screen).
+     */
+    record FocusIndex(OverlayRequest built, float[] boxes) {
+        /** True when {@code r} differs from the request built only in the mouse and the selection. */
+        boolean sameView(OverlayRequest r) {
+            return r.scene() == built.scene() && r.projector().camera().equals(built.projector().camera())
+                    && r.projector().width() == built.projector().width()
+                    && r.projector().height() == built.projector().height() && r.points() == built.points()
+                    && r.polygon() == built.polygon() && r.isoCurves() == built.isoCurves() && r.unit() == built.unit();
+        }
+    }
+
+    /** This geometry with {@code index} (set once, by the builder, before it is published). */
+    OverlayGeometry withFocusIndex(FocusIndex index) {
+        focusIndex = index;
+        return this;
+    }
+
+    /** The index to refocus from, or null. */
+    FocusIndex focusIndex() { return focusIndex; }
 
     OverlayGeometry(Scene scene, ScreenProjector projector, float[] handleXY, float[] handleDepth, int[] handlePatch,
                     int[] handlePoint, int handleCount, boolean thinned, List<float[]> polygon,

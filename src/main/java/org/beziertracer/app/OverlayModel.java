@@ -34,8 +34,12 @@ public final class OverlayModel {
         this.builds = new Coalescing<>(worker, this::build, failed);
     }
 
+    /** The last overlay built (overlay worker only: builds run one at a time). */
+    private OverlayGeometry lastBuilt;
+
     private void build(OverlayRequest r) {
-        OverlayGeometry g = OverlayBuilder.build(r);
+        OverlayGeometry g = OverlayBuilder.build(lastBuilt, r);
+        lastBuilt = g;
         delivering.incrementAndGet();
         ui.execute(() -> {
             delivering.decrementAndGet();

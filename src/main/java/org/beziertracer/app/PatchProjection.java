@@ -66,6 +66,15 @@ final class PatchProjection {
         return x >= minX && x <= maxX && y >= minY && y <= maxY;
     }
 
+    /** Writes the last projected net's pixel box and nearest depth to {@code out[o..o+5)}: minX, minY, maxX, maxY, depth. */
+    void box(float[] out, int o) {
+        out[o] = (float) minX;
+        out[o + 1] = (float) minY;
+        out[o + 2] = (float) maxX;
+        out[o + 3] = (float) maxY;
+        out[o + 4] = (float) nearest;
+    }
+
     /** The depth of the last projected net's point nearest the eye. */
     double nearestDepth() { return nearest; }
 

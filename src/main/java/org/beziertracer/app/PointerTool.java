@@ -48,13 +48,14 @@ public final class PointerTool {
     }
 
     public void moved(double x, double y) {
-        app.pointerAt(x, y);
         app.overlay().hover(pick(x, y));
+        app.pointerAt(x, y);
         app.hover().request(x, y);
     }
 
     /** The mouse left the picture (with dense handles, the patch it was over hides its handles again). */
     public void left() {
+        app.overlay().hover(null);
         app.pointerAt(Double.NaN, Double.NaN);
     }
 

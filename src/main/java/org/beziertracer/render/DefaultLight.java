@@ -11,17 +11,18 @@ import org.beziertracer.model.CameraSpec;
  * never lands inside or on the edge of the model whatever the eye's distance:
  * {@code c + R·(x·right + y·up + z·forward)} in the camera's orthonormal frame (forward from the
  * eye to the target, right = forward × up, up = right × forward). The preset {@link #OFFSET} puts it
- * above left of the line of sight, towards the eye, about two radii from the centre and 23° off the
+ * above left of the line of sight, towards the eye, about 1.5 radii from the centre and 21° off the
  * view axis: a sphere is lit over about nine tenths of its disc with a visible fall-off (three-point
- * lighting's key light, as a photographer sets it), and at the default framing (eye about four
- * radii away, 40° field) the light lies inside the picture, where its marker can be dragged.
+ * lighting's key light, as a photographer sets it), and at the default framing (eye three to four
+ * radii away, 40° field) the light lies inside the picture, even a picture taller than wide, where
+ * its marker can be dragged.
  * Stateless.
  */
 public final class DefaultLight {
     private DefaultLight() {}
 
     /** The preset offset, in bounding-sphere radii along the camera's right, up and forward axes. */
-    public static final Vec3 OFFSET = new Vec3(-0.6, 0.45, -1.8);
+    public static final Vec3 OFFSET = new Vec3(-0.45, 0.3, -1.4);
 
     /** The light at {@code offset} (radii along right, up, forward) from the sphere {@code (centre, radius)}. */
     public static Vec3 position(CameraSpec camera, Vec3 centre, double radius, Vec3 offset) {

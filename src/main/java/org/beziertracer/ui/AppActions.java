@@ -91,7 +91,7 @@ public final class AppActions {
         for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
             int place = k;
             add("recent" + k, " ", "Open file " + (k + 1) + " of File → Open Recent again", key(KeyEvent.VK_1 + k, CTRL),
-                    () -> openRecent(place));
+                    () -> openRecent(place)).putValue(ShortcutList.NAME, "Open Recent File " + (k + 1));
         }
     }
 

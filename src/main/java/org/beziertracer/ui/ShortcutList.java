@@ -22,6 +22,9 @@ import org.beziertracer.app.Axis;
 final class ShortcutList {
     private ShortcutList() {}
 
+    /** Action key of the name a row shows when the action's own name is blank (File → Open Recent's places). */
+    static final String NAME = "shortcutName";
+
     /** One shortcut: its keys as the tooltips write them (e.g. {@code Ctrl+Shift+Z}), the command, what it does. */
     record Row(String keys, String command, String description) {}
 
@@ -57,6 +60,7 @@ final class ShortcutList {
     private static Row row(KeyStroke k, Action a) {
         String name = String.valueOf(a.getValue(Action.NAME)).strip();
         String about = a.getValue(Action.LONG_DESCRIPTION) instanceof String s ? s : "";
-        return new Row(AppActions.keyText(k), name.isEmpty() ? about : name, about);
+        Object fallback = a.getValue(NAME);
+        return new Row(AppActions.keyText(k), !name.isEmpty() ? name : fallback != null ? fallback.toString() : about, about);
     }
 }

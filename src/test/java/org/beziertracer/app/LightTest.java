@@ -62,6 +62,14 @@ class LightTest {
         LightMarker m = markers.get(0);
         assertTrue(m.inside(), "the default light shows inside the default view: " + m);
         assertTrue(m.x() < 400 && m.y() < 300, "above left: " + m);
+        for (int[] size : new int[][] {{430, 535}, {1100, 600}, {600, 900}}) {
+            app.view().resize(size[0], size[1], 1);
+            LightMarker other = app.overlay().snapshot().lights().get(0);
+            assertTrue(other.inside() && other.x() < size[0] / 2.0 && other.y() < size[1] / 2.0,
+                    "inside and above left in a " + size[0] + "×" + size[1] + " picture too: " + other);
+        }
+        app.view().resize(800, 600, 1);
+        m = app.overlay().snapshot().lights().get(0);
         Vec3 before = last().lights().get(0).position();
         app.pointer().pressed(m.x(), m.y(), Modifiers.NONE);
         app.pointer().dragged(m.x() + 100, m.y() + 50);

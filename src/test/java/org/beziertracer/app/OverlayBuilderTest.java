@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashSet;
@@ -183,6 +184,34 @@ class OverlayBuilderTest {
     }
 
     @Test
+    void refocusingReusesTheLastBuildAndGivesWhatAFullBuildGives() {
+        Scene s = grid(100);
+        ScreenProjector far = fit(s, 40, 1600, 1200);
+        OverlayGeometry first = OverlayBuilder.build(new OverlayRequest(s, far, true, true, 0, 1));
+        java.util.Random rnd = new java.util.Random(8);
+        OverlayGeometry last = first;
+        for (int trial = 0; trial < 20; trial++) {
+            double x = rnd.nextDouble() * 1600, y = rnd.nextDouble() * 1200;
+            int[] focus = trial % 3 == 0 ? new int[] {rnd.nextInt(s.patchCount())} : new int[0];
+            OverlayRequest r = new OverlayRequest(s, fit(s, 40, 1600, 1200), true, true, 0, 1, x, y, focus);
+            OverlayGeometry full = OverlayBuilder.build(r), again = OverlayBuilder.build(last, r);
+            String at = "mouse at " + x + ", " + y + ", focus " + java.util.Arrays.toString(focus);
+            assertEquals(full.underMouse(), again.underMouse(), at);
+            assertEquals(full.handleCount(), again.handleCount(), at);
+            for (int k = 0; k < full.handleCount(); k++) {
+                assertEquals(full.handle(k), again.handle(k), at);
+            }
+            assertSame(first.focusIndex(), again.focusIndex(), "the boxes are reused, not projected again: " + at);
+            last = again;
+        }
+        // Another view: built afresh
+        ScreenProjector turned = new ScreenProjector(OrbitView.fit(s.controlBounds(), 40)
+                .turned(new Arcball(1600, 1200).drag(800, 600, 900, 600)).camera(1600.0 / 1200), 1600, 1200);
+        OverlayGeometry moved = OverlayBuilder.build(last, new OverlayRequest(s, turned, true, true, 0, 1));
+        assertTrue(moved.focusIndex() != null && moved.focusIndex() != first.focusIndex(), "a new view is built again");
+    }
+
+    @Test
     void theAppRebuildsDenseHandlesForTheMouseAndTheSelection() {
         AppModel app = new AppModel(new FakeEngine(), new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
         try {
@@ -197,6 +226,12 @@ class OverlayBuilderTest {
             app.pointer().moved(at[0], at[1]);
             assertEquals(4242, app.overlay().geometry().underMouse(), "the mouse brings up the patch under it");
             assertTrue(app.overlay().geometry().handleCount() > 0);
+            // Over one of its handles the focus stays, though the neighbours' boxes hold a border point too
+            Handle h = app.overlay().geometry().handle(0);
+            app.pointer().moved(h.x(), h.y());
+            assertEquals(4242, app.overlay().geometry().underMouse(), "the handle under the mouse stays grabbable");
+            assertEquals(h.ref(), app.overlay().hover().ref());
+            app.pointer().moved(at[0], at[1]);
             app.select(Selection.of(new PointRef(17, 1, 1)));
             Set<Integer> patches = new HashSet<>();
             for (int k = 0; k < app.overlay().geometry().handleCount(); k++) {

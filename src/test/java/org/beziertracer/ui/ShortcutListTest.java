@@ -65,6 +65,8 @@ class ShortcutListTest {
             assertTrue(rows.stream().anyMatch(r -> r.keys().startsWith("X") && r.command().contains("Along X")), "axis keys");
             assertEquals(accelerated + 1 + 3, rows.size(), "no row twice, none made up");
             assertTrue(rows.stream().noneMatch(r -> r.command().isBlank()), "every row names its command (recent files too)");
+            assertTrue(rows.contains(new ShortcutList.Row("Ctrl+3", "Open Recent File 3", "Open file 3 of File → Open Recent again")),
+                    "a recent file's place, by number");
             var model = ShortcutsDialog.model(rows);
             assertEquals(3, model.getColumnCount());
             assertEquals(rows.size(), model.getRowCount());
