@@ -88,6 +88,9 @@ final class TraceCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "print build and trace timings to standard error")
     boolean stats;
 
+    /** Standard output is checked for failed writes every 4096 rays. */
+    private static final long STDOUT_CHECK_MASK = 4095;
+
     /** Rays and hits traced so far, and the time spent in the intersector. */
     private long rays, hits, traceNanos;
 
@@ -159,6 +162,13 @@ final class TraceCommand implements Callable<Integer> {
             line.append('\n');
             out.append(line);
             rays++;
+            if (output == null && (rays & STDOUT_CHECK_MASK) == 0) {
+                out.flush();
+                String failed = StandardOutput.failure(spec.commandLine().getOut());
+                if (failed != null) { // stop early: a closed pipe or a full disk takes no more
+                    throw new IOException(failed);
+                }
+            }
         }
     }
 
