@@ -122,7 +122,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         try {
             code = cl.execute(args);
         } catch (Error e) {
-            return CliErrors.report(e, command, cl.getErr());
+            return CliErrors.report(e, command, cl.getErr(), CliErrors.modelArgument(cl));
         }
         // A command that wrote to a full disk or a closed pipe did not succeed
         String failed = StandardOutput.failure(cl.getOut());

@@ -97,6 +97,7 @@ public final class ObjReader {
      *                              naming {@link TextSource#fileName()}
      */
     public static Model readModel(TextSource text) throws IOException {
+        HeapEstimates.requireObj(text); // a file too big for the heap is refused before parsing
         return new Parser(text).parse();
     }
 
