@@ -140,12 +140,12 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
 
     static int launchApp(Consumer<String> desktopApp, String model) {
         if (!DisplayCheck.displayReachable()) {
-            System.err.println(DisplayCheck.NO_DISPLAY);
+            System.err.println(DisplayCheck.noDisplay());
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {
             System.err.println("beziertracer: no desktop app in this build; "
-                    + "use the command line: java -jar target/beziertracer.jar --help");
+                    + "use the command line: " + DisplayCheck.launcher() + " --help");
             return EXIT_NO_DISPLAY;
         }
         desktopApp.accept(model);

@@ -24,6 +24,7 @@ import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
 import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.IoReasons;
 import org.beziertracer.model.io.SceneFiles;
 
 import picocli.CommandLine.Command;
@@ -99,6 +100,16 @@ final class TraceCommand implements Callable<Integer> {
         Method m = Method.parse(method);
         if (random != null && (random < 0 || random > 100_000_000)) {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
+        }
+        if (random != null && input != null) {
+            throw new IllegalArgumentException("--random N and -i RAYS exclude each other: trace N random rays, "
+                    + "or the rays of the file");
+        }
+        if (input != null && input.toString().isEmpty()) {
+            throw new IllegalArgumentException("-i: the ray file name is empty");
+        }
+        if (output != null && output.toString().isEmpty()) {
+            throw new IllegalArgumentException("-o: the output file name is empty");
         }
         refuseOutputOverInput();
         Scene scene = SceneFiles.load(model, Method::parse).scene();
@@ -258,10 +269,17 @@ final class TraceCommand implements Callable<Integer> {
         if (input == null) {
             return System.in;
         }
-        if (!Files.isRegularFile(input)) {
+        if (Files.isDirectory(input)) {
+            throw new IOException(input + ": is a folder, not a ray file");
+        }
+        if (!Files.exists(input)) {
             throw new IOException(input + ": no such ray file");
         }
-        return Files.newInputStream(input);
+        try { // a file, or a device or pipe (/dev/stdin, <(…)): read as it comes
+            return Files.newInputStream(input);
+        } catch (IOException e) {
+            throw new IOException(input + ": cannot read: " + IoReasons.of(e));
+        }
     }
 
     /** The box random rays aim into: the patches' control points, the meshes and the spheres. */
