@@ -134,6 +134,13 @@ public final class FileFormat {
         }
         // A pipe or a device (<(…), /dev/stdin) is read as it comes, its size unknown
         boolean regular = Files.isRegularFile(file);
+        try {
+            if (regular && this == FileFormats.OBJ) {
+                HeapEstimates.requireObjVertexCount(file, fileName, ReadLimits.DEFAULT);
+            }
+        } catch (IOException e) {
+            throw new ModelFormatException(fileName, "cannot read: " + IoReasons.of(e));
+        }
         try (InputStream in = Files.newInputStream(file)) {
             return read(new TextSource(in, fileName, ReadLimits.DEFAULT, regular ? Files.size(file) : -1),
                     file.toAbsolutePath().getParent());

@@ -101,4 +101,19 @@ class HeapEstimatesTest {
         assertEquals(800, HeapEstimates.forFile(obj));
         assertEquals(0, HeapEstimates.forFile(dir.resolve("missing.bpt")));
     }
+
+    @Test
+    void anObjFileWithTooManyVertexLinesIsRefusedByCountingThemBeforeParsing() throws IOException {
+        ReadLimits ten = new ReadLimits(ReadLimits.DEFAULT.lineChars(), ReadLimits.DEFAULT.bytesInMemory(),
+                ReadLimits.DEFAULT.patches(), 10, ReadLimits.DEFAULT.sceneModels(), ReadLimits.DEFAULT.sceneObjects());
+        Path many = Files.writeString(dir.resolve("many.obj"), "# eleven\n" + "v 0 0 0\n".repeat(11) + "f 1 2 3\n");
+        String message = UserMessages.of(ModelFormatException.class,
+                () -> HeapEstimates.requireObjVertexCount(many, "many.obj", ten));
+        assertEquals("many.obj: a file may have at most 10 vertices; this one has more (v lines counted before parsing)",
+                message);
+        // vt, vn and vp lines are not vertices; CRLF lines count like LF ones
+        Path fine = Files.writeString(dir.resolve("fine.obj"), "v 0 0 0\r\n".repeat(10) + "vt 0 0\n".repeat(20)
+                + "vn 0 0 1\n".repeat(20) + "  v 1 1 1\n");
+        HeapEstimates.requireObjVertexCount(fine, "fine.obj", ten);
+    }
 }
