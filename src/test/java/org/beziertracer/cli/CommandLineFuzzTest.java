@@ -215,6 +215,10 @@ class CommandLineFuzzTest {
         }
         assertEquals(List.of(), failures, failures.size() + " of " + mutants + " mutants failed");
         assertEquals(before, listing(cwd), "no mutant wrote into the working folder");
+        for (Path folder : List.of(dir, dir.resolve("confined"))) {
+            assertEquals(List.of(), listing(folder).stream().filter(n -> n.endsWith(".tmp")).toList(),
+                    "no temporary file of an atomic save is left in " + folder);
+        }
         assertTrue(succeeded > 0 && succeeded < mutants, "both outcomes occur: " + succeeded + " succeeded");
     }
 }
