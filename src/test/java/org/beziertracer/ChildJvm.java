@@ -34,6 +34,12 @@ public final class ChildJvm {
      */
     public static Result runWithDisplay(Path dir, String display, String mainClass, String... args)
             throws IOException, InterruptedException {
+        return runWithDisplay(dir, display, List.of(), mainClass, args);
+    }
+
+    /** As {@link #runWithDisplay(Path, String, String, String...)}, with JVM options. */
+    public static Result runWithDisplay(Path dir, String display, List<String> jvmOptions, String mainClass,
+                                        String... args) throws IOException, InterruptedException {
         ProcessBuilder pb = new ProcessBuilder();
         pb.environment().remove("JAVA_TOOL_OPTIONS");
         pb.environment().remove("_JAVA_OPTIONS");
@@ -42,7 +48,7 @@ public final class ChildJvm {
         } else {
             pb.environment().put("DISPLAY", display);
         }
-        return run(dir, List.of(), pb, mainClass, args);
+        return run(dir, jvmOptions, pb, mainClass, args);
     }
 
     private static Result run(Path dir, List<String> jvmOptions, ProcessBuilder pb, String mainClass, String... args)

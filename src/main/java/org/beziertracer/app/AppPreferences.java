@@ -29,7 +29,37 @@ public final class AppPreferences {
 
     /** The user's own preferences. */
     public static AppPreferences user() {
+        prepareUserRoot();
         return new AppPreferences(Preferences.userRoot().node(NODE));
+    }
+
+    /**
+     * Creates the folder of the JDK's file-based preferences ({@code ~/.java/.userPrefs}, or under
+     * {@code java.util.prefs.userRoot}) when it is missing: the JDK would create it too, but logs
+     * two lines on standard error as it does ("INFO: Created user preferences directory.") at
+     * every user's first launch. Private to the user, as the JDK makes it; any failure is left
+     * for the JDK to meet (and report) as before. Only where that store is used (not Windows or macOS).
+     */
+    static void prepareUserRoot() {
+        String os = System.getProperty("os.name", "");
+        if (os.startsWith("Windows") || os.startsWith("Mac")) {
+            return;
+        }
+        try {
+            Path root = Path.of(System.getProperty("java.util.prefs.userRoot", System.getProperty("user.home")),
+                    ".java", ".userPrefs");
+            if (!java.nio.file.Files.isDirectory(root)) {
+                java.nio.file.Files.createDirectories(root);
+                try {
+                    java.nio.file.Files.setPosixFilePermissions(root,
+                            java.nio.file.attribute.PosixFilePermissions.fromString("rwx------"));
+                } catch (UnsupportedOperationException e) {
+                    // not a POSIX file system: its own defaults apply
+                }
+            }
+        } catch (java.io.IOException | RuntimeException e) {
+            // the JDK tries again and says what went wrong
+        }
     }
 
     /** The node written to (tests check what landed there). */

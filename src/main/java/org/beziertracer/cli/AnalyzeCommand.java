@@ -86,8 +86,8 @@ final class AnalyzeCommand implements Callable<Integer> {
         if (columns == 0) {
             result = ContinuityAnalysis.analyze(scene, tol);
         } else {
-            try (ProgressBarDisplay bar = new ProgressBarDisplay(spec.commandLine().getErr(), columns, 1, "analyze",
-                    " borders", 1)) {
+            try (ProgressBarDisplay bar = new ProgressBarDisplay(spec.commandLine().getErr(), columns, 1,
+                    0, "analyze", " borders", 1)) {
                 result = ContinuityAnalysis.analyze(scene, tol, (done, total) -> bar.progress(0, done, total));
             }
         }

@@ -1,5 +1,6 @@
 package org.beziertracer.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -34,6 +35,9 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         }
     }
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     /** Exit code for a headless machine asked to open the app. */
     public static final int EXIT_NO_DISPLAY = 3;
 
@@ -60,6 +64,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
             return launchApp(desktopApp, null);
         }
         CommandLine cl = commandLine();
+        cl.setOut(StandardOutput.system());
         if (args.length == 1 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             String problem = modelProblem(args[0]);
             if (problem != null) {
@@ -108,15 +113,21 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
 
     /**
      * Runs the command; an {@link Error} (out of memory, stack overflow), which picocli lets
-     * through, becomes one line too ({@link CliErrors}).
+     * through, becomes one line too ({@link CliErrors}), and so does output that could not be
+     * written ({@link StandardOutput#failure}): exit code 1 instead of 0.
      */
     private static int execute(CommandLine cl, String[] args) {
+        boolean sub = args.length > 0 && cl.getSubcommands().containsKey(args[0]);
+        String command = sub ? args[0] : cl.getCommandName();
+        int code;
         try {
-            return cl.execute(args);
+            code = cl.execute(args);
         } catch (Error e) {
-            boolean sub = args.length > 0 && cl.getSubcommands().containsKey(args[0]);
-            return CliErrors.report(e, sub ? args[0] : cl.getCommandName(), cl.getErr());
+            return CliErrors.report(e, command, cl.getErr(), CliErrors.modelArgument(cl));
         }
+        // A command that wrote to a full disk or a closed pipe did not succeed
+        String failed = StandardOutput.failure(cl.getOut());
+        return failed != null && code == 0 ? CliErrors.report(new IOException(failed), command, cl.getErr()) : code;
     }
 
     /** The configured command tree: sub-commands plus the one-line error handler. */
@@ -130,12 +141,12 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
 
     static int launchApp(Consumer<String> desktopApp, String model) {
         if (!DisplayCheck.displayReachable()) {
-            System.err.println(DisplayCheck.NO_DISPLAY);
+            System.err.println(DisplayCheck.noDisplay());
             return EXIT_NO_DISPLAY;
         }
         if (desktopApp == null) {
             System.err.println("beziertracer: no desktop app in this build; "
-                    + "use the command line: java -jar target/beziertracer.jar --help");
+                    + "use the command line: " + DisplayCheck.launcher() + " --help");
             return EXIT_NO_DISPLAY;
         }
         desktopApp.accept(model);
@@ -144,7 +155,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
 
     @Override
     public Integer call() {
-        new CommandLine(this).usage(new PrintWriter(System.out, true));
+        spec.commandLine().usage(spec.commandLine().getOut());
         return 0;
     }
 }

@@ -1,7 +1,12 @@
 package org.beziertracer.cli;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
 
+import org.beziertracer.intersect.HeapBudget;
+import org.beziertracer.model.io.HeapEstimates;
 import org.beziertracer.render.Failures;
 
 import picocli.CommandLine;
@@ -22,11 +27,43 @@ final class CliErrors {
 
     /** Prints {@code beziertracer COMMAND: what went wrong} and returns exit code 1. */
     static int report(Throwable e, String command, PrintWriter err) {
-        err.println("beziertracer " + command + ": " + Failures.describe(e));
+        return report(e, command, err, null);
+    }
+
+    /**
+     * As {@link #report(Throwable, String, PrintWriter)}; running out of memory on {@code model}
+     * (the command's MODEL_OR_SCENE, or null) names it and suggests a heap from what reading it
+     * takes ({@link HeapEstimates#forFile}).
+     */
+    static int report(Throwable e, String command, PrintWriter err, String model) {
+        String line = e instanceof OutOfMemoryError && model != null ? model + ": " + outOfMemory(model)
+                : Failures.describe(e);
+        err.println("beziertracer " + command + ": " + line);
         if (System.getenv(Failures.DEBUG_VARIABLE) != null) {
             e.printStackTrace(err);
         }
         err.flush();
         return 1;
+    }
+
+    private static String outOfMemory(String model) {
+        long estimate = 0;
+        try {
+            Path file = Path.of(model);
+            estimate = Files.isRegularFile(file) ? HeapEstimates.forFile(file) : 0;
+        } catch (InvalidPathException e) {
+            // a built-in name: no file to measure
+        }
+        return HeapBudget.outOfMemory(estimate);
+    }
+
+    /** The MODEL_OR_SCENE argument of the sub-command {@code cl} ran, or null. */
+    static String modelArgument(CommandLine cl) {
+        ParseResult parsed = cl.getParseResult();
+        if (parsed == null || !parsed.hasSubcommand()) {
+            return null;
+        }
+        Object model = parsed.subcommand().matchedPositionalValue(0, null);
+        return model instanceof String s ? s : null;
     }
 }

@@ -12,8 +12,11 @@ import org.beziertracer.model.io.FileFormats;
  */
 final class CliText extends ListResourceBundle {
 
-    /** Key of the MODEL / MODEL_OR_SCENE parameter's description. */
-    static final String INPUT = "input";
+    /**
+     * Key of the MODEL / MODEL_OR_SCENE parameter's description. Not {@code input}: picocli looks
+     * an option's description up by its long name, and {@code trace --input RAYS} would get this text.
+     */
+    static final String INPUT = "model-or-scene";
 
     @Override
     protected Object[][] getContents() {

@@ -25,15 +25,23 @@ final class ProgressBarDisplay implements RenderProgress, AutoCloseable {
     private int frame = -1;
     private int generation;
 
-    /** A bar drawn on {@code err}, at most {@code columns} wide, for {@code frameCount} frames. */
-    ProgressBarDisplay(PrintWriter err, int columns, int frameCount) {
-        this(err, columns, frameCount, "render", " k samples", 1000);
+    /**
+     * A bar drawn on {@code err}, at most {@code columns} wide, for {@code frameCount} frames of
+     * about {@code samplesPerFrame} samples each (the first drawing shows {@code 0%} of that total;
+     * the frames' own totals replace it as they start).
+     */
+    ProgressBarDisplay(PrintWriter err, int columns, int frameCount, long samplesPerFrame) {
+        this(err, columns, frameCount, samplesPerFrame, "render", " k samples", 1000);
     }
 
-    /** A bar for another task ({@code analyze}: borders), counted in {@code unit}s of {@code unitSize}. */
-    ProgressBarDisplay(PrintWriter err, int columns, int frameCount, String task, String unit, long unitSize) {
+    /**
+     * A bar for another task ({@code analyze}: borders), counted in {@code unit}s of {@code unitSize};
+     * {@code perFrame} 0 when the total is not known before the first progress.
+     */
+    ProgressBarDisplay(PrintWriter err, int columns, int frameCount, long perFrame, String task, String unit,
+                       long unitSize) {
         this.frameCount = frameCount;
-        this.bar = new ProgressBarBuilder().setTaskName(task).setInitialMax(0)
+        this.bar = new ProgressBarBuilder().setTaskName(task).setInitialMax(perFrame * frameCount)
                 .setStyle(ProgressBarStyle.ASCII).setUpdateIntervalMillis(REFRESH_MILLIS)
                 .setUnit(unit, unitSize)
                 .setConsumer(line = new LineConsumer(err, columns)).build();

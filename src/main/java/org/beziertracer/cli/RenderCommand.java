@@ -150,6 +150,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
     boolean quiet;
 
+    /** Samples of one frame (width × height × spp), the progress bar's first total. */
+    private long samplesPerFrame;
+
     /** Columns of the terminal on standard error, 0 when it is not a terminal; tests replace it. */
     IntSupplier stderrColumns = StandardError::terminalColumns;
 
@@ -164,6 +167,7 @@ final class RenderCommand implements Callable<Integer> {
         SceneDocument doc = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr());
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
+        this.samplesPerFrame = (long) settings.width() * settings.height() * settings.spp();
         Scene scene = doc.scene();
         if (!lights.isEmpty()) {
             List<PointLight> list = new ArrayList<>();
@@ -217,6 +221,9 @@ final class RenderCommand implements Callable<Integer> {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
+        if (output != null && output.toString().isEmpty()) {
+            throw new IllegalArgumentException("-o: the file name is empty; -o needs a .png file name");
+        }
         if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
             throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
         }
@@ -257,7 +264,8 @@ final class RenderCommand implements Callable<Integer> {
     /** The progress bar on standard error, or null with --quiet or when standard error is not a terminal. */
     private ProgressBarDisplay progressBar() {
         int columns = quiet ? 0 : stderrColumns.getAsInt();
-        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, repeat);
+        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, repeat,
+                samplesPerFrame);
     }
 
     private RenderSettings settings(RenderSettings s) {

@@ -4,11 +4,10 @@ import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.Random;
 import java.util.concurrent.Callable;
 
 import org.beziertracer.intersect.HeapBudget;
@@ -23,11 +22,11 @@ import org.beziertracer.math.Aabb;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
-import org.beziertracer.model.io.Echo;
+import org.beziertracer.model.io.AtomicFiles;
+import org.beziertracer.model.io.BuiltIns;
 import org.beziertracer.model.io.IoReasons;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.SceneFiles;
-import org.beziertracer.model.io.TextSource;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -73,7 +72,7 @@ final class TraceCommand implements Callable<Integer> {
     @Option(names = {"-i", "--input"}, paramLabel = "RAYS", description = "ray file (default: standard input)")
     Path input;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "HITS", description = "CSV output (default: standard output)")
+    @Option(names = {"-o", "--output"}, paramLabel = "HITS", description = "CSV output, written atomically: a failed or stopped trace leaves the old file (default: standard output)")
     Path output;
 
     @Option(names = "--random", paramLabel = "N", description = "instead of reading rays, trace N random rays "
@@ -91,53 +90,44 @@ final class TraceCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "print build and trace timings to standard error")
     boolean stats;
 
+    /** Standard output is checked for failed writes every 4096 rays. */
+    private static final long STDOUT_CHECK_MASK = 4095;
+
+    /** Rays and hits traced so far, and the time spent in the intersector. */
+    private long rays, hits, traceNanos;
+
     @Override
     public Integer call() throws IOException {
         Method m = Method.parse(method);
         if (random != null && (random < 0 || random > 100_000_000)) {
             throw new IllegalArgumentException("--random must be 0..100000000, got " + random);
         }
+        if (random != null && input != null) {
+            throw new IllegalArgumentException("--random N and -i RAYS exclude each other: trace N random rays, "
+                    + "or the rays of the file");
+        }
+        if (input != null && input.toString().isEmpty()) {
+            throw new IllegalArgumentException("-i: the ray file name is empty");
+        }
+        if (output != null && output.toString().isEmpty()) {
+            throw new IllegalArgumentException("-o: the output file name is empty");
+        }
+        refuseOutputOverInput();
         Scene scene = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr()).scene();
         boolean objects = !scene.planes().isEmpty() || !scene.spheres().isEmpty() || !scene.meshes().isEmpty();
         IntersectOptions io = IntersectOptions.defaults().withMethod(m).withBvh(!noBvh).withTessellate(tessellate);
         HeapBudget.require(model, scene, io);
         SceneIntersector si = SceneIntersector.build(scene, io);
         TraceContext ctx = si.newContext();
-        Hit hit = new Hit();
-        SurfacePoint sp = new SurfacePoint();
-        double[] bend = curvature ? new double[SurfaceCurvature.LENGTH] : null;
-        long rays = 0, hits = 0;
-        long traceNanos = 0;
-        try (Writer out = openOutput()) {
-            out.write((objects ? HEADER + ",object" : HEADER) + (curvature ? "," + CURVATURE_HEADER : ""));
-            out.write('\n');
-            StringBuilder line = new StringBuilder(256);
-            double[] ray = new double[6];
-            RaySource source = random != null ? new RandomRays(aimBox(scene), random, seed)
-                    : new RayFile(openInput(), input == null ? "stdin" : input.toString());
-            try (source) {
-                while (source.next(ray)) {
-                    long t0 = System.nanoTime();
-                    boolean found = si.closestHit(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0,
-                            Double.POSITIVE_INFINITY, hit);
-                    if (found) {
-                        si.surfacePoint(ctx, hit, sp);
-                        if (curvature) {
-                            si.curvature(ctx, hit, sp, bend);
-                        }
-                    }
-                    traceNanos += System.nanoTime() - t0;
-                    if (found) {
-                        hits++;
-                    }
-                    csvLine(line, rays, found ? hit : null, sp, objects);
-                    if (curvature) {
-                        curvatureColumns(line, found ? bend : null);
-                    }
-                    line.append('\n');
-                    out.append(line);
-                    rays++;
-                }
+        try (RaySource source = random != null ? new RandomRays(aimBox(scene), random, seed)
+                : new RayFile(openInput(), input == null ? "stdin" : input.toString())) {
+            if (output == null) {
+                Writer out = new BufferedWriter(spec.commandLine().getOut(), 1 << 16);
+                trace(si, ctx, source, objects, out);
+                out.flush(); // standard output stays open
+            } else {
+                // Like the PNGs: a failed or killed trace leaves the old file as it was
+                AtomicFiles.write(output, out -> trace(si, ctx, source, objects, out));
             }
         }
         if (stats) {
@@ -151,6 +141,87 @@ final class TraceCommand implements Callable<Integer> {
                     ctx.solverCalls / Math.max(1.0, rays), ctx.clipIterations / Math.max(1.0, rays)));
         }
         return 0;
+    }
+
+    /** Traces every ray of {@code source}, writing the header and one CSV line a ray to {@code out}. */
+    private void trace(SceneIntersector si, TraceContext ctx, RaySource source, boolean objects, Writer out)
+            throws IOException {
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        double[] bend = curvature ? new double[SurfaceCurvature.LENGTH] : null;
+        out.write((objects ? HEADER + ",object" : HEADER) + (curvature ? "," + CURVATURE_HEADER : ""));
+        out.write('\n');
+        StringBuilder line = new StringBuilder(256);
+        double[] ray = new double[6];
+        while (source.next(ray)) {
+            long t0 = System.nanoTime();
+            boolean found = si.closestHit(ctx, ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], 0,
+                    Double.POSITIVE_INFINITY, hit);
+            if (found) {
+                si.surfacePoint(ctx, hit, sp);
+                if (curvature) {
+                    si.curvature(ctx, hit, sp, bend);
+                }
+            }
+            traceNanos += System.nanoTime() - t0;
+            if (found) {
+                hits++;
+            }
+            csvLine(line, rays, found ? hit : null, sp, objects);
+            if (curvature) {
+                curvatureColumns(line, found ? bend : null);
+            }
+            line.append('\n');
+            out.append(line);
+            rays++;
+            if (output == null && (rays & STDOUT_CHECK_MASK) == 0) {
+                out.flush();
+                String failed = StandardOutput.failure(spec.commandLine().getOut());
+                if (failed != null) { // stop early: a closed pipe or a full disk takes no more
+                    throw new IOException(failed);
+                }
+            }
+        }
+    }
+
+    /**
+     * Refuses {@code -o} naming the ray file or the model: the hits would replace what is being
+     * read (only files that exist can be the same).
+     */
+    private void refuseOutputOverInput() {
+        if (output == null) {
+            return;
+        }
+        if (input != null && sameFile(input, output)) {
+            throw new IllegalArgumentException("-o " + output + " is the ray file -i " + input
+                    + ": the hits would replace the rays; choose another output file");
+        }
+        Path modelFile = modelPath();
+        if (modelFile != null && sameFile(modelFile, output)) {
+            throw new IllegalArgumentException("-o " + output + " is the model " + model
+                    + ": the hits would replace it; choose another output file");
+        }
+    }
+
+    /** The model argument as a path, or null when it names a built-in or no valid path. */
+    private Path modelPath() {
+        if (BuiltIns.find(model).isPresent()) {
+            return null;
+        }
+        try {
+            return Path.of(model);
+        } catch (InvalidPathException e) {
+            return null;
+        }
+    }
+
+    /** True when both files exist and are one file (same path, a link, a hard link). */
+    static boolean sameFile(Path a, Path b) {
+        try {
+            return Files.exists(a) && Files.exists(b) && Files.isSameFile(a, b);
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /** One CSV line (without its newline) for ray number {@code ray}: its hit, or empty fields for a miss. */
@@ -195,33 +266,21 @@ final class TraceCommand implements Callable<Integer> {
         }
     }
 
-    private Writer openOutput() throws IOException {
-        if (output == null) {
-            return new BufferedWriter(spec.commandLine().getOut(), 1 << 16) {
-                @Override
-                public void close() throws IOException {
-                    flush(); // do not close System.out
-                }
-            };
-        }
-        if (output.getParent() != null && !Files.isDirectory(output.getParent())) {
-            throw new IOException(output + ": cannot write: the folder " + output.getParent() + " does not exist");
-        }
-        try {
-            return Files.newBufferedWriter(output, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new IOException(output + ": cannot write: " + IoReasons.of(e));
-        }
-    }
-
     private InputStream openInput() throws IOException {
         if (input == null) {
             return System.in;
         }
-        if (!Files.isRegularFile(input)) {
+        if (Files.isDirectory(input)) {
+            throw new IOException(input + ": is a folder, not a ray file");
+        }
+        if (!Files.exists(input)) {
             throw new IOException(input + ": no such ray file");
         }
-        return Files.newInputStream(input);
+        try { // a file, or a device or pipe (/dev/stdin, <(…)): read as it comes
+            return Files.newInputStream(input);
+        } catch (IOException e) {
+            throw new IOException(input + ": cannot read: " + IoReasons.of(e));
+        }
     }
 
     /** The box random rays aim into: the patches' control points, the meshes and the spheres. */
@@ -236,112 +295,5 @@ final class TraceCommand implements Callable<Integer> {
                     + " only planes");
         }
         return box;
-    }
-
-    /** A stream of rays. */
-    interface RaySource extends AutoCloseable {
-        boolean next(double[] ray) throws IOException;
-
-        @Override
-        void close() throws IOException;
-    }
-
-    /** Rays from text, one a line; errors name the source and line. */
-    static final class RayFile implements RaySource {
-        private final InputStream in;
-        private final TextSource text;
-        private final String name;
-
-        /** Rays of {@code in} (closed by {@link #close()} unless it is standard input). */
-        RayFile(InputStream in, String name) {
-            this.in = in;
-            this.text = new TextSource(in, name);
-            this.name = name;
-        }
-
-        @Override
-        public boolean next(double[] ray) throws IOException {
-            String line;
-            while ((line = text.readLine()) != null) {
-                int lineNumber = text.lineNumber();
-                int hash = line.indexOf('#');
-                String text = (hash >= 0 ? line.substring(0, hash) : line).trim();
-                if (text.isEmpty()) {
-                    continue;
-                }
-                String[] parts = text.split("\\s+");
-                if (parts.length != 6) {
-                    throw new IllegalArgumentException(name + ":" + lineNumber + ": expected 6 numbers "
-                            + "'ox oy oz dx dy dz', found " + parts.length + " fields");
-                }
-                for (int k = 0; k < 6; k++) {
-                    try {
-                        ray[k] = Double.parseDouble(parts[k]);
-                    } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException(name + ":" + lineNumber + ": expected a number for "
-                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + ", found " + Echo.quote(parts[k]));
-                    }
-                    if (!Double.isFinite(ray[k])) {
-                        throw new IllegalArgumentException(name + ":" + lineNumber + ": "
-                                + "oxoyozdxdydz".substring(2 * k, 2 * k + 2) + " must be finite, found "
-                                + Echo.quote(parts[k]));
-                    }
-                }
-                if (ray[3] == 0 && ray[4] == 0 && ray[5] == 0) {
-                    throw new IllegalArgumentException(name + ":" + lineNumber + ": the ray direction is zero");
-                }
-                double big = Math.max(Math.abs(ray[3]), Math.max(Math.abs(ray[4]), Math.abs(ray[5])));
-                if (big < 1e-300 || big > 1e300) {
-                    throw new IllegalArgumentException(name + ":" + lineNumber + ": the ray direction's length must be "
-                            + "between 1e-300 and 1e300, found a largest component of " + big);
-                }
-                return true;
-            }
-            return false;
-        }
-
-        @Override
-        public void close() throws IOException {
-            if (in != System.in) {
-                in.close();
-            }
-        }
-    }
-
-    /** Seeded random rays from a sphere around the box toward points inside it. */
-    static final class RandomRays implements RaySource {
-        private final Aabb box;
-        private final Random rnd;
-        private long left;
-
-        RandomRays(Aabb box, long count, long seed) {
-            this.box = box;
-            this.rnd = new Random(seed);
-            this.left = count;
-        }
-
-        @Override
-        public boolean next(double[] ray) {
-            if (left-- <= 0) {
-                return false;
-            }
-            double r = box.diagonal();
-            double cx = box.center().x(), cy = box.center().y(), cz = box.center().z();
-            double gx = rnd.nextGaussian(), gy = rnd.nextGaussian(), gz = rnd.nextGaussian();
-            double len = Math.sqrt(gx * gx + gy * gy + gz * gz);
-            ray[0] = cx + r * gx / len;
-            ray[1] = cy + r * gy / len;
-            ray[2] = cz + r * gz / len;
-            double tx = box.minX() + rnd.nextDouble() * (box.maxX() - box.minX());
-            double ty = box.minY() + rnd.nextDouble() * (box.maxY() - box.minY());
-            double tz = box.minZ() + rnd.nextDouble() * (box.maxZ() - box.minZ());
-            ray[3] = tx - ray[0];
-            ray[4] = ty - ray[1];
-            ray[5] = tz - ray[2];
-            return true;
-        }
-
-        @Override
-        public void close() {}
     }
 }

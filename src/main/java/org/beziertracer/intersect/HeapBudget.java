@@ -1,9 +1,8 @@
 package org.beziertracer.intersect;
 
-import java.util.Locale;
-
 import org.beziertracer.accel.Bvh;
 import org.beziertracer.geometry.SubPatchTable;
+import org.beziertracer.model.HeapRoom;
 import org.beziertracer.model.Scene;
 
 /**
@@ -23,12 +22,8 @@ public final class HeapBudget {
     private static final long MB = 1L << 20;
     private static final long GB = 1L << 30;
 
-    /**
-     * Room the collector needs beyond the live data: measured with G1 (JDK 17) on the teapot
-     * tessellated 100×100, 200 degree-15 patches and 20,000 bicubic patches, the smallest
-     * {@code -Xmx} that built was 1.0–1.1 × (estimate + heap in use before).
-     */
-    static final double GC_HEADROOM = 1.1;
+    /** {@link HeapRoom#GC_HEADROOM}. */
+    static final double GC_HEADROOM = HeapRoom.GC_HEADROOM;
 
     /** About the most heap {@link SceneIntersector#build} holds at once for {@code scene}, in bytes. */
     public static long estimateBytes(Scene scene, IntersectOptions options) {
@@ -79,50 +74,39 @@ public final class HeapBudget {
      * @param what   what needs the memory, the subject of "need about …" ({@code 32 patches})
      */
     public static void require(String source, String what, long estimate) {
-        long bytes = (long) (estimate * GC_HEADROOM);
-        Runtime rt = Runtime.getRuntime();
-        if (bytes <= rt.maxMemory() - used(rt)) {
-            return;
+        String shortfall = HeapRoom.shortfall(what, estimate);
+        if (shortfall != null) {
+            throw new IllegalArgumentException((source == null ? "" : source + ": ") + shortfall);
         }
-        System.gc(); // garbage counts as used until collected; refuse only what truly does not fit
-        long used = used(rt);
-        if (bytes <= rt.maxMemory() - used) {
-            return;
-        }
-        throw new IllegalArgumentException((source == null ? "" : source + ": ") + what + " need about "
-                + size(bytes) + " of heap; " + limit(rt.maxMemory(), used, bytes));
     }
 
     /** The message for an {@link OutOfMemoryError} that escaped every estimate. */
     public static String outOfMemory() {
-        Runtime rt = Runtime.getRuntime();
-        return "out of memory: " + limit(rt.maxMemory(), 0, rt.maxMemory());
+        return outOfMemory(0);
     }
 
-    /** {@code this JVM allows 1 GB (run java -Xmx16g …)}, naming the memory in use when it matters. */
+    /**
+     * The message for an {@link OutOfMemoryError} while working on input that needs at least
+     * {@code estimate} bytes ({@code model.io.HeapEstimates}; 0 when unknown): the suggested heap
+     * is twice this JVM's, or the estimate when that is more.
+     */
+    public static String outOfMemory(long estimate) {
+        long max = Runtime.getRuntime().maxMemory();
+        return "out of memory: " + limit(max, 0, Math.max(max, (long) (estimate * HeapRoom.GC_HEADROOM)));
+    }
+
+    /** {@link HeapRoom#limit}. */
     static String limit(long max, long used, long bytes) {
-        String inUse = used > max / 4 ? ", " + size(used) + " of it in use" : "";
-        return "this JVM allows " + size(max) + inUse + " (run java -Xmx" + suggestion(used + bytes) + " …)";
+        return HeapRoom.limit(max, used, bytes);
     }
 
-    /** A heap size with room to spare: 1.25 × {@code bytes}, rounded up to a power of two. */
+    /** {@link HeapRoom#suggestion}. */
     static String suggestion(long bytes) {
-        long mb = Math.max(64, Long.highestOneBit((long) (bytes * 1.25 / MB)) << 1);
-        return mb >= 1024 ? mb / 1024 + "g" : mb + "m";
+        return HeapRoom.suggestion(bytes);
     }
 
-    /** {@code 640 MB}, {@code 3.2 GB}, {@code 12 GB}. */
+    /** {@link HeapRoom#size}. */
     static String size(long bytes) {
-        if (bytes >= 10 * GB) {
-            return Math.round((double) bytes / GB) + " GB";
-        }
-        if (bytes >= GB) {
-            return String.format(Locale.ROOT, "%.1f GB", (double) bytes / GB).replace(".0 ", " ");
-        }
-        return Math.max(1, Math.round((double) bytes / MB)) + " MB";
-    }
-
-    private static long used(Runtime rt) {
-        return rt.totalMemory() - rt.freeMemory();
+        return HeapRoom.size(bytes);
     }
 }

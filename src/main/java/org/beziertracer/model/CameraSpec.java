@@ -15,7 +15,14 @@ public record CameraSpec(Vec3 eye, Vec3 target, Vec3 up, double fovDegrees, doub
         if (eye.sub(target).length() == 0) {
             throw new IllegalArgumentException("camera eye and target must differ");
         }
-        if (up.length() == 0 || up.cross(target.sub(eye)).length() <= 1e-12 * up.length() * target.sub(eye).length()) {
+        if (!Double.isFinite(eye.sub(target).length())) {
+            throw new IllegalArgumentException("camera eye and target are too far apart: their distance overflows"
+                    + " (beyond the largest number, about 1.8e308)");
+        }
+        if (up.length() == 0) {
+            throw new IllegalArgumentException("camera up must not be the zero vector");
+        }
+        if (up.cross(target.sub(eye)).length() <= 1e-12 * up.length() * target.sub(eye).length()) {
             throw new IllegalArgumentException("camera up must not be parallel to the view direction");
         }
         if (!(fovDegrees >= 0 && fovDegrees < 179)) {

@@ -53,8 +53,23 @@ class LimitsTest {
         ChildJvm.Result r = beziertracer("16m", "info", "huge.json");
         assertEquals(1, r.code(), r.err());
         String line = UserMessages.checkOneLineOutput(r.err());
-        assertTrue(line.startsWith("beziertracer info: out of memory"), line);
+        assertTrue(line.startsWith("beziertracer info: huge.json: out of memory: this JVM allows "), line);
         assertTrue(line.contains("-Xmx"), line);
+    }
+
+    @Test
+    void aMillionPatchFileIsRefusedFromItsHeaderNamingTheFileAndAHeapThatWouldDo() throws Exception {
+        // The header announces a million degree-15 patches; the body stops after the first
+        StringBuilder body = new StringBuilder("1000000\n15 15\n");
+        for (int k = 0; k < 256; k++) {
+            body.append(k).append(" 0 0\n");
+        }
+        Files.writeString(dir.resolve("big.bpt"), body);
+        ChildJvm.Result r = beziertracer("64m", "info", "big.bpt");
+        assertEquals(1, r.code(), r.err());
+        String line = UserMessages.checkOneLineOutput(r.err());
+        assertTrue(line.matches("beziertracer info: big\\.bpt:2: 1000000 patches of degree 15x15 need about 6\\.\\d GB "
+                + "of heap; this JVM allows \\d+ MB(, \\d+ MB of it in use)? \\(run java -Xmx(8|16)g …\\)"), line);
     }
 
     @Test

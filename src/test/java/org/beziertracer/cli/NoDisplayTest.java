@@ -1,8 +1,11 @@
 package org.beziertracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 
 import org.beziertracer.ChildJvm;
 import org.beziertracer.UserMessages;
@@ -22,7 +25,7 @@ class NoDisplayTest {
     private void assertOneLine(String display) throws Exception {
         ChildJvm.Result r = ChildJvm.runWithDisplay(dir, display, "org.beziertracer.Main");
         assertEquals(BezierTracerCommand.EXIT_NO_DISPLAY, r.code(), "exit code; stderr: " + r.err());
-        assertEquals(DisplayCheck.NO_DISPLAY, UserMessages.checkOneLineOutput(r.err()), "the one line on stderr");
+        assertEquals(DisplayCheck.noDisplay(), UserMessages.checkOneLineOutput(r.err()), "the one line on stderr");
         assertEquals("", r.out());
     }
 
@@ -34,5 +37,15 @@ class NoDisplayTest {
     @Test
     void noDisplayAtAllGivesTheSameLine() throws Exception {
         assertOneLine(null);
+    }
+
+    @Test
+    void thePackagedLauncherNamesItselfInTheHint() throws Exception {
+        ChildJvm.Result r = ChildJvm.runWithDisplay(dir, null,
+                List.of("-Djpackage.app-path=/opt/beziertracer/bin/BezierTracer"), "org.beziertracer.Main");
+        assertEquals(BezierTracerCommand.EXIT_NO_DISPLAY, r.code(), r.err());
+        String line = UserMessages.checkOneLineOutput(r.err());
+        assertTrue(line.endsWith("(/opt/beziertracer/bin/BezierTracer --help)"), line);
+        assertFalse(line.contains("java -jar"), line);
     }
 }

@@ -90,9 +90,21 @@ class RenderProgressBarTest {
     }
 
     @Test
+    void theFirstDrawingBeforeAnySampleShowsTheRealTotal() throws InterruptedException {
+        StringWriter err = new StringWriter();
+        try (ProgressBarDisplay bar = new ProgressBarDisplay(new PrintWriter(err), 72, 2, 64 * 48)) {
+            Thread.sleep(3 * ProgressBarDisplay.REFRESH_MILLIS);
+        }
+        String first = err.toString().strip().split("\r")[0].strip();
+        assertTrue(first.startsWith("render   0% ["), first);
+        assertTrue(first.contains("0/6 k samples"), "2 frames of 64x48: " + first);
+        assertTrue(!first.contains("? %") && !first.contains("0/0"), first);
+    }
+
+    @Test
     void theDisplayAddsFramesUpAndRedrawsInPlace() {
         StringWriter err = new StringWriter();
-        try (ProgressBarDisplay bar = new ProgressBarDisplay(new PrintWriter(err), 60, 2)) {
+        try (ProgressBarDisplay bar = new ProgressBarDisplay(new PrintWriter(err), 60, 2, 1000)) {
             bar.progress(7, 500, 1000);
             bar.progress(7, 1000, 1000);
             bar.progress(8, 250, 1000);

@@ -22,4 +22,11 @@ record Run(int code, String out, String err) {
         int code = BezierTracerCommand.run(cl, args, new PrintWriter(out), new PrintWriter(err));
         return new Run(code, out.toString(), err.toString());
     }
+
+    /** Runs {@code beziertracer ARGS} with standard output going to {@code out} (the result's {@code out} is empty). */
+    static Run writingTo(PrintWriter out, String... args) {
+        StringWriter err = new StringWriter();
+        int code = BezierTracerCommand.run(BezierTracerCommand.commandLine(), args, out, new PrintWriter(err));
+        return new Run(code, "", err.toString());
+    }
 }

@@ -12,6 +12,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -23,7 +24,9 @@ import java.util.regex.Pattern;
  * target's directory, which then replaces the target with {@link StandardCopyOption#ATOMIC_MOVE}
  * (falling back to a plain replacing move where the file system cannot do that). A reader never
  * sees a half-written file, and a failed save leaves the old file untouched and no temporary file
- * behind; a save first removes the temporary files a killed save of the same target left.
+ * behind; a save first removes the temporary files a killed save of the same target left. A
+ * symbolic link stays a link: the file it names is replaced. A target that is neither a file nor
+ * a folder (a device such as {@code /dev/null}, a pipe) is written in place.
  *
  * <p>Every failure is one {@link IOException} line naming the target and the reason,
  * {@code teapot.bpt: cannot write: permission denied} ({@link IoReasons}), never the temporary file.
@@ -70,6 +73,15 @@ public final class AtomicFiles {
         if (Files.isDirectory(absolute)) {
             throw cannotWrite(target, "is a folder");
         }
+        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+            writeInPlace(target, absolute, content);
+            return;
+        }
+        if (Files.isSymbolicLink(absolute)) {
+            // Replace the file the link names, not the link
+            absolute = realPath(target, absolute);
+            dir = absolute.getParent();
+        }
         String name = absolute.getFileName().toString();
         Path temp = null;
         boolean moved = false;
@@ -92,6 +104,26 @@ public final class AtomicFiles {
             if (!moved && temp != null) {
                 deleteQuietly(temp);
             }
+        }
+    }
+
+    /**
+     * A device or a pipe ({@code /dev/null}, {@code /dev/stdout}, a FIFO): there is no old file to
+     * keep and moving a file over it would replace the device itself, so the content goes straight in.
+     */
+    private static void writeInPlace(Path target, Path absolute, BinaryContent content) throws IOException {
+        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(absolute, StandardOpenOption.WRITE))) {
+            content.writeTo(out);
+        } catch (IOException e) {
+            throw cannotWrite(target, IoReasons.of(e));
+        }
+    }
+
+    private static Path realPath(Path target, Path link) throws IOException {
+        try {
+            return link.toRealPath();
+        } catch (IOException e) {
+            throw cannotWrite(target, "a link to a file that does not exist");
         }
     }
 

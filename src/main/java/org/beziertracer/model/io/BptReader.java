@@ -28,7 +28,9 @@ import org.beziertracer.model.Scene;
  * In messages, patches and points are numbered from 1 in file order.
  *
  * <p>The patch count is never used to pre-allocate, so an absurd count in a short file fails on
- * the missing data rather than on memory. Lines may be of any length: the reader streams tokens.
+ * the missing data rather than on memory; but a count whose patches, of the first patch's
+ * degrees, could not fit in the heap is refused before the first point is read
+ * ({@link HeapEstimates}). Lines may be of any length: the reader streams tokens.
  * Files are opened through {@link FileFormats#BPT}. Stateless and thread-safe.
  */
 public final class BptReader {
@@ -80,6 +82,9 @@ public final class BptReader {
             String of = " of patch " + p + " (of " + count + " announced)";
             int n = readDegree(tokens, "u degree" + of, fileName);
             int m = readDegree(tokens, "v degree" + of, fileName);
+            if (p == 1) { // refuse what cannot fit now, not after minutes of parsing
+                HeapEstimates.requirePatches(text, tokens.line(), count, n, m);
+            }
             int points = (n + 1) * (m + 1);
             double[] net = new double[points * 3];
             for (int k = 0; k < points; k++) {

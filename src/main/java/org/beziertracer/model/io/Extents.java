@@ -12,17 +12,27 @@ import org.beziertracer.model.Scene;
 final class Extents {
     private Extents() {}
 
+    /**
+     * The widest box (diagonal) a scene may span: framing it puts the camera a few diagonals away
+     * ({@code render.Camera.fit}), which must stay a finite number; intersection is tested up to 1e200.
+     */
+    static final double MAX_SIZE = 1e300;
+
     /** @throws IllegalArgumentException naming the box, when its size overflows */
     static void requireFinite(Scene scene) {
         if (scene.patches().isEmpty() && scene.meshes().isEmpty()) {
             return;
         }
         Aabb b = scene.bounds();
+        String span = "the control points span x[" + NumberText.show(b.minX()) + ","
+                + NumberText.show(b.maxX()) + "] y[" + NumberText.show(b.minY()) + "," + NumberText.show(b.maxY())
+                + "] z[" + NumberText.show(b.minZ()) + "," + NumberText.show(b.maxZ()) + "]";
         if (!Double.isFinite(b.diagonal())) {
-            throw new IllegalArgumentException("the control points span x[" + NumberText.show(b.minX()) + ","
-                    + NumberText.show(b.maxX()) + "] y[" + NumberText.show(b.minY()) + "," + NumberText.show(b.maxY())
-                    + "] z[" + NumberText.show(b.minZ()) + "," + NumberText.show(b.maxZ())
-                    + "], a size that overflows (" + NumberText.BEYOND + ")");
+            throw new IllegalArgumentException(span + ", a size that overflows (" + NumberText.BEYOND + ")");
+        }
+        if (b.diagonal() > MAX_SIZE) {
+            throw new IllegalArgumentException(span + ", wider than " + NumberText.show(MAX_SIZE)
+                    + ": a camera framing it would stand beyond the largest number");
         }
     }
 }

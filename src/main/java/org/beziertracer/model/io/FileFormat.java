@@ -135,12 +135,23 @@ public final class FileFormat {
      */
     public SceneDocument read(Path file) {
         String fileName = file.toString();
-        if (!Files.isRegularFile(file)) {
-            throw new ModelFormatException(fileName, Files.isDirectory(file) ? "is a folder, not a file"
-                    : "no such file");
+        if (Files.isDirectory(file)) {
+            throw new ModelFormatException(fileName, "is a folder, not a file");
+        }
+        if (!Files.exists(file)) {
+            throw new ModelFormatException(fileName, "no such file");
+        }
+        // A pipe or a device (<(…), /dev/stdin) is read as it comes, its size unknown
+        boolean regular = Files.isRegularFile(file);
+        try {
+            if (regular && this == FileFormats.OBJ) {
+                HeapEstimates.requireObjVertexCount(file, fileName, ReadLimits.DEFAULT);
+            }
+        } catch (IOException e) {
+            throw new ModelFormatException(fileName, "cannot read: " + IoReasons.of(e));
         }
         try (InputStream in = Files.newInputStream(file)) {
-            return read(new TextSource(in, fileName, ReadLimits.DEFAULT, Files.size(file)),
+            return read(new TextSource(in, fileName, ReadLimits.DEFAULT, regular ? Files.size(file) : -1),
                     file.toAbsolutePath().getParent());
         } catch (IOException e) {
             throw new ModelFormatException(fileName, "cannot read: " + IoReasons.of(e));

@@ -120,6 +120,7 @@ public final class ObjReader {
      * @throws ModelFormatException for any problem, naming the file (the called one for a problem in it)
      */
     public static Model readModel(TextSource text, Path baseDir) throws IOException {
+        HeapEstimates.requireObj(text); // a file too big for the heap is refused before parsing
         return new Parser(text, baseDir).parse();
     }
 

@@ -47,9 +47,23 @@ public final class SceneFiles {
         try {
             file = Path.of(nameOrPath);
         } catch (InvalidPathException e) {
-            throw new ModelFormatException(nameOrPath, "not a valid file name");
+            throw new ModelFormatException(nameOrPath, invalidName());
         }
         return format.get().read(file);
+    }
+
+    /**
+     * Why a name is no valid path: under a locale whose encoding is not UTF-8 ({@code LANG=C}), Java
+     * can neither receive nor pass on a name with other than ASCII letters ({@code tépot.bpt}
+     * arrives as {@code t\uFFFD\uFFFDpot.bpt}); that is what to fix, not the name.
+     */
+    static String invalidName() {
+        String encoding = System.getProperty("sun.jnu.encoding", "UTF-8");
+        if (!encoding.equalsIgnoreCase("UTF-8") && !encoding.equalsIgnoreCase("UTF8")) {
+            return "not a valid file name in this locale's encoding (" + encoding + "): Java cannot pass on a name"
+                    + " with other than ASCII characters; run with a UTF-8 locale, e.g. LC_ALL=C.UTF-8";
+        }
+        return "not a valid file name";
     }
 
     /**

@@ -71,6 +71,9 @@ public final class TextSource {
 
     public ReadLimits limits() { return limits; }
 
+    /** The file's size in bytes when known, else -1. */
+    public long knownSize() { return knownSize; }
+
     /** An error at {@code line} (0 = the whole file) of this file. */
     public ModelFormatException error(int line, String detail) {
         return new ModelFormatException(fileName, line, detail);

@@ -72,4 +72,27 @@ class AtomicFilesTest {
         assertFalse(names().stream().anyMatch(n -> n.endsWith(".tmp")), names().toString());
         assertTrue(Files.isDirectory(folder));
     }
+
+    @Test
+    void aDeviceIsWrittenInPlaceNeverReplacedByAFile() throws IOException {
+        Path devNull = Path.of("/dev/null"), devFull = Path.of("/dev/full");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(devNull) && Files.exists(devFull), "a Linux /dev");
+        Path copy = dir.resolve("null-link");
+        Files.createSymbolicLink(copy, devNull);
+        AtomicFiles.write(copy, out -> out.write("gone"));
+        assertTrue(Files.isSymbolicLink(copy) && !Files.isRegularFile(devNull), "/dev/null stays a device");
+        String full = UserMessages.of(IOException.class, () -> AtomicFiles.write(devFull, out -> out.write("x".repeat(1 << 16))));
+        assertEquals("/dev/full: cannot write: disk full", full);
+        assertFalse(Files.isRegularFile(devFull), "/dev/full stays a device");
+    }
+
+    @Test
+    void aLinkStaysALinkAndItsFileIsReplaced() throws IOException {
+        Path file = Files.writeString(dir.resolve("real.bpt"), "old");
+        Path link = Files.createSymbolicLink(dir.resolve("link.bpt"), file.getFileName());
+        AtomicFiles.write(link, out -> out.write("new"));
+        assertTrue(Files.isSymbolicLink(link), "still a link");
+        assertEquals("new", Files.readString(file));
+        assertEquals(List.of("link.bpt", "real.bpt"), names());
+    }
 }

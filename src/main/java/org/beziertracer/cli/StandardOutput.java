@@ -1,0 +1,103 @@
+package org.beziertracer.cli;
+
+import java.io.FileDescriptor;
+import java.io.FileOutputStream;
+import java.io.FilterOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.PrintWriter;
+import java.nio.charset.Charset;
+
+import org.beziertracer.model.io.IoReasons;
+
+/**
+ * Standard output for the commands: a {@link PrintWriter} straight over file descriptor 1 that
+ * remembers why a write failed. {@code System.out} and picocli's default writer swallow errors
+ * (a full disk, a closed pipe) and the command would exit 0 having written nothing; after a
+ * command, {@link #failure} turns the writer's error flag into one line that says so,
+ * {@code standard output: write failed (disk full)}. Not thread-safe beyond {@link PrintWriter}'s
+ * own locking.
+ */
+final class StandardOutput extends PrintWriter {
+
+    private final Recorder recorder;
+
+    private StandardOutput(Recorder recorder, Charset charset) {
+        super(new OutputStreamWriter(recorder, charset));
+        this.recorder = recorder;
+    }
+
+    /** Standard output of this process, in the encoding {@code System.out} uses. */
+    static StandardOutput system() {
+        String name = System.getProperty("sun.stdout.encoding");
+        Charset charset;
+        try {
+            charset = name == null ? Charset.defaultCharset() : Charset.forName(name);
+        } catch (IllegalArgumentException e) {
+            charset = Charset.defaultCharset();
+        }
+        return over(new FileOutputStream(FileDescriptor.out), charset);
+    }
+
+    /** A writer over {@code out} (for tests: a stream that fails). */
+    static StandardOutput over(OutputStream out, Charset charset) {
+        return new StandardOutput(new Recorder(out), charset);
+    }
+
+    /**
+     * Null when everything written to {@code out} so far arrived (after a flush), else the line
+     * {@code standard output: write failed (REASON)}; the reason is known when {@code out} is a
+     * {@link StandardOutput}.
+     */
+    static String failure(PrintWriter out) {
+        if (!out.checkError()) {
+            return null;
+        }
+        IOException cause = out instanceof StandardOutput s ? s.recorder.first : null;
+        return "standard output: write failed (" + (cause == null ? "input/output error" : IoReasons.of(cause)) + ")";
+    }
+
+    /** Passes bytes through whole (not one by one, as {@link FilterOutputStream} would) and keeps the first failure. */
+    private static final class Recorder extends FilterOutputStream {
+        private IOException first;
+
+        Recorder(OutputStream out) {
+            super(out);
+        }
+
+        @Override
+        public void write(int b) throws IOException {
+            try {
+                out.write(b);
+            } catch (IOException e) {
+                throw record(e);
+            }
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            try {
+                out.write(b, off, len);
+            } catch (IOException e) {
+                throw record(e);
+            }
+        }
+
+        @Override
+        public void flush() throws IOException {
+            try {
+                out.flush();
+            } catch (IOException e) {
+                throw record(e);
+            }
+        }
+
+        private IOException record(IOException e) {
+            if (first == null) {
+                first = e;
+            }
+            return e;
+        }
+    }
+}
