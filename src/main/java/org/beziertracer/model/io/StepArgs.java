@@ -62,13 +62,13 @@ final class StepArgs {
         if (v instanceof StepFile.Ref r) {
             return "#" + r.id();
         } else if (v instanceof StepFile.Enum e) {
-            return "." + e.name() + ".";
+            return Echo.quote("." + e.name() + ".");
         } else if (v instanceof String s) {
-            return "'" + Echo.cut(s) + "'";
+            return Echo.quote("'" + s + "'");
         } else if (v instanceof List<?> l) {
             return "a list of " + l.size();
         } else if (v instanceof StepFile.Typed t) {
-            return Echo.cut(t.type()) + "(…)";
+            return Echo.quote(t.type() + "(…)");
         }
         return String.valueOf(v);
     }

@@ -45,7 +45,7 @@ record StepUnits(double millimetres, double radians) {
             double f = a.raw(0) == StepFile.UNSET ? 1 : prefix(a, a.enumeration(0, "prefix"));
             String name = a.enumeration(1, "name");
             if (!name.equals("METRE") && !name.equals("RADIAN")) {
-                throw a.error("expected the unit METRE or RADIAN, found ." + Echo.cut(name) + ".");
+                throw a.error("expected the unit METRE or RADIAN, found " + Echo.quote("." + name + "."));
             }
             return f;
         }
@@ -75,7 +75,7 @@ record StepUnits(double millimetres, double radians) {
         double[] factors = {1e18, 1e15, 1e12, 1e9, 1e6, 1e3, 1e2, 1e1, 1e-1, 1e-2, 1e-3, 1e-6, 1e-9, 1e-12, 1e-15, 1e-18};
         int k = names.indexOf(p);
         if (k < 0) {
-            throw a.error("expected an SI prefix such as .MILLI., found ." + Echo.cut(p) + ".");
+            throw a.error("expected an SI prefix such as .MILLI., found " + Echo.quote("." + p + "."));
         }
         return factors[k];
     }
