@@ -61,7 +61,7 @@ final class StepFaces {
                 continue; // a loop of one vertex (a cone's apex) bounds no area
             }
             if (!loop.is("EDGE_LOOP")) {
-                throw new IgesEntities.Skip("a face bounded by a " + StepGeometry.kind(loop));
+                throw new IgesEntities.Skip("bounded by a " + StepGeometry.kind(loop));
             }
             (bound.is("FACE_OUTER_BOUND") ? outer : holes).add(edges(loop, s, surfaceEntity.id()));
         }
@@ -81,14 +81,14 @@ final class StepFaces {
             box = surface.range();
         } else {
             if (outer.isEmpty() && holes.isEmpty()) {
-                throw new IgesEntities.Skip("an unbounded " + s.kind.name().toLowerCase(java.util.Locale.ROOT));
+                throw new IgesEntities.Skip("without bounds on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT));
             }
             box = box(outer, holes);
             if (!(box[1] > box[0] && box[3] > box[2])) {
-                throw new IgesEntities.Skip("a face whose trims enclose no area");
+                throw new IgesEntities.Skip("whose trims enclose no area");
             }
             if (s.angleU() && box[1] - box[0] > 2 * Math.PI * (1 + 1e-9)) {
-                throw new IgesEntities.Skip("a face going round its axis more than once");
+                throw new IgesEntities.Skip("going round its axis more than once");
             }
             surface = s.over(box[0], box[1], box[2], box[3]);
         }
@@ -195,7 +195,7 @@ final class StepFaces {
             previous = TrimLoop.ends(best.piece());
         }
         if (out.isEmpty()) {
-            throw new IgesEntities.Skip("a face with an empty edge loop");
+            throw new IgesEntities.Skip("with an empty edge loop");
         }
         return out;
     }
@@ -221,7 +221,7 @@ final class StepFaces {
             }
         }
         if (out.isEmpty()) {
-            throw new IgesEntities.Skip("a face trimmed by model-space curves only (no PCURVE on its surface)");
+            throw new IgesEntities.Skip("trimmed by model-space curves only (no PCURVE on its surface)");
         }
         return out;
     }
@@ -254,7 +254,7 @@ final class StepFaces {
             return new Raw(sp.toTrimPiece(!forward), false);
         }
         if (!s.invertible()) {
-            throw new IgesEntities.Skip("a LINE or CIRCLE trim curve on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT)
+            throw new IgesEntities.Skip("with a LINE or CIRCLE trim curve on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT)
                     + " surface (its ends need a projection, a later step)");
         }
         StepFile.Entity v0 = edge.ref(1, "edge_start", "VERTEX_POINT"), v1 = edge.ref(2, "edge_end", "VERTEX_POINT");
@@ -295,7 +295,7 @@ final class StepFaces {
             }
         }
         if (forward ? !(te > ts) : !(te < ts)) {
-            throw new IgesEntities.Skip("a trim line whose vertices run against its direction");
+            throw new IgesEntities.Skip("with a trim line whose vertices run against its direction");
         }
         IgesCurve curve = c.over(Math.min(ts, te), Math.max(ts, te));
         return curve.toTrimPiece(!forward);
@@ -328,7 +328,7 @@ final class StepFaces {
             t2 *= angleUnit;
         }
         if (sense ? !(t2 > t1) : !(t2 < t1)) {
-            throw new IgesEntities.Skip("a trimmed curve across its basis curve's period");
+            throw new IgesEntities.Skip("with a trimmed curve across its basis curve's period");
         }
         double lo = Math.min(t1, t2), hi = Math.max(t1, t2);
         IgesCurve curve = c.over(lo, hi);
@@ -349,7 +349,7 @@ final class StepFaces {
                 return a.real(t.value(), name);
             }
         }
-        throw new IgesEntities.Skip("a trimmed curve trimmed by points only");
+        throw new IgesEntities.Skip("with a trimmed curve trimmed by points only");
     }
 
     /** A loop in the B-spline's parameters: pieces mapped (angles by {@link StepSurface#angleParam}), gaps closed. */
@@ -363,7 +363,7 @@ final class StepFaces {
             pieces.add(sameSense ? p : swapped(p));
         }
         double[] rr = sameSense ? range : new double[] {range[2], range[3], range[0], range[1]};
-        return IgesEntities.closedLoop(pieces, rr, detail -> new IgesEntities.Skip("a face whose loop does not close: "
+        return IgesEntities.closedLoop(pieces, rr, detail -> new IgesEntities.Skip("whose loop does not close: "
                 + detail));
     }
 
@@ -379,15 +379,22 @@ final class StepFaces {
         boolean full = Math.min(p.from(), p.to()) == c.start() && Math.max(p.from(), p.to()) == c.end();
         boolean ok = full && ((uConst && (!s.angleV() || monotone(pts, 1))) || (vConst && (!s.angleU() || monotone(pts, 0))));
         if (!ok) {
-            throw new IgesEntities.Skip("a face on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT)
+            throw new IgesEntities.Skip("on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT)
                     + " trimmed across an angle by a curve that is not an iso-parameter line (no exact rational map)");
         }
         double[] out = new double[pts.length];
         for (int k = 0; k < pts.length; k += 2) {
-            out[k] = s.mapU(pts[k], box[0], box[1]);
-            out[k + 1] = s.mapV(pts[k + 1], box[2], box[3]);
+            // vertices found by inversion land within rounding of the box's edges: put them on them
+            out[k] = s.mapU(snap(pts[k], box[0], box[1]), box[0], box[1]);
+            out[k + 1] = s.mapV(snap(pts[k + 1], box[2], box[3]), box[2], box[3]);
         }
         return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), out, c.weights()), p.from(), p.to());
+    }
+
+    /** {@code x} put on {@code lo} or {@code hi} when within 1e-9 of the interval's length of it. */
+    private static double snap(double x, double lo, double hi) {
+        double tol = 1e-9 * (hi - lo);
+        return Math.abs(x - lo) <= tol ? lo : Math.abs(x - hi) <= tol ? hi : x;
     }
 
     private static boolean monotone(double[] pts, int axis) {

@@ -143,7 +143,7 @@ final class StepGeometry {
         if (e.is("B_SPLINE_CURVE_WITH_KNOTS")) {
             return new ParamCurve(spline(e), null, null, null, null, null);
         }
-        throw new IgesEntities.Skip("a " + kind(e) + " trim or swept curve");
+        throw new IgesEntities.Skip("with a " + kind(e) + " trim or swept curve");
     }
 
     /** A short name of what {@code e} is, for the skipped summary. */

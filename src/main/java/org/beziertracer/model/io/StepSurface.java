@@ -85,7 +85,7 @@ final class StepSurface {
                 StepGeometry.ParamCurve c = g.curve(args.ref(1, "swept_curve"));
                 return new StepSurface(Kind.EXTRUSION, null, 0, 0, null, c, g.vector(args.ref(2, "extrusion_axis", "VECTOR")));
             }
-            default -> throw new IgesEntities.Skip("a face on a " + StepGeometry.kind(e));
+            default -> throw new IgesEntities.Skip("on a " + StepGeometry.kind(e));
         }
     }
 
