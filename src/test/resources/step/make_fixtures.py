@@ -5,6 +5,7 @@ Run from this folder: python3 make_fixtures.py. Each fixture is a list of entity
 numbered in order; the layout follows ISO 10303-21 (header, one DATA section) and the entities
 ISO 10303-42 as AP214 uses them. Faces:
   sampler.stp  - a rational B-spline face (complex instance) trimmed by B-spline pcurves,
+                 (last) the polynomial B-spline again, trimmed by a triangle of lines,
                  a polynomial B-spline face whose range is a rectangle of trimmed lines,
                  a plane with a square outer loop of lines and a circular hole,
                  a full cylinder (seam edges), a half cone, a sphere patch, a torus patch,
@@ -227,6 +228,28 @@ def sampler():
     l3 = s.add("LINE('',%s,%s)" % (pt(s, 0, 0, 20), s.add("VECTOR('',%s,1.)" % dirn(s, 1, 0, 0))))
     e3 = s.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (a, b, l3))
     faces.append(face(s, pl, loop(s, [oriented(s, e3), oriented(s, e3, False)])))
+    # 9. the polynomial surface again, trimmed by a triangle of lines whose ends are found from the
+    #    vertices (3-D points evaluated here by Bernstein sums: one span in each direction)
+    def bern(n, i, t):
+        return math.comb(n, i) * t ** i * (1 - t) ** (n - i)
+
+    def poly_point(u, v):
+        x = [0.0, 0.0, 0.0]
+        for i in range(4):
+            for j in range(3):
+                b = bern(3, i, u / 2) * bern(2, j, v)
+                for a in range(3):
+                    x[a] += b * rows[i][j][a]
+        return tuple(x)
+
+    tri = [(0.5, 0.2), (1.8, 0.2), (1.0, 0.9)]
+    vs = [vertex(s, poly_point(*c)) for c in tri]
+    edges = []
+    for k in range(3):
+        a, b = tri[k], tri[(k + 1) % 3]
+        ln = vec_line2d(s, (a[0] - 3 * (b[0] - a[0]), a[1] - 3 * (b[1] - a[1])), (b[0] - a[0], b[1] - a[1]))
+        edges.append(oriented(s, edge(s, vs[k], vs[(k + 1) % 3], [pcurve(s, poly, ln, c2)])))
+    faces.append(face(s, poly, loop(s, edges)))
     shape(s, ctx, faces)
     s.write("sampler.stp")
 

@@ -76,8 +76,8 @@ class StepAnalyticTracingTest {
     @Test
     void theSamplerOpensThroughTheRegistry() {
         var doc = SceneFiles.load("src/test/resources/step/sampler.stp");
-        assertEquals(1 + 1 + 1 + 4 + 2 + 1 + 4, doc.scene().patchCount(),
+        assertEquals(1 + 1 + 1 + 4 + 2 + 1 + 4 + 1, doc.scene().patchCount(),
                 "pieces: quarter cylinder 1, polynomial 1, plane 1, cylinder 4 quarter arcs, half cone 2, sphere 1·1, "
-                        + "torus 2·2");
+                        + "torus 2·2, the polynomial again 1");
     }
 }

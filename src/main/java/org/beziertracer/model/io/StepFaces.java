@@ -253,17 +253,88 @@ final class StepFaces {
             IgesCurve sp = c.spline();
             return new Raw(sp.toTrimPiece(!forward), false);
         }
-        if (!s.invertible()) {
-            throw new IgesEntities.Skip("with a LINE or CIRCLE trim curve on a " + s.kind.name().toLowerCase(java.util.Locale.ROOT)
-                    + " surface (its ends need a projection, a later step)");
-        }
         StepFile.Entity v0 = edge.ref(1, "edge_start", "VERTEX_POINT"), v1 = edge.ref(2, "edge_end", "VERTEX_POINT");
         boolean closed = v0.id() == v1.id();
+        if (s.kind == StepSurface.Kind.BSPLINE && c.line() && !closed) {
+            double ta = projected(c, vertex(loopStartIsEdgeStart ? v0 : v1), s.spline);
+            double tb = projected(c, vertex(loopStartIsEdgeStart ? v1 : v0), s.spline);
+            if (forward ? !(tb > ta) : !(tb < ta)) {
+                throw new IgesEntities.Skip("with a trim line whose vertices run against its direction");
+            }
+            return new Raw(c.over(Math.min(ta, tb), Math.max(ta, tb)).toTrimPiece(!forward), true);
+        }
+        if (!s.invertible()) {
+            throw new IgesEntities.Skip("with a " + (c.line() ? "closed LINE" : "CIRCLE") + " trim curve on a "
+                    + s.kind.name().toLowerCase(java.util.Locale.ROOT) + " surface (its ends need a projection, a later step)");
+        }
         double[] a = s.inverse(vertex(loopStartIsEdgeStart ? v0 : v1)), b = s.inverse(vertex(loopStartIsEdgeStart ? v1 : v0));
         if (c.line()) {
             return new Raw(linePiece(c, a, b, forward, s, previous, closed), true);
         }
         return new Raw(circlePiece(c, a, b, forward, closed), false);
+    }
+
+    /**
+     * The parameter of the point of the line {@code c} (in a B-spline surface's parameters) whose
+     * surface point is nearest {@code p}: the line inside the surface's range sampled, then the
+     * best sample refined by golden-section search; an end within 1e-9 of the range's edge is put
+     * on it. A vertex farther than 1e-6 of the surface's size from the line is a skip.
+     */
+    private static double projected(StepGeometry.ParamCurve c, double[] p, IgesSurface s) {
+        double[] r = s.range(), p0 = c.p0(), d = c.d();
+        double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
+        for (int a = 0; a < 2; a++) {
+            double from = r[2 * a], to = r[2 * a + 1];
+            if (d[a] != 0) {
+                double t0 = (from - p0[a]) / d[a], t1 = (to - p0[a]) / d[a];
+                lo = Math.max(lo, Math.min(t0, t1));
+                hi = Math.min(hi, Math.max(t0, t1));
+            } else if (p0[a] < from || p0[a] > to) {
+                throw new IgesEntities.Skip("with a trim line outside its surface's parameter range");
+            }
+        }
+        if (!(hi > lo)) {
+            throw new IgesEntities.Skip("with a trim line outside its surface's parameter range");
+        }
+        SplinePoint at = SplinePoint.of(s);
+        int samples = 64;
+        double best = lo, bestDistance = Double.POSITIVE_INFINITY;
+        for (int k = 0; k <= samples; k++) {
+            double t = lo + (hi - lo) * k / samples, dist = distance(at, c, t, p, r);
+            if (dist < bestDistance) {
+                bestDistance = dist;
+                best = t;
+            }
+        }
+        double a = Math.max(lo, best - (hi - lo) / samples), b = Math.min(hi, best + (hi - lo) / samples);
+        double g = (Math.sqrt(5) - 1) / 2;
+        for (int k = 0; k < 80 && b - a > 1e-15 * Math.max(1, Math.abs(a)); k++) {
+            double x1 = b - g * (b - a), x2 = a + g * (b - a);
+            if (distance(at, c, x1, p, r) <= distance(at, c, x2, p, r)) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        double t = (a + b) / 2;
+        double size = 0;
+        double[] q = s.points();
+        for (int k = 3; k < q.length; k++) {
+            size = Math.max(size, Math.abs(q[k] - q[k % 3]));
+        }
+        if (!(distance(at, c, t, p, r) <= 1e-6 * Math.max(1, size))) {
+            throw new IgesEntities.Skip("with a trim line whose vertex is not on its surface");
+        }
+        // an end that lands within rounding of the range's edge is put on it
+        int ax = Math.abs(d[0]) >= Math.abs(d[1]) ? 0 : 1;
+        double x = snap(p0[ax] + t * d[ax], r[2 * ax], r[2 * ax + 1]);
+        return (x - p0[ax]) / d[ax];
+    }
+
+    private static double distance(SplinePoint at, StepGeometry.ParamCurve c, double t, double[] p, double[] r) {
+        double[] uv = c.at(t);
+        double[] q = at.at(Math.max(r[0], Math.min(r[1], uv[0])), Math.max(r[2], Math.min(r[3], uv[1])));
+        return Math.sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
     }
 
     private double[] vertex(StepFile.Entity v) {

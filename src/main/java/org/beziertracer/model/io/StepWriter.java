@@ -128,7 +128,7 @@ public final class StepWriter {
     /** One surface: its B-spline, then a face per outer loop (or one bounded by its range). */
     private void face(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV, double[] points,
                       double[] weights, double[] range, TrimRegion trim) {
-        SurfacePoint at = new SurfacePoint(p, q, knotsU, knotsV, countU, countV, points, weights);
+        SplinePoint at = new SplinePoint(p, q, knotsU, knotsV, countU, countV, points, weights);
         int surface = surface(p, q, knotsU, knotsV, countU, countV, points, weights);
         List<Integer> holes = new ArrayList<>();
         if (trim != null) {
@@ -200,7 +200,7 @@ public final class StepWriter {
     }
 
     /** An EDGE_LOOP of the loop's pieces, consecutive edges sharing their vertex. */
-    private int loop(int surface, TrimLoop loop, SurfacePoint at) {
+    private int loop(int surface, TrimLoop loop, SplinePoint at) {
         List<TrimPiece> pieces = loop.pieces();
         List<Integer> vertices = new ArrayList<>();
         for (TrimPiece piece : pieces) {
@@ -215,7 +215,7 @@ public final class StepWriter {
         return add("EDGE_LOOP(''," + refs(edges) + ")");
     }
 
-    private int vertex(SurfacePoint at, double u, double v) {
+    private int vertex(SplinePoint at, double u, double v) {
         double[] p = at.at(u, v);
         return add("VERTEX_POINT(''," + point(p) + ")");
     }
@@ -257,7 +257,7 @@ public final class StepWriter {
     }
 
     /** The rectangle {@code u0 u1 v0 v1} as four lines trimmed by parameter values (u along the first and third). */
-    private int rangeLoop(int surface, double[] r, SurfacePoint at) {
+    private int rangeLoop(int surface, double[] r, SplinePoint at) {
         int[] v = {vertex(at, r[0], r[2]), vertex(at, r[1], r[2]), vertex(at, r[1], r[3]), vertex(at, r[0], r[3])};
         int alongU0 = line(0, r[2], 1, 0), alongV1 = line(r[1], 0, 0, 1), alongU1 = line(0, r[3], 1, 0);
         int alongV0 = line(r[0], 0, 0, 1);
@@ -283,60 +283,5 @@ public final class StepWriter {
             out.write("#" + (k + 1) + "=" + entities.get(k) + ";\n");
         }
         out.write("ENDSEC;\nEND-ISO-10303-21;\n");
-    }
-
-    /**
-     * A point of a rational B-spline surface by de Boor's algorithm in each direction (Piegl &amp;
-     * Tiller, <i>The NURBS Book</i>, 1997, algorithms A2.1 and A4.3), for the vertices.
-     */
-    private record SurfacePoint(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV, double[] points,
-                                double[] weights) {
-
-        double[] at(double u, double v) {
-            int su = span(knotsU, p, countU, u), sv = span(knotsV, q, countV, v);
-            double[] bu = basis(knotsU, p, su, u), bv = basis(knotsV, q, sv, v);
-            double x = 0, y = 0, z = 0, w = 0;
-            for (int j = 0; j <= q; j++) {
-                for (int i = 0; i <= p; i++) {
-                    int k = (sv - q + j) * countU + (su - p + i);
-                    double b = bu[i] * bv[j] * (weights == null ? 1 : weights[k]);
-                    x += b * points[3 * k];
-                    y += b * points[3 * k + 1];
-                    z += b * points[3 * k + 2];
-                    w += b;
-                }
-            }
-            return new double[] {x / w, y / w, z / w};
-        }
-
-        /** The knot span {@code [t_s, t_s+1)} holding {@code t} (the last non-empty one at the end). */
-        private static int span(double[] t, int degree, int count, double x) {
-            int s = degree;
-            while (s < count - 1 && !(x < t[s + 1])) {
-                s++;
-            }
-            while (s > degree && !(t[s] < t[s + 1])) {
-                s--; // at the end of the range: the last span that is not empty
-            }
-            return s;
-        }
-
-        /** The {@code degree + 1} non-zero basis functions at {@code x} in span {@code s} (Cox–de Boor, A2.2). */
-        private static double[] basis(double[] t, int degree, int s, double x) {
-            double[] n = new double[degree + 1], left = new double[degree + 1], right = new double[degree + 1];
-            n[0] = 1;
-            for (int j = 1; j <= degree; j++) {
-                left[j] = x - t[s + 1 - j];
-                right[j] = t[s + j] - x;
-                double saved = 0;
-                for (int r = 0; r < j; r++) {
-                    double temp = n[r] / (right[r + 1] + left[j - r]);
-                    n[r] = saved + right[r + 1] * temp;
-                    saved = left[j - r] * temp;
-                }
-                n[j] = saved;
-            }
-            return n;
-        }
     }
 }

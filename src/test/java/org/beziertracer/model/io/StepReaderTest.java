@@ -51,7 +51,7 @@ class StepReaderTest {
     @Test
     void everyFaceWithParameterSpaceTrimsIsReadAndTheOtherIsSkippedWithItsReason() throws Exception {
         IgesReader.Model m = read(fixture("sampler.stp"), "sampler.stp");
-        assertEquals(7, m.surfaces().size(), m.surfaces().toString());
+        assertEquals(8, m.surfaces().size(), m.surfaces().toString());
         assertEquals("skipped 1 entity: 1 × face trimmed by model-space curves only (no PCURVE on its surface)", m.summary());
         Random rnd = new Random(35);
         for (FreeFormSurface s : m.surfaces()) {
@@ -92,6 +92,20 @@ class StepReaderTest {
         assertArrayEquals(new double[] {0, 0, 0, 0, 2, 2, 2, 2}, poly.parmU());
         assertArrayEquals(new double[] {3, 2, 0.1 * 3 * 2 + 0.05 * 3 * 3}, java.util.Arrays.copyOfRange(poly.points(),
                 3 * (2 * 4 + 3), 3 * (2 * 4 + 3) + 3), "point (3, 2)");
+    }
+
+    @Test
+    void linesOnABSplineSurfaceGetTheirEndsFromTheVerticesProjectedOntoThem() throws Exception {
+        FreeFormSurface tri = sampler().get(7);
+        assertArrayEquals(new double[] {0, 2, 0, 1}, tri.range(), "the knot range");
+        List<TrimPiece> loop = tri.trim().outer().get(0).pieces();
+        double[][] corners = {{0.5, 0.2}, {1.8, 0.2}, {1.0, 0.9}};
+        assertTrue(loop.size() >= 3, loop.toString());
+        for (int k = 0; k < 3; k++) {
+            double[] e = TrimLoop.ends(loop.get(loop.size() == 3 ? k : 2 * k));
+            assertEquals(corners[k][0], e[0], 1e-9, "corner " + k);
+            assertEquals(corners[k][1], e[1], 1e-9, "corner " + k);
+        }
     }
 
     @Test
