@@ -87,8 +87,16 @@ final class StepFaces {
             if (!(box[1] > box[0] && box[3] > box[2])) {
                 throw new IgesEntities.Skip("whose trims enclose no area");
             }
-            if (s.angleU() && box[1] - box[0] > 2 * Math.PI * (1 + 1e-9)) {
-                throw new IgesEntities.Skip("going round its axis more than once");
+            if ((s.angleU() && !(box[1] - box[0] <= 2 * Math.PI * (1 + 1e-9)))
+                    || (s.angleV() && !(box[3] - box[2] <= 2 * Math.PI * (1 + 1e-9)))) {
+                throw new IgesEntities.Skip("going round an angle more than once");
+            }
+            if (s.kind == StepSurface.Kind.EXTRUSION && s.swept.circle() || s.kind == StepSurface.Kind.REVOLUTION
+                    && s.swept.circle()) {
+                double span = s.kind == StepSurface.Kind.EXTRUSION ? box[1] - box[0] : box[3] - box[2];
+                if (!(span <= 2 * Math.PI * (1 + 1e-9))) {
+                    throw new IgesEntities.Skip("going round an angle more than once");
+                }
             }
             surface = s.over(box[0], box[1], box[2], box[3]);
         }
@@ -361,8 +369,8 @@ final class StepFaces {
             if (closed) {
                 te = ts + (forward ? per : -per);
             }
-            while (forward ? te <= ts + tiny : te >= ts - tiny) {
-                te += forward ? per : -per;
+            for (int k = 0; k < 3 && (forward ? te <= ts + tiny : te >= ts - tiny); k++) {
+                te += forward ? per : -per; // at most a period away (more only when rounding swallows a period)
             }
         }
         if (forward ? !(te > ts) : !(te < ts)) {
@@ -402,6 +410,9 @@ final class StepFaces {
             throw new IgesEntities.Skip("with a trimmed curve across its basis curve's period");
         }
         double lo = Math.min(t1, t2), hi = Math.max(t1, t2);
+        if (c.circle() && !(hi - lo <= 2 * Math.PI * (1 + 1e-9))) {
+            throw new IgesEntities.Skip("with a trimmed circle going round more than once");
+        }
         IgesCurve curve = c.over(lo, hi);
         double from = c.circle() ? curve.t0() : lo, to = c.circle() ? curve.t1() : hi;
         if (c.spline() != null && (lo < curve.t0() || hi > curve.t1())) {

@@ -2,6 +2,8 @@ package org.beziertracer.model.io;
 
 import java.util.List;
 
+import org.beziertracer.model.BezierPatch;
+
 /**
  * The geometry entities of a STEP file (ISO 10303-42 as AP203/AP214/AP242 use it) as exact
  * rational B-splines: points, directions and axis placements; curves ({@code LINE},
@@ -169,9 +171,9 @@ final class StepGeometry {
         int degree = b.integer(at, "degree");
         List<?> refs = b.list(at + 1, "control_points_list");
         int n = refs.size();
-        if (degree < 1 || n < 2 || n > 1_000_000) {
-            throw b.error("expected degree ≥ 1 and at least 2 control points, found degree " + degree + " and " + n
-                    + " points");
+        if (degree < 1 || degree > BezierPatch.MAX_DEGREE || n < 2 || n > 1_000_000) {
+            throw b.error("expected degree 1.." + BezierPatch.MAX_DEGREE + " and 2 to 1,000,000 control points, found degree "
+                    + degree + " and " + n + " points");
         }
         double[] pts = new double[3 * n];
         for (int i = 0; i < n; i++) {
@@ -236,9 +238,10 @@ final class StepGeometry {
         int p = b.integer(at, "u_degree"), q = b.integer(at + 1, "v_degree");
         List<?> rows = b.list(at + 2, "control_points_list");
         int nu = rows.size(), nv = nu == 0 ? 0 : b.list(rows.get(0), "control_points_list row 1").size();
-        if (p < 1 || q < 1 || nu < 2 || nv < 2 || (long) nu * nv > 4_000_000) {
-            throw b.error("expected degrees ≥ 1 and at least 2 × 2 control points, found degrees " + p + ", " + q
-                    + " and " + nu + " × " + nv + " points");
+        int max = BezierPatch.MAX_DEGREE;
+        if (p < 1 || q < 1 || p > max || q > max || nu < 2 || nv < 2 || (long) nu * nv > 4_000_000) {
+            throw b.error("expected degrees 1.." + max + " and 2 × 2 to 4,000,000 control points, found degrees " + p
+                    + ", " + q + " and " + nu + " × " + nv + " points");
         }
         double[] pts = new double[3 * nu * nv];
         for (int i = 0; i < nu; i++) {

@@ -45,6 +45,9 @@ public final class StepReader {
     /** Nesting depth of assemblies beyond which the structure is taken for a cycle. */
     static final int MAX_DEPTH = 32;
 
+    /** Most representations placed in all (a part placed n times counts n), so no structure fans out for ever. */
+    static final int MAX_PLACEMENTS = 1_000_000;
+
     static Scene readScene(TextSource text) throws IOException {
         IgesReader.Model m = readModel(text);
         Scene.Builder b = Scene.builder();
@@ -77,7 +80,9 @@ public final class StepReader {
         private final IgesMatrix units;
         private final Map<Integer, Integer> sameFrame = new HashMap<>();
         private final Map<Integer, List<Child>> children = new HashMap<>();
+        private final Map<Integer, List<Child>> childrenOfFrame = new HashMap<>();
         private final Set<Integer> placedAsChild = new HashSet<>();
+        private int placements;
         private final Map<Integer, Set<Integer>> facesOf = new HashMap<>();
         private final Set<Integer> drawn = new HashSet<>();
         private final Map<Integer, Object> converted = new HashMap<>();
@@ -97,8 +102,9 @@ public final class StepReader {
 
         IgesReader.Model run() throws InterruptedIOException {
             structure();
-            for (List<Child> list : children.values()) {
-                for (Child c : list) {
+            for (Map.Entry<Integer, List<Child>> e : children.entrySet()) {
+                childrenOfFrame.computeIfAbsent(frame(e.getKey()), k -> new ArrayList<>()).addAll(e.getValue());
+                for (Child c : e.getValue()) {
                     placedAsChild.add(frame(c.rep()));
                 }
             }
@@ -247,15 +253,14 @@ public final class StepReader {
                 throw file.source.error(0, "assemblies nested more than " + MAX_DEPTH + " deep (a cycle through #"
                         + frame + "?)");
             }
+            if (++placements > MAX_PLACEMENTS) {
+                throw file.source.error(0, "the assemblies place more than " + MAX_PLACEMENTS + " representations");
+            }
             for (int face : facesOf.getOrDefault(frame, Set.of())) {
                 draw(face, m);
             }
-            for (Map.Entry<Integer, List<Child>> e : children.entrySet()) {
-                if (frame(e.getKey()) == frame) {
-                    for (Child c : e.getValue()) {
-                        place(frame(c.rep()), m.after(c.m()), depth + 1);
-                    }
-                }
+            for (Child c : childrenOfFrame.getOrDefault(frame, List.of())) {
+                place(frame(c.rep()), m.after(c.m()), depth + 1);
             }
         }
 

@@ -226,6 +226,25 @@ class StepReaderTest {
     }
 
     @Test
+    void anAssemblyThatContainsItselfIsOneLineNotAHang() throws Exception {
+        String text = fixture("assembly.stp");
+        var m = java.util.regex.Pattern.compile("\\(REPRESENTATION_RELATIONSHIP\\('','',#(\\d+),#(\\d+)\\)"
+                + "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION\\(#(\\d+)\\)").matcher(text);
+        assertTrue(m.find());
+        String cycle = "#9999=(REPRESENTATION_RELATIONSHIP('','',#" + m.group(1) + ",#" + m.group(1)
+                + ")REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#" + m.group(3) + ")SHAPE_REPRESENTATION_RELATIONSHIP());\n";
+        String looped = text.replace("ENDSEC;\nEND-ISO", cycle + "ENDSEC;\nEND-ISO");
+        assertEquals("part.stp: assemblies nested more than 32 deep (a cycle through #" + m.group(1) + "?)",
+                UserMessages.of(ModelFormatException.class, () -> read(looped, "part.stp")));
+    }
+
+    @Test
+    void theFormatIsRegisteredForBothExtensions() {
+        assertEquals(FileFormats.STEP, FileFormats.find("PART.STEP").orElseThrow());
+        assertEquals(FileFormats.STEP, FileFormats.find("part.stp").orElseThrow());
+    }
+
+    @Test
     void aBrokenEntityIsOneLineNamingTheFileTheLineAndTheEntity() throws Exception {
         String text = fixture("sampler.stp").replace("B_SPLINE_SURFACE_WITH_KNOTS((3,3)", "B_SPLINE_SURFACE_WITH_KNOTS((3,2)");
         String msg = UserMessages.of(ModelFormatException.class, () -> read(text, "part.stp"));
