@@ -14,6 +14,21 @@ record SplinePoint(int p, int q, double[] knotsU, double[] knotsV, int countU, i
                 s.weights());
     }
 
+    /** The point {@code (u, v)} at {@code t} of a rational 2-D B-spline ({@code u v} pairs, weights or null). */
+    static double[] curve(int degree, double[] knots, double[] uv, double[] weights, double t) {
+        int count = uv.length / 2, s = span(knots, degree, count, t);
+        double[] b = basis(knots, degree, s, t);
+        double u = 0, v = 0, w = 0;
+        for (int i = 0; i <= degree; i++) {
+            int k = s - degree + i;
+            double bw = b[i] * (weights == null ? 1 : weights[k]);
+            u += bw * uv[2 * k];
+            v += bw * uv[2 * k + 1];
+            w += bw;
+        }
+        return new double[] {u / w, v / w};
+    }
+
     double[] at(double u, double v) {
         int su = span(knotsU, p, countU, u), sv = span(knotsV, q, countV, v);
         double[] bu = basis(knotsU, p, su, u), bv = basis(knotsV, q, sv, v);
@@ -32,7 +47,7 @@ record SplinePoint(int p, int q, double[] knotsU, double[] knotsV, int countU, i
     }
 
     /** The knot span {@code [t_s, t_s+1)} holding {@code t} (the last non-empty one at the end). */
-    private static int span(double[] t, int degree, int count, double x) {
+    static int span(double[] t, int degree, int count, double x) {
         int s = degree;
         while (s < count - 1 && !(x < t[s + 1])) {
             s++;
@@ -44,7 +59,7 @@ record SplinePoint(int p, int q, double[] knotsU, double[] knotsV, int countU, i
     }
 
     /** The {@code degree + 1} non-zero basis functions at {@code x} in span {@code s} (Cox–de Boor, A2.2). */
-    private static double[] basis(double[] t, int degree, int s, double x) {
+    static double[] basis(double[] t, int degree, int s, double x) {
         double[] n = new double[degree + 1], left = new double[degree + 1], right = new double[degree + 1];
         n[0] = 1;
         for (int j = 1; j <= degree; j++) {

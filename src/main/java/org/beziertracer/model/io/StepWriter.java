@@ -19,9 +19,12 @@ import org.beziertracer.model.TrimRegion;
  * one {@code OPEN_SHELL}, a face per surface (the surfaces {@link IgesWriter#eachSurface}
  * chooses). Each face is an {@code ADVANCED_FACE} on a {@code B_SPLINE_SURFACE_WITH_KNOTS} (the
  * complex instance with {@code RATIONAL_B_SPLINE_SURFACE} when it has weights), bounded by
- * {@code EDGE_LOOP}s whose edges are {@code EDGE_CURVE}s on their {@code PCURVE}: the trim
- * curve as a {@code B_SPLINE_CURVE_WITH_KNOTS} in (u, v), inside a {@code TRIMMED_CURVE} by
- * parameter values when only part of it is used; vertices are the surface's points at the ends.
+ * {@code EDGE_LOOP}s whose edges are {@code EDGE_CURVE}s on a {@code SURFACE_CURVE}: its
+ * {@code PCURVE} (the master representation, {@code .PCURVE_S1.}) holds the trim curve as a
+ * {@code B_SPLINE_CURVE_WITH_KNOTS} in (u, v), inside a {@code TRIMMED_CURVE} by parameter
+ * values when only part of it is used; its 3-D curve is a polyline through surface points along
+ * the trim (a trim has no exact 3-D image of low degree); vertices are the surface's points at
+ * the ends.
  * A surface without an outer trim loop gets its parameter range as the outer loop: four lines
  * trimmed by parameter values, which {@link StepReader} reads back as the range. A region of
  * several outer loops becomes one face per outer loop, each with every hole (a face has one
@@ -210,7 +213,8 @@ public final class StepWriter {
         List<Integer> edges = new ArrayList<>();
         for (int k = 0; k < pieces.size(); k++) {
             int curve = pieceCurve(pieces.get(k));
-            edges.add(edge(surface, curve, vertices.get(k), vertices.get((k + 1) % pieces.size())));
+            edges.add(edge(surface, curve, vertices.get(k), vertices.get((k + 1) % pieces.size()), at,
+                    along(pieces.get(k))));
         }
         return add("EDGE_LOOP(''," + refs(edges) + ")");
     }
@@ -220,12 +224,52 @@ public final class StepWriter {
         return add("VERTEX_POINT(''," + point(p) + ")");
     }
 
-    /** The oriented edge on the PCURVE of {@code curve2d}, from vertex {@code v0} to {@code v1}. */
-    private int edge(int surface, int curve2d, int v0, int v1) {
+    /** Points of an edge's 3-D polyline (its curve_3d, the pcurve being the master representation). */
+    private static final int POLYLINE_POINTS = 17;
+
+    /**
+     * The oriented edge from vertex {@code v0} to {@code v1} whose geometry is a SURFACE_CURVE:
+     * the PCURVE of {@code curve2d} as the master representation, and a 3-D polyline through
+     * the surface points over {@code uv} (a trim curve has no exact 3-D image of low degree; the
+     * pcurve is exact, and AP214's advanced face wants a surface curve on its edges).
+     */
+    private int edge(int surface, int curve2d, int v0, int v1, SplinePoint at, double[][] uv) {
         int rep = add("DEFINITIONAL_REPRESENTATION('',(" + ref(curve2d) + ")," + ref(context2d) + ")");
         int pcurve = add("PCURVE(''," + ref(surface) + "," + ref(rep) + ")");
-        int ec = add("EDGE_CURVE(''," + ref(v0) + "," + ref(v1) + "," + ref(pcurve) + ",.T.)");
+        StringBuilder pts = new StringBuilder("(");
+        for (int k = 0; k < uv.length; k++) {
+            pts.append(k == 0 ? "" : ",").append(point(at.at(uv[k][0], uv[k][1])));
+        }
+        StringBuilder knots = new StringBuilder("("), mults = new StringBuilder("(");
+        for (int k = 0; k < uv.length; k++) {
+            knots.append(k == 0 ? "" : ",").append(real(k));
+            mults.append(k == 0 ? "" : ",").append(k == 0 || k == uv.length - 1 ? 2 : 1);
+        }
+        int curve3d = add("B_SPLINE_CURVE_WITH_KNOTS(''," + 1 + "," + pts.append(')') + ",.POLYLINE_FORM.,.F.,.F.,"
+                + mults.append(')') + "," + knots.append(')') + ",.UNSPECIFIED.)");
+        int sc = add("SURFACE_CURVE(''," + ref(curve3d) + ",(" + ref(pcurve) + "),.PCURVE_S1.)");
+        int ec = add("EDGE_CURVE(''," + ref(v0) + "," + ref(v1) + "," + ref(sc) + ",.T.)");
         return add("ORIENTED_EDGE('',*,*," + ref(ec) + ",.T.)");
+    }
+
+    /** {@value #POLYLINE_POINTS} parameter points along {@code piece}, from its start to its end. */
+    private static double[][] along(TrimPiece piece) {
+        TrimCurve c = piece.curve();
+        double[] knots = c.knots(), uv = c.points(), w = c.weights();
+        double[][] out = new double[POLYLINE_POINTS][];
+        for (int k = 0; k < POLYLINE_POINTS; k++) {
+            double t = piece.from() + (piece.to() - piece.from()) * k / (POLYLINE_POINTS - 1);
+            out[k] = SplinePoint.curve(c.degree(), knots, uv, w, k == POLYLINE_POINTS - 1 ? piece.to() : t);
+        }
+        double[] ends = TrimLoop.ends(piece);
+        out[0] = new double[] {ends[0], ends[1]};
+        out[POLYLINE_POINTS - 1] = new double[] {ends[2], ends[3]};
+        return out;
+    }
+
+    /** Two parameter points: a straight edge of the range rectangle. */
+    private static double[][] segment(double u0, double v0, double u1, double v1) {
+        return new double[][] {{u0, v0}, {u1, v1}};
     }
 
     /** A trim piece's curve in (u, v): the B-spline, trimmed by parameter values unless the whole of it runs forward. */
@@ -261,10 +305,11 @@ public final class StepWriter {
         int[] v = {vertex(at, r[0], r[2]), vertex(at, r[1], r[2]), vertex(at, r[1], r[3]), vertex(at, r[0], r[3])};
         int alongU0 = line(0, r[2], 1, 0), alongV1 = line(r[1], 0, 0, 1), alongU1 = line(0, r[3], 1, 0);
         int alongV0 = line(r[0], 0, 0, 1);
-        List<Integer> edges = List.of(edge(surface, trimmed(alongU0, r[0], r[1]), v[0], v[1]),
-                edge(surface, trimmed(alongV1, r[2], r[3]), v[1], v[2]),
-                edge(surface, trimmed(alongU1, r[1], r[0]), v[2], v[3]),
-                edge(surface, trimmed(alongV0, r[3], r[2]), v[3], v[0]));
+        List<Integer> edges = List.of(
+                edge(surface, trimmed(alongU0, r[0], r[1]), v[0], v[1], at, segment(r[0], r[2], r[1], r[2])),
+                edge(surface, trimmed(alongV1, r[2], r[3]), v[1], v[2], at, segment(r[1], r[2], r[1], r[3])),
+                edge(surface, trimmed(alongU1, r[1], r[0]), v[2], v[3], at, segment(r[1], r[3], r[0], r[3])),
+                edge(surface, trimmed(alongV0, r[3], r[2]), v[3], v[0], at, segment(r[0], r[3], r[0], r[2])));
         return add("EDGE_LOOP(''," + refs(edges) + ")");
     }
 

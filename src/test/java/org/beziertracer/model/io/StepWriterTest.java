@@ -183,10 +183,16 @@ class StepWriterTest {
         assertTrue(text.contains("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));"));
         for (String entity : List.of("PRODUCT_DEFINITION_SHAPE(", "SHAPE_DEFINITION_REPRESENTATION(", "OPEN_SHELL(",
                 "MANIFOLD_SURFACE_SHAPE_REPRESENTATION(", "RATIONAL_B_SPLINE_SURFACE(", "ADVANCED_FACE(", "PCURVE(",
+                "SURFACE_CURVE('',", ".PCURVE_S1.)", ".POLYLINE_FORM.",
                 "SI_UNIT(.MILLI.,.METRE.)")) {
             assertTrue(text.contains(entity), entity);
         }
         assertTrue(text.endsWith("ENDSEC;\nEND-ISO-10303-21;\n"));
+        // every edge lies on a surface curve (AP214's advanced face), never on a bare pcurve
+        List<String> edges = text.lines().filter(l -> l.contains("=EDGE_CURVE(")).toList();
+        assertTrue(edges.size() >= 4, "edges: " + edges.size());
+        assertTrue(edges.stream().allMatch(l -> text.contains("#" + l.replaceAll(".*,#(\\d+),\\.T\\.\\);$", "$1") + "=SURFACE_CURVE(")),
+                "an edge whose geometry is not a SURFACE_CURVE");
     }
 
     @Test
