@@ -25,10 +25,10 @@ import org.beziertracer.model.Scene;
  * onto {@code transform_item_2}; a {@code MAPPED_ITEM} places its representation map's
  * representation by mapping its origin onto its target; a relationship without a transformation
  * makes two representations share one frame. A face drawn in no representation is drawn once in
- * the file's frame. Length and plane angle units come from the first
- * {@code GLOBAL_UNIT_ASSIGNED_CONTEXT} ({@code SI_UNIT} with its prefix, or a
- * {@code CONVERSION_BASED_UNIT} such as the inch). Faces it cannot make exact are counted in
- * {@link IgesReader.Model#skipped()} with the reason, never a failure of the whole file.
+ * the file's frame; a face reached twice in the same place is drawn once. Length and plane angle
+ * units come from the first {@code GLOBAL_UNIT_ASSIGNED_CONTEXT} ({@code SI_UNIT} with its
+ * prefix, or a {@code CONVERSION_BASED_UNIT} such as the inch). Faces it cannot make exact are
+ * counted in {@link IgesReader.Model#skipped()} with the reason, never a failure of the whole file.
  *
  * <pre>
  * IgesReader.Model m = StepReader.readModel(TextSource.of(text, "part.stp"));
@@ -85,6 +85,7 @@ public final class StepReader {
         private int placements;
         private final Map<Integer, Set<Integer>> facesOf = new HashMap<>();
         private final Set<Integer> drawn = new HashSet<>();
+        private final Map<Integer, List<IgesMatrix>> placedWith = new HashMap<>();
         private final Map<Integer, Object> converted = new HashMap<>();
         private final List<FreeFormSurface> surfaces = new ArrayList<>();
         private final List<Integer> surfaceMaterial = new ArrayList<>();
@@ -270,6 +271,13 @@ public final class StepReader {
 
         private void draw(int id, IgesMatrix m) throws InterruptedIOException {
             drawn.add(id);
+            List<IgesMatrix> before = placedWith.computeIfAbsent(id, k -> new ArrayList<>(1));
+            for (IgesMatrix b : before) {
+                if (java.util.Arrays.equals(b.m(), m.m())) {
+                    return; // the same face in the same place, reached through two representations
+                }
+            }
+            before.add(m);
             if ((++faceCount & 255) == 0 && Thread.currentThread().isInterrupted()) {
                 throw new InterruptedIOException("the read was cancelled");
             }

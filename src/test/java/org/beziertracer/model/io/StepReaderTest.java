@@ -226,6 +226,16 @@ class StepReaderTest {
     }
 
     @Test
+    void aFaceInTwoRepresentationsInTheSamePlaceIsDrawnOnce() throws Exception {
+        String text = fixture("inches.stp");
+        var m = java.util.regex.Pattern.compile("#(\\d+)=SHELL_BASED_SURFACE_MODEL").matcher(text);
+        assertTrue(m.find());
+        String twice = text.replace("ENDSEC;\nEND-ISO", "#9999=SHAPE_REPRESENTATION('again',(#" + m.group(1)
+                + "),#8);\nENDSEC;\nEND-ISO");
+        assertEquals(1, read(twice, "part.stp").surfaces().size());
+    }
+
+    @Test
     void anAssemblyThatContainsItselfIsOneLineNotAHang() throws Exception {
         String text = fixture("assembly.stp");
         var m = java.util.regex.Pattern.compile("\\(REPRESENTATION_RELATIONSHIP\\('','',#(\\d+),#(\\d+)\\)"
