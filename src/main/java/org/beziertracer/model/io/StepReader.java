@@ -86,6 +86,8 @@ public final class StepReader {
         private final Map<Integer, Set<Integer>> facesOf = new HashMap<>();
         private final Set<Integer> drawn = new HashSet<>();
         private final Map<Integer, List<IgesMatrix>> placedWith = new HashMap<>();
+        /** Containers (shells, solids, face sets) whose faces are already collected for the representation at hand. */
+        private final Set<Integer> opened = new HashSet<>();
         private final Map<Integer, Object> converted = new HashMap<>();
         private final List<FreeFormSurface> surfaces = new ArrayList<>();
         private final List<Integer> surfaceMaterial = new ArrayList<>();
@@ -157,6 +159,7 @@ public final class StepReader {
                 if (rep != null && rep.params().size() >= 2 && rep.params().get(1) instanceof List<?> items) {
                     StepArgs a = new StepArgs(file, e, rep);
                     int frame = frame(e.id());
+                    opened.clear();
                     for (Object o : items) {
                         StepFile.Entity item = a.target(o, "an item");
                         if (item.is("MAPPED_ITEM")) {
@@ -233,8 +236,8 @@ public final class StepReader {
                 out.add(item.id());
                 return;
             }
-            if (item.complex() || !CONTAINERS.contains(item.type()) || depth > MAX_DEPTH) {
-                return;
+            if (item.complex() || !CONTAINERS.contains(item.type()) || depth > MAX_DEPTH || !opened.add(item.id())) {
+                return; // not a container, or one already opened (shared, or in a cycle)
             }
             collectRefs(item, item.parts().get(0).params(), out, depth);
         }

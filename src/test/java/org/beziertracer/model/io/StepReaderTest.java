@@ -23,6 +23,7 @@ import org.beziertracer.model.TrimLoop;
 import org.beziertracer.model.TrimPiece;
 import org.beziertracer.model.TrimRegion;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
 /**
  * The STEP reader on fixtures written by an independent Python script
@@ -233,6 +234,17 @@ class StepReaderTest {
         String twice = text.replace("ENDSEC;\nEND-ISO", "#9999=SHAPE_REPRESENTATION('again',(#" + m.group(1)
                 + "),#8);\nENDSEC;\nEND-ISO");
         assertEquals(1, read(twice, "part.stp").surfaces().size());
+    }
+
+    @Test
+    @Timeout(value = 20, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aShellThatListsItselfIsReadOnceNotForEver() throws Exception {
+        String text = fixture("inches.stp");
+        var m = java.util.regex.Pattern.compile("#(\\d+)=OPEN_SHELL\\('',\\((#\\d+)\\)\\)").matcher(text);
+        assertTrue(m.find());
+        String self = "#" + m.group(1);
+        String looped = m.replaceFirst("#$1=OPEN_SHELL('',($2," + self + "," + self + "," + self + "))");
+        assertEquals(1, read(looped, "part.stp").surfaces().size());
     }
 
     @Test
