@@ -23,7 +23,7 @@ final class StepTrims {
 
     /** A line from loop-start parameters {@code a} to loop-end {@code b}, along the line when {@code forward}. */
     static TrimPiece linePiece(StepGeometry.ParamCurve c, double[] a, double[] b, boolean forward, StepSurface s,
-                                       double[] previous, boolean closed) {
+                               double[] previous, boolean closed) {
         double[] p0 = c.p0(), d = c.d();
         int ax = Math.abs(d[0]) >= Math.abs(d[1]) ? 0 : 1;
         double period = ax == 0 ? s.periodU() : s.periodV();
@@ -48,7 +48,7 @@ final class StepTrims {
 
     /** A circle (on a plane) from loop-start parameters {@code a} to loop-end {@code b}. */
     static TrimPiece circlePiece(StepGeometry.ParamCurve c, double[] a, double[] b, boolean forward,
-                                         boolean closed) {
+                                 boolean closed) {
         double[] from = forward ? a : b, to = forward ? b : a; // along the circle (counter-clockwise)
         double t0 = angle(c, from), t1 = closed ? t0 + 2 * Math.PI : angle(c, to);
         while (t1 <= t0 + 1e-12) {
