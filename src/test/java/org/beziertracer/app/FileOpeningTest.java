@@ -39,7 +39,7 @@ class FileOpeningTest {
         Scene before = app.document().scene();
         app.files().openDropped(List.of(png));
         assertEquals(1, dialogs.errors.size());
-        assertEquals(png + ": cannot open this kind of file; drop a .bpt, .obj, .igs, .iges or .json file", dialogs.errors.get(0));
+        assertEquals(png + ": cannot open this kind of file; drop a .bpt, .obj, .igs, .iges, .stp, .step or .json file", dialogs.errors.get(0));
         assertSame(before, app.document().scene());
         Path obj = teapotFile("pot.obj");
         app.files().openDropped(List.of(png, obj));

@@ -43,7 +43,7 @@ class ConvertCommandTest {
         Run r = Run.of("convert", "no-such-file.obj", dir.resolve("x.png").toString());
         assertEquals(1, r.code());
         assertEquals("beziertracer convert: " + dir.resolve("x.png") + ": expected a file name ending in .bpt, .obj, "
-                + ".igs, .iges or .json (the format to write)\n", r.err());
+                + ".igs, .iges, .stp, .step or .json (the format to write)\n", r.err());
     }
 
     @Test

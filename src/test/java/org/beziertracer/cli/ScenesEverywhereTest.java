@@ -65,14 +65,14 @@ class ScenesEverywhereTest {
         assertEquals(1, r.code());
         assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus,"
                 + " trimmed-plate, wavy6, wavy10, curved, teapot-room) and not a"
-                + " .bpt, .obj, .igs, .iges or .json file", UserMessages.checkOneLineOutput(r.err()));
+                + " .bpt, .obj, .igs, .iges, .stp, .step or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
 
     @Test
     void everyCommandsHelpListsTheRegisteredFormatsAndBuiltIns() {
         for (String command : new String[] {"info", "trace", "render"}) {
             String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
-            assertTrue(help.contains("a .bpt, .obj, .igs, .iges or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
+            assertTrue(help.contains("a .bpt, .obj, .igs, .iges, .stp, .step or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
                     + " torus, trimmed-plate,"
                     + " wavy6, wavy10, curved, teapot-room"), help);
         }

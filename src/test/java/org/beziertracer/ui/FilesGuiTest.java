@@ -235,7 +235,7 @@ class FilesGuiTest extends GuiSession {
         Path png = Files.writeString(dir.resolve("photo.png"), "x");
         dropOnPicture(png.toFile());
         JDialog dialog = d.dialogWith(JOptionPane.class);
-        assertEquals(png + ": cannot open this kind of file; drop a .bpt, .obj, .igs, .iges or .json file", d.optionMessage(dialog));
+        assertEquals(png + ": cannot open this kind of file; drop a .bpt, .obj, .igs, .iges, .stp, .step or .json file", d.optionMessage(dialog));
         d.click(GuiDriver.onEdt(() -> GuiDriver.button(dialog, "OK")));
         d.waitFor("the dialog to close", () -> !dialog.isShowing());
         assertEquals("patch — Bézier Tracer", title(), "the model stays");

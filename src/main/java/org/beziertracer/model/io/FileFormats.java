@@ -14,10 +14,10 @@ import org.beziertracer.model.io.FileFormat.Holds;
  *
  * <pre>
  * FileFormats.find("teapot.OBJ")            → Optional[OBJ]       (by extension, any case)
- * FileFormats.ALL                           → [BPT, OBJ, IGES, scene]
- * FileFormats.holding(Holds.MODEL)          → [BPT, OBJ, IGES]        (what a scene's "file" may name)
- * FileFormats.writable()                    → [BPT, OBJ, IGES, scene]
- * FileFormats.extensionList(FileFormats.ALL) → ".bpt, .obj, .igs, .iges or .json"
+ * FileFormats.ALL                           → [BPT, OBJ, IGES, STEP, scene]
+ * FileFormats.holding(Holds.MODEL)          → [BPT, OBJ, IGES, STEP]  (what a scene's "file" may name)
+ * FileFormats.writable()                    → [BPT, OBJ, IGES, STEP, scene]
+ * FileFormats.extensionList(FileFormats.ALL) → ".bpt, .obj, .igs, .iges, .stp, .step or .json"
  * FileFormats.OBJ.read(path) / .write(path, doc)
  * </pre>
  * Stateless and thread-safe.
@@ -46,12 +46,16 @@ public final class FileFormats {
     public static final FileFormat IGES = FileFormat.model("IGES", "IGES surfaces", List.of("igs", "iges"),
             (text, baseDir, notes) -> IgesReader.readScene(text, notes), IgesWriter::write);
 
+    /** STEP (ISO 10303-21) faces: B-spline and analytic surfaces with parameter-space trims ({@link StepReader}, {@link StepWriter}). */
+    public static final FileFormat STEP = FileFormat.model("STEP", "STEP surfaces", List.of("stp", "step"),
+            StepReader::readScene, StepWriter::write);
+
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),
             Holds.SCENE, SceneFiles::read, (out, doc) -> out.write(SceneWriter.toJson(doc)));
 
     /** Every format, in the order shown to users. */
-    public static final List<FileFormat> ALL = List.of(BPT, OBJ, IGES, SCENE);
+    public static final List<FileFormat> ALL = List.of(BPT, OBJ, IGES, STEP, SCENE);
 
     /** The format whose extension {@code path} has (any case), if any. */
     public static Optional<FileFormat> find(String path) {
@@ -73,7 +77,7 @@ public final class FileFormats {
         return formats.stream().flatMap(f -> f.extensions().stream()).toList();
     }
 
-    /** For messages: {@code .bpt, .obj, .igs, .iges or .json}. */
+    /** For messages: {@code .bpt, .obj, .igs, .iges, .stp, .step or .json}. */
     public static String extensionList(List<FileFormat> formats) {
         List<String> dotted = extensions(formats).stream().map(e -> "." + e).toList();
         if (dotted.size() == 1) {

@@ -249,7 +249,15 @@ final class IgesEntities {
 
     /** A loop of {@code pieces}, small gaps closed by straight pieces; a large gap is an error. */
     TrimLoop loop(List<TrimPiece> pieces, IgesSurface base, IgesParams p) {
-        double[] r = base.range();
+        return closedLoop(pieces, base.range(), p::error);
+    }
+
+    /**
+     * A loop of {@code pieces} on a surface of parameter range {@code r}: gaps up to
+     * {@link #LOOP_GAP} of the range closed by straight pieces; a larger gap is {@code gapError}
+     * of its description.
+     */
+    static TrimLoop closedLoop(List<TrimPiece> pieces, double[] r, java.util.function.Function<String, RuntimeException> gapError) {
         double size = Math.max(r[1] - r[0], r[3] - r[2]);
         List<TrimPiece> closed = new ArrayList<>();
         for (int k = 0; k < pieces.size(); k++) {
@@ -260,7 +268,7 @@ final class IgesEntities {
             double scale = Math.max(1, Math.max(Math.abs(ea[2]), Math.abs(ea[3])));
             if (gap > TrimLoop.CLOSURE_TOLERANCE * scale) {
                 if (!(gap <= LOOP_GAP * size)) {
-                    throw p.error("its trim loop has a gap of " + gap + " in (u, v) between curve " + (k + 1)
+                    throw gapError.apply("its trim loop has a gap of " + gap + " in (u, v) between curve " + (k + 1)
                             + " and curve " + ((k + 1) % pieces.size() + 1));
                 }
                 closed.add(IgesCurve.line(new double[] {ea[2], ea[3], 0}, new double[] {eb[0], eb[1], 0})

@@ -16,6 +16,9 @@ import org.beziertracer.model.TrimRegion;
 record IgesSurface(int degreeU, int degreeV, double[] knotsU, double[] knotsV, int countU, int countV,
                    double[] points, double[] weights, double[] range, boolean trimmable) {
 
+    /** A surface with its trim region (null when untrimmed), before it is mapped into place. */
+    record Trimmed(IgesSurface surface, TrimRegion trim) { }
+
     /**
      * The surface mapped by {@code m} (affine: exact), with {@code trim}.
      *

@@ -50,6 +50,22 @@ public final class IgesWriter {
     }
 
     private void surfaces(List<BezierPatch> patches) {
+        eachSurface(patches, (p, q, knotsU, knotsV, countU, countV, points, weights, range, trim) ->
+                trimmed(bspline(p, q, knotsU, knotsV, countU, countV, points, weights, range), trim));
+    }
+
+    /** Receives one B-spline surface to write: degrees, full knot vectors, net (u fastest), weights or null, range, trims or null. */
+    interface SurfaceSink {
+        void surface(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV, double[] points,
+                     double[] weights, double[] range, TrimRegion trim);
+    }
+
+    /**
+     * The surfaces a CAD writer (IGES, STEP) saves for {@code patches}: a free-form surface whose
+     * pieces are all present, once, with its knots; every other patch as a Bézier B-spline over
+     * its parameter box.
+     */
+    static void eachSurface(List<BezierPatch> patches, SurfaceSink sink) {
         Map<FreeFormSurface, BitSet> present = new IdentityHashMap<>();
         for (BezierPatch p : patches) {
             PatchOrigin o = p.origin();
@@ -63,16 +79,15 @@ public final class IgesWriter {
             if (o != null && present.get(o.surface()).cardinality() == o.pieceCount()) {
                 if (written.put(o.surface(), Boolean.TRUE) == null) {
                     FreeFormSurface s = o.surface();
-                    double[] r = s.range();
-                    trimmed(bspline(s.degreeU(), s.degreeV(), s.basis().knotVector(s.degreeU(), s.parmU()),
+                    sink.surface(s.degreeU(), s.degreeV(), s.basis().knotVector(s.degreeU(), s.parmU()),
                             s.basis().knotVector(s.degreeV(), s.parmV()), s.countU(), s.countV(), s.points(),
-                            s.weights(), r), s.trim());
+                            s.weights(), s.range(), s.trim());
                 }
             } else {
                 PatchDomain d = p.domain();
                 int n = p.degreeU(), m = p.degreeV();
-                trimmed(bspline(n, m, bezierKnots(n, d.u0(), d.u1()), bezierKnots(m, d.v0(), d.v1()), n + 1, m + 1,
-                        p.copyNet(), p.weights(), new double[] {d.u0(), d.u1(), d.v0(), d.v1()}), p.trim());
+                sink.surface(n, m, bezierKnots(n, d.u0(), d.u1()), bezierKnots(m, d.v0(), d.v1()), n + 1, m + 1,
+                        p.copyNet(), p.weights(), new double[] {d.u0(), d.u1(), d.v0(), d.v1()}, p.trim());
             }
         }
     }

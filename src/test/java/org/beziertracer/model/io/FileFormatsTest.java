@@ -26,12 +26,12 @@ class FileFormatsTest {
 
     @Test
     void everyFormatIsDeclaredOnceWithItsExtensionsAndWhatItHolds() {
-        assertEquals(List.of("BPT", "OBJ", "IGES", "scene"), FileFormats.ALL.stream().map(FileFormat::name).toList());
-        assertEquals(List.of("bpt", "obj", "igs", "iges", "json"), FileFormats.extensions(FileFormats.ALL));
-        assertEquals(List.of(FileFormats.BPT, FileFormats.OBJ, FileFormats.IGES), FileFormats.holding(Holds.MODEL));
+        assertEquals(List.of("BPT", "OBJ", "IGES", "STEP", "scene"), FileFormats.ALL.stream().map(FileFormat::name).toList());
+        assertEquals(List.of("bpt", "obj", "igs", "iges", "stp", "step", "json"), FileFormats.extensions(FileFormats.ALL));
+        assertEquals(List.of(FileFormats.BPT, FileFormats.OBJ, FileFormats.IGES, FileFormats.STEP), FileFormats.holding(Holds.MODEL));
         assertEquals(List.of(FileFormats.SCENE), FileFormats.holding(Holds.SCENE));
-        assertEquals(".bpt, .obj, .igs, .iges or .json", FileFormats.extensionList(FileFormats.ALL));
-        assertEquals("*.bpt, *.obj, *.igs, *.iges", FileFormats.patterns(FileFormats.holding(Holds.MODEL)));
+        assertEquals(".bpt, .obj, .igs, .iges, .stp, .step or .json", FileFormats.extensionList(FileFormats.ALL));
+        assertEquals("*.bpt, *.obj, *.igs, *.iges, *.stp, *.step", FileFormats.patterns(FileFormats.holding(Holds.MODEL)));
         assertEquals("Bézier patch text (*.bpt)", FileFormats.BPT.filterLabel());
     }
 

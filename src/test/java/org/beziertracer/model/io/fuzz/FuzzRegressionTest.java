@@ -24,7 +24,7 @@ class FuzzRegressionTest {
         FuzzHarness.Failures failures = new FuzzHarness.Failures();
         int replayed = 0;
         try (FuzzHarness harness = new FuzzHarness(work)) {
-            for (String format : List.of("bpt", "obj", "igs", "json")) {
+            for (String format : List.of("bpt", "obj", "igs", "stp", "json")) {
                 for (Path p : FuzzHarness.files(FuzzHarness.REGRESSIONS, format)) {
                     String problem = harness.judgeFile(format, "replay." + format, Files.readAllBytes(p));
                     replayed++;

@@ -32,7 +32,7 @@ class MutationFuzzTest {
     Path work;
 
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"bpt", "obj", "igs", "json"})
+    @ValueSource(strings = {"bpt", "obj", "igs", "stp", "json"})
     void everyMutantLoadsOrFailsWithOneLineNamingTheFile(String format) throws IOException, InterruptedException {
         int mutants = Integer.getInteger("fuzz.mutants", DEFAULT_MUTANTS);
         long seed = Long.getLong("fuzz.seed", DEFAULT_SEED);
