@@ -48,7 +48,7 @@ public final class FileFormats {
 
     /** STEP (ISO 10303-21) faces: B-spline and analytic surfaces with parameter-space trims ({@link StepReader}, {@link StepWriter}). */
     public static final FileFormat STEP = FileFormat.model("STEP", "STEP surfaces", List.of("stp", "step"),
-            StepReader::readScene, StepWriter::write);
+            (text, baseDir, notes) -> StepReader.readScene(text, notes), StepWriter::write);
 
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),

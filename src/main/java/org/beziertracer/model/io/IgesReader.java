@@ -66,7 +66,11 @@ public final class IgesReader {
 
     /** The surfaces of {@code text} as a scene (the reader {@link FileFormats#IGES} declares); the summary as a note. */
     static Scene readScene(TextSource text, List<String> notes) throws IOException {
-        Model m = readModel(text);
+        return toScene(readModel(text), text, notes);
+    }
+
+    /** The scene of surfaces {@code m} read from {@code text} (IGES or STEP), its skip summary added to {@code notes}. */
+    static Scene toScene(Model m, TextSource text, List<String> notes) {
         if (!m.summary().isEmpty()) {
             notes.add(text.fileName() + ": " + m.summary());
         }

@@ -48,16 +48,8 @@ public final class StepReader {
     /** Most representations placed in all (a part placed n times counts n), so no structure fans out for ever. */
     static final int MAX_PLACEMENTS = 1_000_000;
 
-    static Scene readScene(TextSource text) throws IOException {
-        IgesReader.Model m = readModel(text);
-        Scene.Builder b = Scene.builder();
-        for (Material mat : m.materials()) {
-            b.addMaterial(mat);
-        }
-        for (int k = 0; k < m.surfaces().size(); k++) {
-            b.addPatches(m.surfaces().get(k).toPatches(), m.surfaceMaterial().get(k));
-        }
-        return b.build();
+    static Scene readScene(TextSource text, List<String> notes) throws IOException {
+        return IgesReader.toScene(readModel(text), text, notes);
     }
 
     /**
