@@ -1,0 +1,138 @@
+package org.beziertracer.model.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.beziertracer.UserMessages;
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.AreaLight;
+import org.beziertracer.model.Environment;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.Surface;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The path tracer's scene keys (issue 34): typed materials, sphere and rect lights, the
+ * environment; read, written and read back to the same scene; bad values give one line naming
+ * the file and the key; old Phong materials still read.
+ */
+class ScenePhysicsTest {
+    private static final String SPHERE = "\"spheres\": [{\"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\"}]";
+
+    private static Scene read(String json) {
+        return SceneFiles.parse(json, "studio.json", null).scene();
+    }
+
+    private static void assertError(String expectedPart, String json) {
+        String message = UserMessages.of(ModelFormatException.class, () -> SceneFiles.parse(json, "studio.json", null));
+        assertTrue(message.startsWith("studio.json:") && message.contains(expectedPart),
+                "expected \"" + expectedPart + "\" in: " + message);
+    }
+
+    private static String withMaterial(String material) {
+        return "{\"version\": 1, \"materials\": {\"m\": " + material + "}, " + SPHERE + "}";
+    }
+
+    @Test
+    void typedMaterialsReadAsSurfacesBesideTheirPhongLook() {
+        Scene s = read(withMaterial("{\"type\": \"conductor\", \"metal\": \"gold\", \"roughness\": 0.3}"));
+        Surface gold = s.surface(0);
+        assertEquals(Surface.Kind.CONDUCTOR, gold.kind());
+        assertEquals(0.3, gold.roughness());
+        assertEquals(3.9831604247, gold.k().r());
+        assertEquals("gold", gold.metal());
+        assertTrue(s.materials().get(0).reflectivity() > 0, "the Whitted look of a metal reflects");
+        Surface glass = read(withMaterial("{\"type\": \"dielectric\", \"ior\": 1.33}")).surface(0);
+        assertEquals(Surface.Kind.DIELECTRIC, glass.kind());
+        assertEquals(1.33, glass.ior());
+        assertEquals(0, glass.roughness(), "glass is smooth unless told");
+        Surface plastic = read(withMaterial("{\"type\": \"plastic\", \"color\": [0.8, 0.1, 0.1], \"roughness\": 0.2}"))
+                .surface(0);
+        assertEquals(0.1, plastic.g());
+        assertEquals(Surface.Kind.DIFFUSE, read(withMaterial("{\"type\": \"diffuse\", \"color\": [0.5, 0.5, 0.5]}"))
+                .surface(0).kind());
+    }
+
+    @Test
+    void oldPhongMaterialsStillReadAndHaveNoSurface() {
+        Scene s = read(withMaterial("{\"color\": [1, 0, 0], \"reflectivity\": 0.2}"));
+        assertNull(s.surface(0));
+        assertEquals(Surface.Kind.DIFFUSE, s.surfaceOrPhong(0).kind(), "the path tracer reads it as diffuse");
+        assertEquals(Surface.Kind.DIELECTRIC, read(withMaterial("{\"transparency\": 0.9, \"ior\": 1.5}"))
+                .surfaceOrPhong(0).kind(), "and a transparent one as glass");
+    }
+
+    @Test
+    void areaLightsAndTheEnvironmentRead() {
+        Scene s = read("{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "") + ", \"lights\": ["
+                + "{\"position\": [0, 0, 5]},"
+                + "{\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": 0.5, \"color\": [1, 0.9, 0.8], \"power\": 100},"
+                + "{\"type\": \"rect\", \"corner\": [0, 0, 4], \"edge1\": [1, 0, 0], \"edge2\": [0, 1, 0]}],"
+                + "\"environment\": {\"color\": [0.1, 0.2, 0.3], \"intensity\": 2}}");
+        assertEquals(1, s.lights().size());
+        assertEquals(2, s.areaLights().size());
+        AreaLight sphere = s.areaLights().get(0);
+        assertEquals(new Vec3(1, 2, 3), sphere.center());
+        assertEquals(100 / (Math.PI * 4 * Math.PI * 0.25), sphere.radiance()[0], 1e-12, "power / (π · area)");
+        AreaLight rect = s.areaLights().get(1);
+        assertEquals(1, rect.radiance()[2], "without power the colour is the radiance");
+        Environment e = s.environment().orElseThrow();
+        assertEquals(0.2, e.g());
+        assertEquals(2, e.intensity());
+    }
+
+    @Test
+    void aSceneWithTheNewKeysIsWrittenAndReadBackTheSame() {
+        Scene s = read("{\"version\": 1, \"materials\": {\"m\": {\"type\": \"conductor\", \"metal\": \"copper\", "
+                + "\"roughness\": 0.25}, \"g\": {\"type\": \"dielectric\", \"ior\": 1.5, \"roughness\": 0.1}, "
+                + "\"c\": {\"type\": \"conductor\", \"eta\": [1, 2, 3], \"k\": [4, 5, 6]}, "
+                + "\"p\": {\"type\": \"plastic\", \"color\": [0.2, 0.3, 0.4], \"checker\": 8}}, "
+                + SPHERE + ", \"planes\": [{\"point\": [0, 0, -1], \"normal\": [0, 0, 1], \"material\": \"p\"}], "
+                + "\"lights\": [{\"type\": \"rect\", \"corner\": [0, 0, 4], \"edge1\": [1, 0, 0], \"edge2\": [0, 1, 0], "
+                + "\"power\": 20}, {\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": 0.5}], "
+                + "\"environment\": {\"color\": [0.1, 0.2, 0.3], \"rotate\": 30}}");
+        SceneDocument doc = new SceneDocument(s, org.beziertracer.model.RenderSettings.defaults());
+        Scene back = SceneFiles.parse(SceneFiles.toJson(doc), "back.json", null).scene();
+        assertEquals(s.materials(), back.materials());
+        for (int k = 0; k < s.materials().size(); k++) {
+            assertEquals(s.surface(k), back.surface(k), "surface " + k);
+        }
+        assertEquals(s.areaLights(), back.areaLights());
+        assertEquals(s.environment(), back.environment());
+    }
+
+    @Test
+    void badValuesAreOneLineErrorsNamingFileAndKey() {
+        assertError("materials.m.type: unknown material type \"metal\"", withMaterial("{\"type\": \"metal\"}"));
+        assertError("materials.m.metal: unknown metal \"brass\"", withMaterial("{\"type\": \"conductor\", \"metal\": \"brass\"}"));
+        assertError("materials.m: a conductor needs \"metal\"", withMaterial("{\"type\": \"conductor\"}"));
+        assertError("materials.m.roughness: roughness must be in 0..1, found 2",
+                withMaterial("{\"type\": \"plastic\", \"roughness\": 2}"));
+        assertError("materials.m.ior: ior must be a finite number > 1, found 0.5",
+                withMaterial("{\"type\": \"dielectric\", \"ior\": 0.5}"));
+        assertError("materials.m.color: a physically based colour is an albedo in 0..1",
+                withMaterial("{\"type\": \"diffuse\", \"color\": [2, 0, 0]}"));
+        assertError("materials.m.metal: \"metal\" belongs to a conductor",
+                withMaterial("{\"type\": \"diffuse\", \"metal\": \"gold\"}"));
+        assertError("materials.m.eta: expected 3 numbers > 0",
+                withMaterial("{\"type\": \"conductor\", \"eta\": [0, 1, 1], \"k\": [1, 1, 1]}"));
+        String lights = "{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "") + ", \"lights\": [";
+        assertError("lights[0].radius: expected a positive number",
+                lights + "{\"type\": \"sphere\", \"center\": [0, 0, 3], \"radius\": -1}]}");
+        assertError("lights[0]: a rect light's edge1 and edge2 must not be parallel",
+                lights + "{\"type\": \"rect\", \"corner\": [0, 0, 3], \"edge1\": [1, 0, 0], \"edge2\": [2, 0, 0]}]}");
+        assertError("lights[0].type: unknown light type \"tube\"", lights + "{\"type\": \"tube\"}]}");
+        assertError("lights[0].power: power must be a finite number >= 0, found -3",
+                lights + "{\"type\": \"sphere\", \"center\": [0, 0, 3], \"radius\": 1, \"power\": -3}]}");
+        assertError("lights[0]: unknown key \"radius\"",
+                lights + "{\"type\": \"rect\", \"corner\": [0, 0, 3], \"radius\": 1}]}");
+        String env = "{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "") + ", \"environment\": ";
+        assertError("environment.image: environment images (\"sky.hdr\") are not yet supported",
+                env + "{\"image\": \"sky.hdr\", \"intensity\": 2}}");
+        assertError("environment.intensity: intensity must be a finite number >= 0, found -1",
+                env + "{\"color\": [1, 1, 1], \"intensity\": -1}}");
+        assertError("environment: missing key \"color\"", env + "{\"intensity\": 1}}");
+        assertError("environment.color: expected a colour", env + "{\"color\": [1, -1, 1]}}");
+    }
+}
