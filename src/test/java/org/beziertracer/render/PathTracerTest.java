@@ -121,6 +121,30 @@ class PathTracerTest {
     }
 
     @Test
+    void theErrorFallsAsOneOverTheSquareRootOfTheSamples() {
+        // RMSE against a reference of 16 × the larger count: 4 × the samples halves the error
+        Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addMaterial(Material.DEFAULT)
+                .addPatches(Models.sphere().patches(), 0).surface(0, Surface.plastic(0.6, 0.3, 0.2, 0.3))
+                .addPlane(new Plane(new Vec3(0, 0, -1), Vec3.Z, 1, 1)).surface(1, Surface.diffuse(0.7, 0.7, 0.7))
+                .addAreaLight(AreaLight.sphere(new Vec3(1, -1, 3), 0.4, 20, 20, 20, Double.NaN))
+                .environment(Environment.color(0.2, 0.2, 0.3)).build();
+        Camera camera = Camera.lookAt(new Vec3(0, -5, 2), Vec3.ZERO, Vec3.Z, 45);
+        float[] reference = Renderer.renderOnce(job(scene, 12, 12, 256, path(6), camera, 2, 8)).film().linearRgb();
+        double e4 = rmse(Renderer.renderOnce(job(scene, 12, 12, 4, path(6), camera, 2, 8)).film().linearRgb(), reference);
+        double e16 = rmse(Renderer.renderOnce(job(scene, 12, 12, 16, path(6), camera, 2, 8)).film().linearRgb(), reference);
+        double ratio = e4 / e16;
+        assertTrue(ratio > 1.6 && ratio < 2.5, "RMSE at 4 spp " + e4 + ", at 16 spp " + e16 + ": ratio " + ratio);
+    }
+
+    private static double rmse(float[] a, float[] b) {
+        double sum = 0;
+        for (int i = 0; i < a.length; i++) {
+            sum += (a[i] - b[i]) * (a[i] - b[i]);
+        }
+        return Math.sqrt(sum / a.length);
+    }
+
+    @Test
     void thePictureIsTheSameOnAnyThreadCountAndTileSize() {
         Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPatches(Models.sphere().patches(), 0)
                 .surface(0, Surface.dielectric(1.5, 0.2))
