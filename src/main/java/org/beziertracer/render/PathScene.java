@@ -18,6 +18,7 @@ import org.beziertracer.render.bsdf.Dielectric;
 import org.beziertracer.render.bsdf.Diffuse;
 import org.beziertracer.render.bsdf.Plastic;
 import org.beziertracer.render.light.ConstantEnvironment;
+import org.beziertracer.render.light.ImageEnvironment;
 import org.beziertracer.render.light.Light;
 import org.beziertracer.render.light.PointSource;
 import org.beziertracer.render.light.RectLight;
@@ -75,7 +76,8 @@ final class PathScene {
         Light env = null;
         if (scene.environment().isPresent()) {
             Environment e = scene.environment().get();
-            env = new ConstantEnvironment(e.r() * e.intensity(), e.g() * e.intensity(), e.b() * e.intensity());
+            env = e.picture() != null ? new ImageEnvironment(e.picture(), e.intensity(), e.rotate())
+                    : new ConstantEnvironment(e.r() * e.intensity(), e.g() * e.intensity(), e.b() * e.intensity());
             all.add(env);
         }
         List<PointLight> points = job.lights() != null ? job.lights() : scene.lights();

@@ -74,6 +74,20 @@ class PathTracerTest {
     }
 
     @Test
+    void aWhiteDiffuseSphereVanishesInAWhiteImageFurnaceToo() {
+        // the same furnace lit by an HDR image of radiance 1 everywhere, importance-sampled
+        float[] white = new float[3 * 8 * 4];
+        java.util.Arrays.fill(white, 1f);
+        Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPatches(Models.sphere().patches(), 0)
+                .surface(0, Surface.diffuse(1, 1, 1))
+                .environment(Environment.image("white.hdr", new org.beziertracer.model.HdrImage(8, 4, white), 1, 30))
+                .build();
+        Camera camera = Camera.lookAt(new Vec3(0, -4, 0), Vec3.ZERO, Vec3.Z, 40);
+        float[] rgb = Renderer.renderOnce(job(scene, 16, 16, 16, path(64), camera, 2, 8)).film().linearRgb();
+        assertEquals(1, stats(rgb)[0], PERCENT, "mean radiance of the image furnace");
+    }
+
+    @Test
     void roughGlassAndMetalLoseNoMoreThanSingleScatteringInTheFurnace() {
         Camera camera = Camera.lookAt(new Vec3(0, -4, 0), Vec3.ZERO, Vec3.Z, 30);
         for (Surface s : new Surface[] {Surface.dielectric(1.5, 0.3), Surface.dielectric(1.5, 0)}) {

@@ -5,6 +5,7 @@ import java.util.Locale;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.Environment;
+import org.beziertracer.model.HdrImage;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Surface;
 
@@ -177,8 +178,11 @@ final class ScenePhysics {
         return SceneReader.build(l, () -> AreaLight.rect(corner, e1, e2, c[0], c[1], c[2], fp));
     }
 
-    /** The top-level {@code "environment"}: a colour (an {@code "image"} is refused for now). */
-    static Environment environment(JsonNode e) {
+    /**
+     * The top-level {@code "environment"}: a colour, or an {@code "image"} (a Radiance {@code .hdr}
+     * file relative to {@code baseDir}, read by {@link HdrReader}).
+     */
+    static Environment environment(JsonNode e, java.nio.file.Path baseDir) {
         e.object("color", "image", "intensity", "rotate");
         double intensity = 1, rotate = 0;
         if (e.has("intensity")) {
@@ -191,17 +195,32 @@ final class ScenePhysics {
         if (e.has("rotate")) {
             rotate = e.get("rotate").asDouble();
         }
+        double fi = intensity, fr = rotate;
         if (e.has("image")) {
-            JsonNode image = e.get("image");
-            String name = image.asString();
             if (e.has("color")) {
                 throw e.error("give either \"color\" or \"image\", not both");
             }
-            throw image.error("environment images (" + Echo.quote(name) + ") are not yet supported: use \"color\" for now");
+            JsonNode image = e.get("image");
+            String name = image.asString();
+            if (!name.toLowerCase(Locale.ROOT).endsWith(".hdr")) {
+                throw image.error("an environment image must be a Radiance .hdr file, found " + Echo.quote(name));
+            }
+            HdrImage picture;
+            try {
+                java.nio.file.Path file = baseDir == null ? java.nio.file.Path.of(name) : baseDir.resolve(name);
+                picture = HdrReader.read(file);
+            } catch (java.nio.file.InvalidPathException x) {
+                throw image.error("not a file name: " + Echo.quote(name));
+            } catch (ModelFormatException x) {
+                throw image.error(Echo.cutQuoted(x.getMessage()));
+            }
+            return SceneReader.build(e, () -> Environment.image(name, picture, fi, fr));
         }
-        double[] c = e.require("color").asColor();
-        double fi = intensity, fr = rotate;
-        return SceneReader.build(e, () -> new Environment(c[0], c[1], c[2], null, fi, fr));
+        if (!e.has("color")) {
+            throw e.error("missing key \"color\" (or \"image\")");
+        }
+        double[] c = e.get("color").asColor();
+        return SceneReader.build(e, () -> new Environment(c[0], c[1], c[2], null, fi, fr, null));
     }
 
     private static Vec3 vec(JsonNode n) {

@@ -98,7 +98,7 @@ final class SceneReader {
             }
         }
         if (root.has("environment")) {
-            builder.environment(ScenePhysics.environment(root.get("environment")));
+            builder.environment(ScenePhysics.environment(root.get("environment"), baseDir));
         }
         if (root.has("camera")) {
             builder.camera(camera(root.get("camera")));

@@ -171,10 +171,14 @@ final class SceneWriter {
         return lights;
     }
 
-    /** A colour environment (an image one is not read yet, so never written). */
+    /** A colour environment, or an image one by the file name it was read from. */
     private static JsonObject environment(Environment e) {
         JsonObject o = new JsonObject();
-        o.add("color", numbers(e.r(), e.g(), e.b()));
+        if (e.image() != null) {
+            o.addProperty("image", e.image());
+        } else {
+            o.add("color", numbers(e.r(), e.g(), e.b()));
+        }
         putIfDiffers(o, "intensity", e.intensity(), 1);
         putIfDiffers(o, "rotate", e.rotate(), 0);
         return o;

@@ -102,6 +102,31 @@ class ScenePhysicsTest {
         assertEquals(s.environment(), back.environment());
     }
 
+    @org.junit.jupiter.api.io.TempDir
+    java.nio.file.Path dir;
+
+    @Test
+    void anHdrImageEnvironmentIsReadBesideTheSceneAndWrittenBackByName() throws java.io.IOException {
+        // a 2×1 flat RGBE picture: (128, 64, 32, 129) and black
+        java.io.ByteArrayOutputStream hdr = new java.io.ByteArrayOutputStream();
+        hdr.writeBytes("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        hdr.writeBytes(new byte[] {(byte) 128, 64, 32, (byte) 129, 0, 0, 0, 0});
+        java.nio.file.Files.write(dir.resolve("sky.hdr"), hdr.toByteArray());
+        String json = "{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "")
+                + ", \"environment\": {\"image\": \"sky.hdr\", \"intensity\": 3, \"rotate\": 45}}";
+        Scene s = SceneFiles.parse(json, "studio.json", dir).scene();
+        Environment e = s.environment().orElseThrow();
+        assertEquals("sky.hdr", e.image());
+        assertEquals(2, e.picture().width());
+        assertEquals((128 + 0.5) / 128, e.picture().get(0, 0, 0), 1e-6, "(R + ½)·2^(129 − 136), as Radiance");
+        assertEquals(45, e.rotate());
+        String written = SceneFiles.toJson(new SceneDocument(s, org.beziertracer.model.RenderSettings.defaults()));
+        Environment back = SceneFiles.parse(written, "back.json", dir).scene().environment().orElseThrow();
+        assertEquals("sky.hdr", back.image());
+        assertEquals(3, back.intensity());
+        assertEquals(e.picture().get(0, 0, 1), back.picture().get(0, 0, 1));
+    }
+
     @Test
     void badValuesAreOneLineErrorsNamingFileAndKey() {
         assertError("materials.m.type: unknown material type \"metal\"", withMaterial("{\"type\": \"metal\"}"));
@@ -128,11 +153,14 @@ class ScenePhysicsTest {
         assertError("lights[0]: unknown key \"radius\"",
                 lights + "{\"type\": \"rect\", \"corner\": [0, 0, 3], \"radius\": 1}]}");
         String env = "{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "") + ", \"environment\": ";
-        assertError("environment.image: environment images (\"sky.hdr\") are not yet supported",
-                env + "{\"image\": \"sky.hdr\", \"intensity\": 2}}");
+        assertError("environment.image: an environment image must be a Radiance .hdr file, found \"sky.png\"",
+                env + "{\"image\": \"sky.png\", \"intensity\": 2}}");
+        assertError("environment.image: sky.hdr: no such image file", env + "{\"image\": \"sky.hdr\"}}");
+        assertError("environment: give either \"color\" or \"image\", not both",
+                env + "{\"image\": \"sky.hdr\", \"color\": [1, 1, 1]}}");
         assertError("environment.intensity: intensity must be a finite number >= 0, found -1",
                 env + "{\"color\": [1, 1, 1], \"intensity\": -1}}");
-        assertError("environment: missing key \"color\"", env + "{\"intensity\": 1}}");
+        assertError("environment: missing key \"color\" (or \"image\")", env + "{\"intensity\": 1}}");
         assertError("environment.color: expected a colour", env + "{\"color\": [1, -1, 1]}}");
     }
 }
