@@ -285,6 +285,9 @@ final class RenderCommand implements Callable<Integer> {
         if ((clamp != 0 || exposure != 0) && !pathTraced()) {
             throw new IllegalArgumentException("--clamp and --exposure need --integrator path");
         }
+        if (pixel != null && pathTraced()) {
+            throw new IllegalArgumentException("--pixel traces the Whitted renderer; it does not take --integrator path");
+        }
         if (differenceTo != null && pathTraced()) {
             throw new IllegalArgumentException("--difference-to compares Whitted renders; it does not take --integrator path");
         }

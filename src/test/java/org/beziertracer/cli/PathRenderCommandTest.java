@@ -96,6 +96,10 @@ class PathRenderCommandTest {
         assertError("--clamp must be a finite number >= 0 (0 = off), got -1.0",
                 "render", scene, "-o", out, "--integrator", "path", "--clamp", "-1");
         assertError("--clamp and --exposure need --integrator path", "render", scene, "-o", out, "--clamp", "4");
+        assertError("--pixel traces the Whitted renderer; it does not take --integrator path",
+                "render", scene, "--pixel", "1,1", "--integrator", "path");
+        assertError("--difference-to compares Whitted renders", "render", scene, "-o", out, "--integrator", "path",
+                "--difference-to", "newton");
         assertError("the output must be a .png (or .pfm) file", "render", scene, "-o", dir.resolve("x.exr").toString());
         assertTrue(Files.notExists(dir.resolve("x.png")), "nothing written");
     }
