@@ -7,6 +7,9 @@ import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.Environment;
 import org.beziertracer.model.HdrImage;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.PointLight;
+import org.beziertracer.model.Scene;
+import java.util.List;
 import org.beziertracer.model.Surface;
 
 /**
@@ -149,6 +152,35 @@ final class ScenePhysics {
                     m.transparency(), m.ior(), checker, color2[0], color2[1], color2[2]);
         }
         return m;
+    }
+
+    /** An entry of {@code "lights"}: a point light (no {@code "type"}, or {@code "point"}), a sphere or a rect light. */
+    static void light(JsonNode l, Scene.Builder builder) {
+        String type = l.keys().contains("type") ? l.get("type").asString() : "point";
+        switch (type) {
+            case "point" -> builder.addLight(pointLight(l));
+            case "sphere", "rect" -> builder.addAreaLight(areaLight(l, type));
+            default -> throw l.get("type").error("unknown light type " + Echo.quote(type)
+                    + " (expected point, sphere or rect)");
+        }
+    }
+
+    /** A light; a colour whose total overflows is named with the literal values. */
+    private static PointLight pointLight(JsonNode l) {
+        l.object("type", "position", "color");
+        Vec3 position = vec(l.require("position"));
+        double[] c = {1, 1, 1};
+        if (l.has("color")) {
+            JsonNode color = l.get("color");
+            c = color.asColor();
+            if (!Double.isFinite(c[0] + c[1] + c[2])) {
+                List<JsonNode> rgb = color.array();
+                throw l.error("the light's total intensity r + g + b = " + rgb.get(0).text() + " + " + rgb.get(1).text()
+                        + " + " + rgb.get(2).text() + " overflows (" + NumberText.BEYOND + ")");
+            }
+        }
+        double[] rgb = c;
+        return SceneReader.build(l, () -> new PointLight(position, rgb[0], rgb[1], rgb[2]));
     }
 
     /** An area light entry of {@code "lights"} ({@code "type"} sphere or rect). */

@@ -16,7 +16,6 @@ import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Plane;
-import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
@@ -89,13 +88,7 @@ final class SceneReader {
             builder.addSphere(build(s, () -> new Sphere(center, radius, material)));
         }
         for (JsonNode l : list(root, "lights")) {
-            String type = l.keys().contains("type") ? l.get("type").asString() : "point";
-            switch (type) {
-                case "point" -> builder.addLight(light(l));
-                case "sphere", "rect" -> builder.addAreaLight(ScenePhysics.areaLight(l, type));
-                default -> throw l.get("type").error("unknown light type " + Echo.quote(type)
-                        + " (expected point, sphere or rect)");
-            }
+            ScenePhysics.light(l, builder);
         }
         if (root.has("environment")) {
             builder.environment(ScenePhysics.environment(root.get("environment"), baseDir));
@@ -354,24 +347,6 @@ final class SceneReader {
             }
         }
         return new ModelTransform(translate, scale, rotate);
-    }
-
-    /** A light; a colour whose total overflows is named with the literal values. */
-    private static PointLight light(JsonNode l) {
-        l.object("type", "position", "color");
-        Vec3 position = vec(l.require("position"));
-        double[] c = {1, 1, 1};
-        if (l.has("color")) {
-            JsonNode color = l.get("color");
-            c = color.asColor();
-            if (!Double.isFinite(c[0] + c[1] + c[2])) {
-                List<JsonNode> rgb = color.array();
-                throw l.error("the light's total intensity r + g + b = " + rgb.get(0).text() + " + " + rgb.get(1).text()
-                        + " + " + rgb.get(2).text() + " overflows (" + NumberText.BEYOND + ")");
-            }
-        }
-        double[] rgb = c;
-        return build(l, () -> new PointLight(position, rgb[0], rgb[1], rgb[2]));
     }
 
     // Materials
