@@ -33,6 +33,7 @@ public final class Scene {
     /** Per material, its physically based surface when the scene file gave one, else null. */
     private final Surface[] surfaces;
     private final List<AreaLight> areaLights;
+    private final List<SpotLight> spotLights;
     private final Environment environment;
 
     /** A scene of Bézier patches only (at least one). */
@@ -55,6 +56,7 @@ public final class Scene {
         this.camera = b.camera;
         this.instances = List.copyOf(b.instances);
         this.areaLights = List.copyOf(b.areaLights);
+        this.spotLights = List.copyOf(b.spotLights);
         this.environment = b.environment;
         this.surfaces = new Surface[materials.size()];
         for (var e : b.surfaces.entrySet()) {
@@ -154,6 +156,9 @@ public final class Scene {
     /** The area lights (sphere and rect), for the path tracer. */
     public List<AreaLight> areaLights() { return areaLights; }
 
+    /** The spot lights, for the path tracer. */
+    public List<SpotLight> spotLights() { return spotLights; }
+
     /** The environment light, if the scene has one. */
     public Optional<Environment> environment() { return Optional.ofNullable(environment); }
 
@@ -215,6 +220,7 @@ public final class Scene {
         }
         b.instances.addAll(instances);
         b.areaLights.addAll(areaLights);
+        b.spotLights.addAll(spotLights);
         b.environment = environment;
         for (int k = 0; k < surfaces.length; k++) {
             if (surfaces[k] != null) {
@@ -240,6 +246,7 @@ public final class Scene {
         private CameraSpec camera;
         private boolean requirePatches;
         private final List<AreaLight> areaLights = new ArrayList<>();
+        private final List<SpotLight> spotLights = new ArrayList<>();
         private final java.util.Map<Integer, Surface> surfaces = new java.util.HashMap<>();
         private Environment environment;
 
@@ -310,6 +317,8 @@ public final class Scene {
         public Builder addSphere(Sphere s) { spheres.add(s); return this; }
 
         public Builder addLight(PointLight l) { lights.add(l); return this; }
+
+        public Builder addSpotLight(SpotLight l) { spotLights.add(java.util.Objects.requireNonNull(l)); return this; }
 
         public Builder addAreaLight(AreaLight l) { areaLights.add(java.util.Objects.requireNonNull(l)); return this; }
 

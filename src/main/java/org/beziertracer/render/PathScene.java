@@ -12,6 +12,7 @@ import org.beziertracer.model.Material;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Surface;
+import org.beziertracer.model.SpotLight;
 import org.beziertracer.render.bsdf.Bsdf;
 import org.beziertracer.render.bsdf.Conductor;
 import org.beziertracer.render.bsdf.Dielectric;
@@ -23,6 +24,7 @@ import org.beziertracer.render.light.Light;
 import org.beziertracer.render.light.PointSource;
 import org.beziertracer.render.light.RectLight;
 import org.beziertracer.render.light.SphereLight;
+import org.beziertracer.render.light.SpotSource;
 
 /**
  * A job's data for the path tracer, built once per render and shared read-only by the workers:
@@ -32,7 +34,7 @@ import org.beziertracer.render.light.SphereLight;
  * <p>Lights: the scene's area lights and environment; its point lights (or the job's, or with no
  * light at all one at the eye, as the Whitted renderer does) become inverse-square sources whose
  * intensity is {@code colour · d²}, d the distance from the light to the centre of the scene's
- * bounds: the centre is lit as brightly as the Whitted renderer (which has no fall-off) lights it.
+ * bounds (spot lights likewise): the centre is lit as brightly as the Whitted renderer (which has no fall-off) lights it.
  */
 final class PathScene {
     final Bsdf[] bsdfs;
@@ -81,7 +83,7 @@ final class PathScene {
             all.add(env);
         }
         List<PointLight> points = job.lights() != null ? job.lights() : scene.lights();
-        if (points.isEmpty() && all.isEmpty()) {
+        if (points.isEmpty() && all.isEmpty() && scene.spotLights().isEmpty()) {
             points = List.of(new PointLight(job.camera().eye()));
         }
         Aabb box = RenderJob.bounds(scene);
@@ -90,6 +92,12 @@ final class PathScene {
             double d2 = p.position().sub(centre).dot(p.position().sub(centre));
             double s = d2 > 0 ? d2 : 1;
             all.add(new PointSource(p.position().x(), p.position().y(), p.position().z(), p.r() * s, p.g() * s, p.b() * s));
+        }
+        for (SpotLight l : scene.spotLights()) {
+            Vec3 p = l.position();
+            double d2 = p.sub(centre).dot(p.sub(centre)), s = d2 > 0 ? d2 : 1;
+            all.add(new SpotSource(p.x(), p.y(), p.z(), xyz(l.direction()), l.angle(), l.falloff(), l.r() * s,
+                    l.g() * s, l.b() * s));
         }
         lights = all.toArray(new Light[0]);
         areaLights = area.toArray(new Light[0]);

@@ -144,6 +144,21 @@ class PathTracerTest {
     }
 
     @Test
+    void aSpotLightLightsItsFootAsAPointSourceAndNothingOutsideItsCone() {
+        // intensity C·d², d = h (the plane's bounds are centred on its point): E = C, L = albedo · C / π
+        Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPlane(new Plane(Vec3.ZERO, Vec3.Z, 0, 1))
+                .surface(0, Surface.diffuse(0.8, 0.8, 0.8))
+                .addSpotLight(new org.beziertracer.model.SpotLight(new Vec3(0, 0, 3), new Vec3(0, 0, -1), 20, 15, 2, 2, 2))
+                .build();
+        Camera foot = Camera.lookAt(new Vec3(0.5, 0, 1), Vec3.ZERO, Vec3.Z, 0.5);
+        double lit = stats(Renderer.renderOnce(job(scene, 8, 8, 4, path(1), foot, 1, 8)).film().linearRgb())[0];
+        assertEquals(0.8 * 2 / Math.PI, lit, PERCENT * lit);
+        Camera aside = Camera.lookAt(new Vec3(3.5, 0, 1), new Vec3(3, 0, 0), Vec3.Z, 0.5);
+        assertEquals(0, stats(Renderer.renderOnce(job(scene, 8, 8, 4, path(1), aside, 1, 8)).film().linearRgb())[0],
+                "45° off the axis, outside the 20° cone");
+    }
+
+    @Test
     void misOnAndOffAgreeInMean() {
         Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addMaterial(Material.DEFAULT)
                 .addPatches(Models.sphere().patches(), 0).surface(0, Surface.plastic(0.6, 0.3, 0.2, 0.3))

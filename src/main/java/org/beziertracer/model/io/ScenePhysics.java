@@ -9,6 +9,7 @@ import org.beziertracer.model.HdrImage;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.SpotLight;
 import java.util.List;
 import org.beziertracer.model.Surface;
 
@@ -160,8 +161,9 @@ final class ScenePhysics {
         switch (type) {
             case "point" -> builder.addLight(pointLight(l));
             case "sphere", "rect" -> builder.addAreaLight(areaLight(l, type));
+            case "spot" -> builder.addSpotLight(spotLight(l));
             default -> throw l.get("type").error("unknown light type " + Echo.quote(type)
-                    + " (expected point, sphere or rect)");
+                    + " (expected point, spot, sphere or rect)");
         }
     }
 
@@ -181,6 +183,16 @@ final class ScenePhysics {
         }
         double[] rgb = c;
         return SceneReader.build(l, () -> new PointLight(position, rgb[0], rgb[1], rgb[2]));
+    }
+
+    /** A spot light: position, direction, angle (default 30), falloff (default 3/4 of the angle), colour. */
+    private static SpotLight spotLight(JsonNode l) {
+        l.object("type", "position", "direction", "angle", "falloff", "color");
+        Vec3 position = vec(l.require("position")), direction = vec(l.require("direction"));
+        double angle = l.has("angle") ? l.get("angle").asDouble() : 30;
+        double falloff = l.has("falloff") ? l.get("falloff").asDouble() : 0.75 * angle;
+        double[] c = l.has("color") ? l.get("color").asColor() : new double[] {1, 1, 1};
+        return SceneReader.build(l, () -> new SpotLight(position, direction, angle, falloff, c[0], c[1], c[2]));
     }
 
     /** An area light entry of {@code "lights"} ({@code "type"} sphere or rect). */

@@ -13,6 +13,7 @@ import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Environment;
 import org.beziertracer.model.Surface;
+import org.beziertracer.model.SpotLight;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Mesh;
@@ -147,6 +148,16 @@ final class SceneWriter {
         for (PointLight l : scene.lights()) {
             JsonObject o = new JsonObject();
             o.add("position", vec(l.position()));
+            o.add("color", numbers(l.r(), l.g(), l.b()));
+            lights.add(o);
+        }
+        for (SpotLight l : scene.spotLights()) {
+            JsonObject o = new JsonObject();
+            o.addProperty("type", "spot");
+            o.add("position", vec(l.position()));
+            o.add("direction", vec(l.direction()));
+            o.add("angle", number(l.angle()));
+            o.add("falloff", number(l.falloff()));
             o.add("color", numbers(l.r(), l.g(), l.b()));
             lights.add(o);
         }

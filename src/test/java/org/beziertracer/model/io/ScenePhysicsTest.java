@@ -68,8 +68,10 @@ class ScenePhysicsTest {
         Scene s = read("{\"version\": 1, " + SPHERE.replace(", \"material\": \"m\"", "") + ", \"lights\": ["
                 + "{\"position\": [0, 0, 5]},"
                 + "{\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": 0.5, \"color\": [1, 0.9, 0.8], \"power\": 100},"
-                + "{\"type\": \"rect\", \"corner\": [0, 0, 4], \"edge1\": [1, 0, 0], \"edge2\": [0, 1, 0]}],"
+                + "{\"type\": \"rect\", \"corner\": [0, 0, 4], \"edge1\": [1, 0, 0], \"edge2\": [0, 1, 0]},"
+                + "{\"type\": \"spot\", \"position\": [0, 0, 5], \"direction\": [0, 0, -1], \"angle\": 40}],"
                 + "\"environment\": {\"color\": [0.1, 0.2, 0.3], \"intensity\": 2}}");
+        assertEquals(30, s.spotLights().get(0).falloff(), "falloff defaults to 3/4 of the angle");
         assertEquals(1, s.lights().size());
         assertEquals(2, s.areaLights().size());
         AreaLight sphere = s.areaLights().get(0);
@@ -90,7 +92,8 @@ class ScenePhysicsTest {
                 + "\"p\": {\"type\": \"plastic\", \"color\": [0.2, 0.3, 0.4], \"checker\": 8}}, "
                 + SPHERE + ", \"planes\": [{\"point\": [0, 0, -1], \"normal\": [0, 0, 1], \"material\": \"p\"}], "
                 + "\"lights\": [{\"type\": \"rect\", \"corner\": [0, 0, 4], \"edge1\": [1, 0, 0], \"edge2\": [0, 1, 0], "
-                + "\"power\": 20}, {\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": 0.5}], "
+                + "\"power\": 20}, {\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": 0.5}, "
+                + "{\"type\": \"spot\", \"position\": [0, 0, 5], \"direction\": [1, 0, -1], \"angle\": 25, \"falloff\": 10}], "
                 + "\"environment\": {\"color\": [0.1, 0.2, 0.3], \"rotate\": 30}}");
         SceneDocument doc = new SceneDocument(s, org.beziertracer.model.RenderSettings.defaults());
         Scene back = SceneFiles.parse(SceneFiles.toJson(doc), "back.json", null).scene();
@@ -99,6 +102,8 @@ class ScenePhysicsTest {
             assertEquals(s.surface(k), back.surface(k), "surface " + k);
         }
         assertEquals(s.areaLights(), back.areaLights());
+        assertEquals(1, back.spotLights().size());
+        assertEquals(s.spotLights(), back.spotLights());
         assertEquals(s.environment(), back.environment());
     }
 
@@ -148,6 +153,9 @@ class ScenePhysicsTest {
         assertError("lights[0]: a rect light's edge1 and edge2 must not be parallel",
                 lights + "{\"type\": \"rect\", \"corner\": [0, 0, 3], \"edge1\": [1, 0, 0], \"edge2\": [2, 0, 0]}]}");
         assertError("lights[0].type: unknown light type \"tube\"", lights + "{\"type\": \"tube\"}]}");
+        assertError("lights[0]: spot angles must satisfy 0 < falloff <= angle <= 90 degrees, got falloff 40",
+                lights + "{\"type\": \"spot\", \"position\": [0, 0, 3], \"direction\": [0, 0, -1], \"angle\": 30, "
+                + "\"falloff\": 40}]}");
         assertError("lights[0].power: power must be a finite number >= 0, found -3",
                 lights + "{\"type\": \"sphere\", \"center\": [0, 0, 3], \"radius\": 1, \"power\": -3}]}");
         assertError("lights[0]: unknown key \"radius\"",
