@@ -7,6 +7,7 @@ import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.Environment;
 import org.beziertracer.model.HdrImage;
 import org.beziertracer.model.Material;
+import org.beziertracer.model.MetalPresets;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.SpotLight;
@@ -19,27 +20,22 @@ import org.beziertracer.model.Surface;
  * {@code "lights"} ({@code "type": "sphere" | "rect"}) and the top-level {@code "environment"}.
  * Errors name the file and the key's path. Stateless.
  *
- * <p>Metal presets: the complex indices of gold, copper, aluminium and silver at the sRGB
- * primaries (E. D. Palik, "Handbook of Optical Constants of Solids", 1985, as tabulated by
- * Mitsuba and pbrt-v3); the same numbers as the renderer's {@code MetalPresets}, which the model
- * layer cannot import.
+ * <p>Metal presets: {@link MetalPresets}.
  */
 final class ScenePhysics {
     private ScenePhysics() {}
 
     static final String[] MATERIAL_KEYS = {"type", "color", "roughness", "ior", "metal", "eta", "k", "checker", "color2"};
 
-    /** The metals by name: eta (r, g, b) then k (r, g, b). */
+    /** The metals by name ({@link MetalPresets}): eta (r, g, b) then k (r, g, b); null for an unknown name. */
     static double[] metal(String name) {
-        return switch (name.toLowerCase(Locale.ROOT)) {
-            case "gold" -> new double[] {0.1431189557, 0.3749570432, 1.4424785571, 3.9831604247, 2.3857207478, 1.6032152899};
-            case "copper" -> new double[] {0.2004376970, 0.9240334304, 1.1022119527, 3.9129485033, 2.4528477015, 2.1421879552};
-            case "aluminium", "aluminum" -> new double[] {1.6574599595, 0.8803689579, 0.5212287346, 9.2238691996,
-                6.2695232477, 4.8370012281};
-            case "silver" -> new double[] {0.1552646489, 0.1167232965, 0.1383806959, 4.8283433224, 3.1222459278,
-                2.1469504455};
-            default -> null;
-        };
+        try {
+            MetalPresets m = MetalPresets.parse(name);
+            double[] eta = m.eta(), k = m.k();
+            return new double[] {eta[0], eta[1], eta[2], k[0], k[1], k[2]};
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
     }
 
     /** A typed material object: its surface. */

@@ -5,7 +5,7 @@ package org.beziertracer.render.bsdf;
  * ({@link Fresnel#conductor}) on a Trowbridge–Reitz microfacet surface (Walter et al., EGSR 2007),
  * {@code f = D(h) G(wo, wi) F(wo·h) / (4 cosθo cosθi)}, sampled by visible normals (Heitz, JCGT
  * 2018; pdf {@code D_wo(h) / (4 wo·h)}); below {@link Ggx#SMOOTH_ALPHA} a perfect mirror. The
- * material colour tints the reflectance (white for the presets of {@link MetalPresets}). The
+ * material colour tints the reflectance (white for the presets of {@link org.beziertracer.model.MetalPresets}). The
  * caller turns the frame so that {@code wo.z > 0}. Immutable.
  */
 public final class Conductor implements Bsdf {

@@ -7,6 +7,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
+import org.beziertracer.model.MetalPresets;
+
 import org.junit.jupiter.api.Test;
 
 /**

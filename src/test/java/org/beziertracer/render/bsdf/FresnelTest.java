@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Random;
 
+import org.beziertracer.model.MetalPresets;
+
 import org.junit.jupiter.api.Test;
 
 /** {@link Fresnel} against closed forms: normal incidence, Brewster's angle, total internal reflection, grazing. */

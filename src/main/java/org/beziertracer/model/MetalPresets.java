@@ -1,4 +1,4 @@
-package org.beziertracer.render.bsdf;
+package org.beziertracer.model;
 
 import java.util.Locale;
 
