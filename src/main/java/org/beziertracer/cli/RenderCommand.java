@@ -27,6 +27,11 @@ import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
 import org.beziertracer.render.Film;
+import org.beziertracer.render.Integrator;
+import org.beziertracer.render.PathOptions;
+import org.beziertracer.render.Pfm;
+import org.beziertracer.render.ToneMap;
+import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.ImageDifference;
 import org.beziertracer.render.PixelFilter;
@@ -54,7 +59,7 @@ import picocli.CommandLine.Spec;
  * it is a terminal (not with {@code --quiet}). Bad values end with one error line and exit code 1.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
-        description = "Ray traces a model or scene into a PNG image.")
+        description = "Ray traces a model or scene into a PNG image (or, from the path tracer, a linear .pfm).")
 final class RenderCommand implements Callable<Integer> {
 
     static final int MAX_REPEAT = 1000;
@@ -67,8 +72,21 @@ final class RenderCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "MODEL_OR_SCENE", descriptionKey = CliText.INPUT)
     String model;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", description = "PNG to write (atomically); required unless --pixel")
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png",
+            description = "PNG to write (atomically), or .pfm for the linear image; required unless --pixel")
     Path output;
+
+    @Option(names = "--integrator", paramLabel = "whitted|path", defaultValue = "whitted",
+            description = "Whitted ray tracing or physically based path tracing (default: ${DEFAULT-VALUE})")
+    String integrator;
+
+    @Option(names = "--clamp", paramLabel = "X", defaultValue = "0",
+            description = "path tracer: scale each sample down so no channel exceeds X, against fireflies (0 = off, the default)")
+    double clamp;
+
+    @Option(names = "--exposure", paramLabel = "EV", defaultValue = "0",
+            description = "path tracer: exposure in stops before the ACES tone curve of the PNG (default: ${DEFAULT-VALUE})")
+    double exposure;
 
     @Option(names = "--size", paramLabel = "WxH", description = "image size, e.g. 800x600 (default: the scene's)")
     String size;
@@ -127,7 +145,8 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "no shadow rays")
     boolean noShadows;
 
-    @Option(names = "--depth", paramLabel = "N", description = "maximum reflection/refraction depth, 0..32 (default: the scene file's, else 5)")
+    @Option(names = "--depth", paramLabel = "N", description = "maximum reflection/refraction depth, 0..32 (default: the scene "
+            + "file's, else 5); for the path tracer the most bounces of a path, 1..1024 (default 16)")
     Integer depth;
 
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: available processors)")
@@ -163,7 +182,7 @@ final class RenderCommand implements Callable<Integer> {
         RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
                 .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
-                .withAnalysis(analysisOptions.settings());
+                .withAnalysis(analysisOptions.settings()).withPath(pathOptions());
         SceneDocument doc = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr());
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
@@ -207,13 +226,50 @@ final class RenderCommand implements Callable<Integer> {
             }
         }
         if (differenceTo == null) {
-            PngWriter.write(output, settings.width(), settings.height(), result.argb());
+            write(result, options);
         }
         if (stats) {
             out.println(statsJson(job, settings, threadCount, result, frameMillis));
             out.flush();
         }
         return 0;
+    }
+
+    private boolean pathTraced() { return Integrator.parse(integrator) == Integrator.PATH; }
+
+    /** The integrator and the path tracer's settings from --integrator, --depth and --clamp. */
+    private PathOptions pathOptions() {
+        PathOptions p = PathOptions.defaults().withIntegrator(Integrator.parse(integrator));
+        if (p.integrator() != Integrator.PATH) {
+            return p;
+        }
+        if (depth != null) {
+            if (depth < 1 || depth > PathOptions.MAX_DEPTH) {
+                throw new IllegalArgumentException("--depth must be 1.." + PathOptions.MAX_DEPTH
+                        + " for the path tracer, got " + depth);
+            }
+            p = p.withMaxDepth(depth);
+        }
+        return p.withClamp(clamp);
+    }
+
+    /**
+     * The image: a .pfm of the linear film; a PNG through the ACES curve for the path tracer, as
+     * the Whitted renderer's clamp-and-encode otherwise.
+     */
+    private void write(RenderResult result, RenderOptions options) throws IOException {
+        Film film = result.film();
+        if (isPfm(output)) {
+            AtomicFiles.writeBytes(output, out -> out.write(Pfm.encode(film)));
+        } else if (options.path().integrator() == Integrator.PATH) {
+            PngWriter.write(output, film.width(), film.height(), ToneMap.argb(film, exposure));
+        } else {
+            PngWriter.write(output, film.width(), film.height(), result.argb());
+        }
+    }
+
+    private static boolean isPfm(Path p) {
+        return p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pfm");
     }
 
     /** The options' own checks, before anything is read: one line each. */
@@ -227,8 +283,25 @@ final class RenderCommand implements Callable<Integer> {
         if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
             throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
         }
-        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new IllegalArgumentException(output + ": the output must be a .png file");
+        if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")
+                && !isPfm(output)) {
+            throw new IllegalArgumentException(output + ": the output must be a .png (or .pfm) file");
+        }
+        Integrator.parse(integrator);
+        if (!(clamp >= 0) || !Double.isFinite(clamp)) {
+            throw new IllegalArgumentException("--clamp must be a finite number >= 0 (0 = off), got " + clamp);
+        }
+        if (!Double.isFinite(exposure) || Math.abs(exposure) > 64) {
+            throw new IllegalArgumentException("--exposure must be -64..64 stops, got " + exposure);
+        }
+        if ((clamp != 0 || exposure != 0) && !pathTraced()) {
+            throw new IllegalArgumentException("--clamp and --exposure need --integrator path");
+        }
+        if (pixel != null && pathTraced()) {
+            throw new IllegalArgumentException("--pixel traces the Whitted renderer; it does not take --integrator path");
+        }
+        if (differenceTo != null && pathTraced()) {
+            throw new IllegalArgumentException("--difference-to compares Whitted renders; it does not take --integrator path");
         }
         if (method != null) {
             Method.parse(method);
@@ -282,7 +355,7 @@ final class RenderCommand implements Callable<Integer> {
         return new RenderSettings(w, h, spp != null ? spp : s.spp(), sampler != null ? sampler : s.sampler(),
                 method != null ? method : s.method(), !noBvh && s.bvh(),
                 analysisOptions.shading(shading != null ? shading : s.shading()),
-                checker, !noShadows && s.shadows(), depth != null ? depth : s.maxDepth());
+                checker, !noShadows && s.shadows(), depth != null && !pathTraced() ? depth : s.maxDepth());
     }
 
     /** {@code checker} (8 squares), {@code checker:N}, or {@code none}. */
@@ -381,6 +454,11 @@ final class RenderCommand implements Callable<Integer> {
         m.put("bvh", s.bvh());
         m.put("tessellate", job.options().tessellate());
         m.put("shading", s.shading());
+        m.put("integrator", job.options().path().integrator().label());
+        if (job.options().path().integrator() == Integrator.PATH) {
+            m.put("pathDepth", job.options().path().maxDepth());
+            m.put("samplesPerSecond", round(median > 0 ? (double) s.width() * s.height() * s.spp() / (median / 1e3) : 0));
+        }
         if (job.shading().needsCurvature()) {
             m.put("analysisRange", AnalysisRange.of(job));
         }

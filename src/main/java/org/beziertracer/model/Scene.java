@@ -30,6 +30,11 @@ public final class Scene {
     private final List<PointLight> lights;
     private final CameraSpec camera;
     private final List<Instance> instances;
+    /** Per material, its physically based surface when the scene file gave one, else null. */
+    private final Surface[] surfaces;
+    private final List<AreaLight> areaLights;
+    private final List<SpotLight> spotLights;
+    private final Environment environment;
 
     /** A scene of Bézier patches only (at least one). */
     public Scene(List<BezierPatch> patches) {
@@ -50,6 +55,14 @@ public final class Scene {
         this.lights = List.copyOf(b.lights);
         this.camera = b.camera;
         this.instances = List.copyOf(b.instances);
+        this.areaLights = List.copyOf(b.areaLights);
+        this.spotLights = List.copyOf(b.spotLights);
+        this.environment = b.environment;
+        this.surfaces = new Surface[materials.size()];
+        for (var e : b.surfaces.entrySet()) {
+            checkMaterial("surface", e.getKey());
+            surfaces[e.getKey()] = e.getValue();
+        }
         if (b.requirePatches && patches.isEmpty()) {
             throw new IllegalArgumentException("a model needs at least one patch");
         }
@@ -140,6 +153,23 @@ public final class Scene {
 
     public List<PointLight> lights() { return lights; }
 
+    /** The area lights (sphere and rect), for the path tracer. */
+    public List<AreaLight> areaLights() { return areaLights; }
+
+    /** The spot lights, for the path tracer. */
+    public List<SpotLight> spotLights() { return spotLights; }
+
+    /** The environment light, if the scene has one. */
+    public Optional<Environment> environment() { return Optional.ofNullable(environment); }
+
+    /** The physically based surface given for material {@code k}, or null (then {@link Surface#fromPhong}). */
+    public Surface surface(int k) { return surfaces[k]; }
+
+    /** Material {@code k}'s surface for the path tracer: the one given, else read from its Phong material. */
+    public Surface surfaceOrPhong(int k) {
+        return surfaces[k] != null ? surfaces[k] : Surface.fromPhong(materials.get(k));
+    }
+
     public Optional<CameraSpec> camera() { return Optional.ofNullable(camera); }
 
     public int patchCount() { return patches.size(); }
@@ -189,6 +219,14 @@ public final class Scene {
             b.addMesh(meshes.get(k), meshMaterial[k]);
         }
         b.instances.addAll(instances);
+        b.areaLights.addAll(areaLights);
+        b.spotLights.addAll(spotLights);
+        b.environment = environment;
+        for (int k = 0; k < surfaces.length; k++) {
+            if (surfaces[k] != null) {
+                b.surfaces.put(k, surfaces[k]);
+            }
+        }
         return b;
     }
 
@@ -207,6 +245,10 @@ public final class Scene {
         private final List<Instance> instances = new ArrayList<>();
         private CameraSpec camera;
         private boolean requirePatches;
+        private final List<AreaLight> areaLights = new ArrayList<>();
+        private final List<SpotLight> spotLights = new ArrayList<>();
+        private final java.util.Map<Integer, Surface> surfaces = new java.util.HashMap<>();
+        private Environment environment;
 
         /**
          * Replaces the patch list (materials of the patches are kept by index, default 0); the
@@ -275,6 +317,16 @@ public final class Scene {
         public Builder addSphere(Sphere s) { spheres.add(s); return this; }
 
         public Builder addLight(PointLight l) { lights.add(l); return this; }
+
+        public Builder addSpotLight(SpotLight l) { spotLights.add(java.util.Objects.requireNonNull(l)); return this; }
+
+        public Builder addAreaLight(AreaLight l) { areaLights.add(java.util.Objects.requireNonNull(l)); return this; }
+
+        /** The environment light (null: none). */
+        public Builder environment(Environment e) { environment = e; return this; }
+
+        /** Gives material {@code material} (an index) the physically based surface {@code s}. */
+        public Builder surface(int material, Surface s) { surfaces.put(material, java.util.Objects.requireNonNull(s)); return this; }
 
         /** Adds a material and returns the builder; its index is the number of materials before. */
         public Builder addMaterial(Material m) { materials.add(m); return this; }

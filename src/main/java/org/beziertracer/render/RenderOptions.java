@@ -27,10 +27,11 @@ import org.beziertracer.geometry.Tessellator;
  * @param kernel             the evaluation kernel of the intersector ({@link Kernels#best} unless chosen):
  *                           SIMD or scalar, the same picture either way
  * @param analysis           the settings of the surface-analysis views ({@link ShadingMode#isAnalysis()})
+ * @param path               the integrator and the path tracer's settings ({@link PathOptions#defaults()}: Whitted)
  */
 public record RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
                             double adaptiveThreshold, double minAttenuation, long seed, int tessellate,
-                            LaneKernel kernel, Analysis analysis) {
+                            LaneKernel kernel, Analysis analysis, PathOptions path) {
 
     public static final int MAX_THREADS = 256;
 
@@ -59,6 +60,21 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
         }
         java.util.Objects.requireNonNull(kernel, "kernel");
         java.util.Objects.requireNonNull(analysis, "analysis");
+        java.util.Objects.requireNonNull(path, "path");
+    }
+
+    /** With the default path settings (the Whitted integrator). */
+    public RenderOptions(int threads, int tileSize, boolean progressive, int passesPerFrame, PixelFilter filter,
+                         double adaptiveThreshold, double minAttenuation, long seed, int tessellate,
+                         LaneKernel kernel, Analysis analysis) {
+        this(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate,
+                kernel, analysis, PathOptions.defaults());
+    }
+
+    /** With the integrator and path tracer settings {@code p}. */
+    public RenderOptions withPath(PathOptions p) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
+                seed, tessellate, kernel, analysis, p);
     }
 
     /** With the default analysis settings ({@link Analysis#defaults()}). */
@@ -82,40 +98,40 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
     }
 
     public RenderOptions withThreads(int n) {
-        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
+        return new RenderOptions(n, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis, path);
     }
 
     public RenderOptions withProgressive(boolean on) {
-        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
+        return new RenderOptions(threads, tileSize, on, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis, path);
     }
 
     public RenderOptions withPassesPerFrame(int n) {
-        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
+        return new RenderOptions(threads, tileSize, progressive, n, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis, path);
     }
 
     public RenderOptions withFilter(PixelFilter f) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, f, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis, path);
     }
 
     public RenderOptions withTileSize(int size) {
-        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis);
+        return new RenderOptions(threads, size, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, tessellate, kernel, analysis, path);
     }
 
     /** 0 = exact; {@code K ≥ 1} = uniform {@code K×K} tessellation per patch. */
     public RenderOptions withTessellate(int k) {
-        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k, kernel, analysis);
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation, seed, k, kernel, analysis, path);
     }
 
     /** The same options with another evaluation kernel (the same picture, another speed). */
     public RenderOptions withKernel(LaneKernel k) {
         return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
-                seed, tessellate, k, analysis);
+                seed, tessellate, k, analysis, path);
     }
 
     /** With the analysis views' settings {@code a}. */
     public RenderOptions withAnalysis(Analysis a) {
         return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
-                seed, tessellate, kernel, a);
+                seed, tessellate, kernel, a, path);
     }
 
     /** True in tessellated (triangle mesh) mode. */

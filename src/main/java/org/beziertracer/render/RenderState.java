@@ -8,6 +8,8 @@ final class RenderState {
     final int generation;
     final RenderJob job;
     final ShadingScene shading;
+    /** The path tracer's data when the job asks for it ({@link Integrator#PATH}), else null. */
+    final PathScene path;
     final Film film;
     final PixelSampler sampler;
     final FrameSink sink;
@@ -27,6 +29,7 @@ final class RenderState {
         this.progress = progress;
         this.currentGeneration = currentGeneration;
         this.shading = new ShadingScene(job);
+        this.path = job.options().path().integrator() == Integrator.PATH ? new PathScene(job, shading) : null;
         this.film = new Film(job.width(), job.height(),
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),

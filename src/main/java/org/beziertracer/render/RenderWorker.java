@@ -20,17 +20,21 @@ final class RenderWorker {
     static final int PACKET = 4;
 
     private final WhittedTracer tracer;
+    private final PathTracer pathTracer;
     private final double[] offset = new double[2];
     private final RayPacket packet = new RayPacket();
     /** The packet's rays (origin, direction) and their pixels (x, y); grown, never shrunk. */
     private double[] rays = new double[6 * PACKET * PACKET];
     private int[] pixels = new int[2 * PACKET * PACKET];
+    /** The sample index of each ray of the packet (the path tracer seeds its numbers with it). */
+    private int[] samples = new int[PACKET * PACKET];
     private double[] colours = new double[3 * PACKET * PACKET];
     private int[] argb = new int[0];
     private ShadingScene bound;
 
     RenderWorker(SceneIntersector any) {
         tracer = new WhittedTracer(any);
+        pathTracer = new PathTracer(any);
     }
 
     /**
@@ -40,8 +44,12 @@ final class RenderWorker {
     boolean renderTile(RenderState st, PassPlan.Pass pass, int x0, int y0, int w, int h, boolean display) {
         if (bound != st.shading) {
             tracer.bind(st.shading);
+            if (st.path != null) {
+                pathTracer.bind(st.shading, st.path);
+            }
             bound = st.shading;
         }
+        long seed = st.job.options().seed();
         Film film = st.film;
         Camera camera = st.job.camera();
         int block = pass.block(), skip = pass.skipGrid();
@@ -72,13 +80,18 @@ final class RenderWorker {
                     }
                 }
                 RayPacket together = n > 1 && tracer.gather(packet.of(rays, n)) ? packet : null;
-                tracer.tracePacket(together, rays, n, colours);
+                if (st.path != null) {
+                    pathTracer.tracePacket(together, rays, pixels, samples, n, seed, colours);
+                } else {
+                    tracer.tracePacket(together, rays, n, colours);
+                }
                 for (int i = 0; i < n; i++) {
                     film.addSample(pixels[2 * i], pixels[2 * i + 1], colours[3 * i], colours[3 * i + 1], colours[3 * i + 2]);
                 }
             }
         }
         tracer.addCounts(st);
+        pathTracer.addCounts(st);
         if (display && st.sink.wantsTiles() && !st.isStale()) {
             if (argb.length < w * h) {
                 argb = new int[st.job.options().tileSize() * st.job.options().tileSize()];
@@ -99,12 +112,14 @@ final class RenderWorker {
         if (6 * n + 6 > rays.length) {
             rays = Arrays.copyOf(rays, 2 * rays.length);
             pixels = Arrays.copyOf(pixels, 2 * pixels.length);
+            samples = Arrays.copyOf(samples, 2 * samples.length);
             colours = new double[rays.length / 2];
         }
         st.sampler.offset(x, y, s, offset);
         camera.generateRay(x + offset[0], y + offset[1], st.film.width(), st.film.height(), rays, 6 * n);
         pixels[2 * n] = x;
         pixels[2 * n + 1] = y;
+        samples[n] = s;
         return n + 1;
     }
 
@@ -115,6 +130,7 @@ final class RenderWorker {
      */
     void release() {
         tracer.unbind();
+        pathTracer.unbind();
         bound = null;
     }
 

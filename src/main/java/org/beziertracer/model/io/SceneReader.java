@@ -16,10 +16,10 @@ import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Plane;
-import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Sphere;
+import org.beziertracer.model.Surface;
 
 /**
  * Turns a parsed scene file ({@link JsonNode}) into a {@link SceneDocument}; the format is
@@ -43,6 +43,8 @@ final class SceneReader {
     private final Map<String, Scene> loaded = new HashMap<>();
     private final Scene.Builder builder = Scene.builder();
     private final List<Material> materials = new ArrayList<>();
+    /** Per material, its physically based surface when it was given a {@code "type"}, else null. */
+    private final List<Surface> surfaces = new ArrayList<>();
     private final Map<String, Integer> named = new HashMap<>();
     /** The notes of the model files read, each file's once. */
     private final List<String> notes = new ArrayList<>();
@@ -56,7 +58,8 @@ final class SceneReader {
     SceneDocument read(JsonNode root) {
         root.keys(); // an object: check its version first, as a newer file may have newer keys
         checkVersion(root);
-        root.object("version", "description", "models", "materials", "planes", "spheres", "lights", "camera", "render");
+        root.object("version", "description", "models", "materials", "planes", "spheres", "lights", "environment", "camera",
+                "render");
         if (root.has("description")) {
             root.get("description").asString();
         }
@@ -65,7 +68,8 @@ final class SceneReader {
             checkCount(map, map.keys().size(), limits.sceneObjects(), "materials");
             for (String name : map.keys()) {
                 named.put(name, materials.size());
-                addMaterial(material(map.get(name)));
+                JsonNode m = map.get(name);
+                addMaterial(material(m), typed(m));
             }
         }
         for (JsonNode m : list(root, "models")) {
@@ -86,13 +90,21 @@ final class SceneReader {
             builder.addSphere(build(s, () -> new Sphere(center, radius, material)));
         }
         for (JsonNode l : list(root, "lights")) {
-            builder.addLight(light(l));
+            ScenePhysics.light(l, builder);
+        }
+        if (root.has("environment")) {
+            builder.environment(ScenePhysics.environment(root.get("environment"), baseDir));
         }
         if (root.has("camera")) {
             builder.camera(camera(root.get("camera")));
         }
         RenderSettings settings = root.has("render") ? settings(root.get("render")) : RenderSettings.defaults();
         materials.forEach(builder::addMaterial);
+        for (int k = 0; k < surfaces.size(); k++) {
+            if (surfaces.get(k) != null) {
+                builder.surface(k, surfaces.get(k));
+            }
+        }
         Scene scene = build(root, builder::build);
         return new SceneDocument(scene, settings, notes);
     }
@@ -340,35 +352,23 @@ final class SceneReader {
         return new ModelTransform(translate, scale, rotate);
     }
 
-    /** A light; a colour whose total overflows is named with the literal values. */
-    private static PointLight light(JsonNode l) {
-        l.object("position", "color");
-        Vec3 position = vec(l.require("position"));
-        double[] c = {1, 1, 1};
-        if (l.has("color")) {
-            JsonNode color = l.get("color");
-            c = color.asColor();
-            if (!Double.isFinite(c[0] + c[1] + c[2])) {
-                List<JsonNode> rgb = color.array();
-                throw l.error("the light's total intensity r + g + b = " + rgb.get(0).text() + " + " + rgb.get(1).text()
-                        + " + " + rgb.get(2).text() + " overflows (" + NumberText.BEYOND + ")");
-            }
-        }
-        double[] rgb = c;
-        return build(l, () -> new PointLight(position, rgb[0], rgb[1], rgb[2]));
-    }
-
     // Materials
 
-    private int addMaterial(Material m) {
+    private int addMaterial(Material m, Surface surface) {
         materials.add(m);
+        surfaces.add(surface);
         return materials.size() - 1;
+    }
+
+    /** The surface of a material object with a {@code "type"}, else null (a Phong material). */
+    private static Surface typed(JsonNode n) {
+        return !n.isString() && n.keys().contains("type") ? ScenePhysics.surface(n) : null;
     }
 
     /** Index of a material reference: absent = default, a name, or an inline object. */
     private int materialRef(JsonNode ref) {
         if (ref == null) {
-            return indexOrAdd(Material.DEFAULT);
+            return indexOrAdd(Material.DEFAULT, null);
         }
         if (ref.isString()) {
             Integer index = named.get(ref.asString());
@@ -378,17 +378,27 @@ final class SceneReader {
             }
             return index;
         }
-        return indexOrAdd(material(ref));
+        return indexOrAdd(material(ref), typed(ref));
     }
 
-    private int indexOrAdd(Material m) {
-        int index = materials.indexOf(m);
-        return index >= 0 ? index : addMaterial(m);
+    private int indexOrAdd(Material m, Surface surface) {
+        for (int k = 0; k < materials.size(); k++) {
+            if (materials.get(k).equals(m) && java.util.Objects.equals(surfaces.get(k), surface)) {
+                return k;
+            }
+        }
+        return addMaterial(m, surface);
     }
 
     private static Material material(JsonNode n) {
         if (n.isString()) {
             throw n.expected("a material object");
+        }
+        if (n.keys().contains("type")) {
+            Surface surface = ScenePhysics.surface(n);
+            int checker = n.has("checker") ? n.get("checker").asInt() : 0;
+            double[] c2 = n.has("color2") ? n.get("color2").asColor() : new double[] {0.95, 0.95, 0.95};
+            return build(n, () -> ScenePhysics.phong(surface, checker, c2));
         }
         n.object("color", "ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency", "ior",
                 "checker", "color2");

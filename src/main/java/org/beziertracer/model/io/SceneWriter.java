@@ -9,7 +9,11 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonPrimitive;
 
 import org.beziertracer.math.Vec3;
+import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.BezierPatch;
+import org.beziertracer.model.Environment;
+import org.beziertracer.model.Surface;
+import org.beziertracer.model.SpotLight;
 import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Mesh;
@@ -40,7 +44,9 @@ final class SceneWriter {
         // Materials by name, in index order
         JsonObject materials = new JsonObject();
         for (int k = 0; k < scene.materials().size(); k++) {
-            materials.add("m" + k, material(scene.materials().get(k)));
+            Surface surface = scene.surface(k);
+            materials.add("m" + k, surface == null ? material(scene.materials().get(k))
+                    : typed(surface, scene.materials().get(k)));
         }
         root.add("materials", materials);
 
@@ -48,6 +54,7 @@ final class SceneWriter {
         addIfAny(root, "planes", planes(scene));
         addIfAny(root, "spheres", spheres(scene));
         addIfAny(root, "lights", lights(scene));
+        scene.environment().ifPresent(e -> root.add("environment", environment(e)));
         scene.camera().ifPresent(c -> root.add("camera", camera(c)));
         root.add("render", settings(doc.settings()));
 
@@ -144,7 +151,72 @@ final class SceneWriter {
             o.add("color", numbers(l.r(), l.g(), l.b()));
             lights.add(o);
         }
+        for (SpotLight l : scene.spotLights()) {
+            JsonObject o = new JsonObject();
+            o.addProperty("type", "spot");
+            o.add("position", vec(l.position()));
+            o.add("direction", vec(l.direction()));
+            o.add("angle", number(l.angle()));
+            o.add("falloff", number(l.falloff()));
+            o.add("color", numbers(l.r(), l.g(), l.b()));
+            lights.add(o);
+        }
+        for (AreaLight a : scene.areaLights()) {
+            JsonObject o = new JsonObject();
+            if (a.shape() == AreaLight.Shape.SPHERE) {
+                o.addProperty("type", "sphere");
+                o.add("center", vec(a.center()));
+                o.add("radius", number(a.radius()));
+            } else {
+                o.addProperty("type", "rect");
+                o.add("corner", vec(a.corner()));
+                o.add("edge1", vec(a.edge1()));
+                o.add("edge2", vec(a.edge2()));
+            }
+            o.add("color", numbers(a.r(), a.g(), a.b()));
+            if (!Double.isNaN(a.power())) {
+                o.add("power", number(a.power()));
+            }
+            lights.add(o);
+        }
         return lights;
+    }
+
+    /** A colour environment, or an image one by the file name it was read from. */
+    private static JsonObject environment(Environment e) {
+        JsonObject o = new JsonObject();
+        if (e.image() != null) {
+            o.addProperty("image", e.image());
+        } else {
+            o.add("color", numbers(e.r(), e.g(), e.b()));
+        }
+        putIfDiffers(o, "intensity", e.intensity(), 1);
+        putIfDiffers(o, "rotate", e.rotate(), 0);
+        return o;
+    }
+
+    /** A typed (physically based) material; its Phong look is derived again on reading. */
+    private static JsonObject typed(Surface s, Material m) {
+        JsonObject o = new JsonObject();
+        o.addProperty("type", s.kind().label());
+        o.add("color", numbers(s.r(), s.g(), s.b()));
+        o.add("roughness", number(s.roughness()));
+        if (s.kind() == Surface.Kind.DIELECTRIC || s.kind() == Surface.Kind.PLASTIC) {
+            o.add("ior", number(s.ior()));
+        }
+        if (s.kind() == Surface.Kind.CONDUCTOR) {
+            if (s.metal() != null) {
+                o.addProperty("metal", s.metal());
+            } else {
+                o.add("eta", numbers(s.eta().r(), s.eta().g(), s.eta().b()));
+                o.add("k", numbers(s.k().r(), s.k().g(), s.k().b()));
+            }
+        }
+        if (m.checkerSquares() > 0) {
+            o.addProperty("checker", m.checkerSquares());
+            o.add("color2", numbers(m.r2(), m.g2(), m.b2()));
+        }
+        return o;
     }
 
     private static void addIfAny(JsonObject root, String key, JsonArray array) {

@@ -1,0 +1,31 @@
+package org.beziertracer.render;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * The Portable Float Map encoding of a film's linear RGB (the format of P. Debevec's HDRShop and
+ * Netpbm's {@code pfm}): the header {@code "PF\n<width> <height>\n-1.0\n"} (a negative scale means
+ * little-endian), then 32-bit floats, three per pixel, rows from the bottom of the image up.
+ * Stateless.
+ */
+public final class Pfm {
+    private Pfm() {}
+
+    /** The bytes of a PFM file holding the averaged linear image of {@code film}. */
+    public static byte[] encode(Film film) {
+        int w = film.width(), h = film.height();
+        byte[] header = ("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
+        ByteBuffer buf = ByteBuffer.allocate(header.length + 12 * w * h).order(ByteOrder.LITTLE_ENDIAN);
+        buf.put(header);
+        float[] px = new float[3];
+        for (int y = h - 1; y >= 0; y--) {
+            for (int x = 0; x < w; x++) {
+                film.pixel(x, y, px);
+                buf.putFloat(px[0]).putFloat(px[1]).putFloat(px[2]);
+            }
+        }
+        return buf.array();
+    }
+}
