@@ -30,6 +30,7 @@ import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.ImageDifference;
 import org.beziertracer.render.PixelFilter;
 import org.beziertracer.render.PixelProbe;
+import org.beziertracer.render.PixelWindow;
 import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.AnalysisRange;
 import org.beziertracer.render.RenderOptions;
@@ -104,6 +105,9 @@ final class RenderCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     AnalysisOptions analysisOptions = new AnalysisOptions();
 
+    @picocli.CommandLine.Mixin
+    PieceOptions pieceOptions = new PieceOptions();
+
     @Option(names = "--texture", paramLabel = "checker[:N]|none", description = "checker texture on the patches, N squares per side (default 8)")
     String texture;
 
@@ -171,8 +175,9 @@ final class RenderCommand implements Callable<Integer> {
             scene = scene.toBuilder().lights(list).build();
         }
         HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
+        PixelWindow window = pieceOptions.window(settings.width(), settings.height());
         RenderJob job = RenderJob.prepare(scene, settings, options);
-        job = job.withCamera(camera(job.camera()));
+        job = job.withCamera(camera(job.camera())).withWindow(window);
         RenderJob otherJob = differenceTo == null ? null : other(scene, settings, options, job);
         PrintWriter out = spec.commandLine().getOut();
         if (pixel != null) {
@@ -194,11 +199,11 @@ final class RenderCommand implements Callable<Integer> {
             }
             if (differenceTo != null) {
                 int[] argb = difference(session.render(otherJob).argb(), result.argb(), out);
-                PngWriter.write(output, settings.width(), settings.height(), argb);
+                PngWriter.write(output, window.width(), window.height(), argb);
             }
         }
         if (differenceTo == null) {
-            PngWriter.write(output, settings.width(), settings.height(), result.argb());
+            PngWriter.write(output, window.width(), window.height(), result.argb());
         }
         if (stats) {
             out.println(statsJson(job, settings, threadCount, result, frameMillis));
@@ -227,6 +232,7 @@ final class RenderCommand implements Callable<Integer> {
         if (repeat < 1 || repeat > MAX_REPEAT) {
             throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
         }
+        pieceOptions.check();
         if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
             throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
                     + ", got " + tessellate);
@@ -237,7 +243,7 @@ final class RenderCommand implements Callable<Integer> {
     private RenderJob other(Scene scene, RenderSettings s, RenderOptions options, RenderJob job) {
         RenderSettings o = new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
                 differenceTo.trim().toLowerCase(Locale.ROOT), s.bvh(), s.shading(), s.checker(), s.shadows(), s.maxDepth());
-        return RenderJob.prepare(scene, o, options).withCamera(job.camera());
+        return RenderJob.prepare(scene, o, options).withCamera(job.camera()).withWindow(job.window());
     }
 
     /** Prints how many pixels of {@code mine} differ from {@code theirs}; the overlay image. */

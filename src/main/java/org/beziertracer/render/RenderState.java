@@ -27,7 +27,7 @@ final class RenderState {
         this.progress = progress;
         this.currentGeneration = currentGeneration;
         this.shading = new ShadingScene(job);
-        this.film = new Film(job.width(), job.height(),
+        this.film = new Film(job.filmWindow(),
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
                 job.options().seed());
