@@ -19,6 +19,10 @@ final class PieceOptions {
             + "of equal height (the last takes the rest); the PNG holds just that band")
     String tile;
 
+    @Option(names = "--frames", paramLabel = "A-B", description = "with a job file: render only its frames A to B "
+            + "(or just A)")
+    String frames;
+
     /** Fails when both are given (before anything is read). */
     void check() {
         if (crop != null && tile != null) {

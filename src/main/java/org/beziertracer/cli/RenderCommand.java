@@ -22,6 +22,7 @@ import org.beziertracer.math.Vec3;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.JobFiles;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
@@ -157,23 +158,19 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
+        if (JobFiles.isJob(model)) {
+            return new JobRender(this).run();
+        }
+        if (pieceOptions.frames != null) {
+            throw new IllegalArgumentException("--frames needs a job file (a .json file with \"job\": 1)");
+        }
         checkArguments();
-        int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
-                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
-                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
-                .withAnalysis(analysisOptions.settings());
+        int threadCount = threadCount();
+        RenderOptions options = options(threadCount);
         SceneDocument doc = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr());
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
-        Scene scene = doc.scene();
-        if (!lights.isEmpty()) {
-            List<PointLight> list = new ArrayList<>();
-            for (String l : lights) {
-                list.add(new PointLight(vec("--light", l)));
-            }
-            scene = scene.toBuilder().lights(list).build();
-        }
+        Scene scene = withLights(doc.scene());
         HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
         PixelWindow window = pieceOptions.window(settings.width(), settings.height());
         RenderJob job = RenderJob.prepare(scene, settings, options);
@@ -212,8 +209,20 @@ final class RenderCommand implements Callable<Integer> {
         return 0;
     }
 
+    int threadCount() {
+        return threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+    }
+
+    /** The engine options the command line asks for. */
+    RenderOptions options(int threadCount) {
+        return RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
+                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
+                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
+                .withAnalysis(analysisOptions.settings());
+    }
+
     /** The options' own checks, before anything is read: one line each. */
-    private void checkArguments() {
+    void checkArguments() {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
@@ -239,6 +248,18 @@ final class RenderCommand implements Callable<Integer> {
         }
     }
 
+    /** {@code scene} with the lights of {@code --light} instead of its own, when there are any. */
+    Scene withLights(Scene scene) {
+        if (lights.isEmpty()) {
+            return scene;
+        }
+        List<PointLight> list = new ArrayList<>();
+        for (String l : lights) {
+            list.add(new PointLight(vec("--light", l)));
+        }
+        return scene.toBuilder().lights(list).build();
+    }
+
     /** The same view rendered with the method of {@code --difference-to}. */
     private RenderJob other(Scene scene, RenderSettings s, RenderOptions options, RenderJob job) {
         RenderSettings o = new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
@@ -257,11 +278,16 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The progress bar on standard error, or null with --quiet or when standard error is not a terminal. */
     private ProgressBarDisplay progressBar() {
-        int columns = quiet ? 0 : stderrColumns.getAsInt();
-        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, repeat);
+        return progressBar(repeat);
     }
 
-    private RenderSettings settings(RenderSettings s) {
+    /** A progress bar over {@code frameCount} frames, or null (see {@link #progressBar()}). */
+    ProgressBarDisplay progressBar(int frameCount) {
+        int columns = quiet ? 0 : stderrColumns.getAsInt();
+        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, frameCount);
+    }
+
+    RenderSettings settings(RenderSettings s) {
         int w = s.width(), h = s.height();
         if (size != null) {
             int[] wh = ints("--size", size, 2, "[xX]");
