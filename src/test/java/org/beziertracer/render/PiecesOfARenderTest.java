@@ -80,6 +80,21 @@ class PiecesOfARenderTest {
         }
     }
 
+    @Test
+    void aFilmOfAWindowKeepsImageCoordinates() {
+        Film film = new Film(new PixelWindow(10, 20, 13, 22), false);
+        film.addSample(12, 21, 1, 0.5, 0);
+        assertEquals(1, film.sampleCount(12, 21));
+        assertEquals(0, film.sampleCount(10, 20));
+        float[] px = new float[3];
+        film.pixel(12, 21, px);
+        assertArrayEquals(new float[] {1, 0.5f, 0}, px);
+        int[] argb = film.toArgb(new PixelWindow(11, 21, 13, 22));
+        assertEquals(Srgb.argb(1f, 0.5f, 0f), argb[1], "the last pixel of the bottom row");
+        assertEquals(new PixelWindow(10, 20, 13, 22), film.window());
+        org.beziertracer.UserMessages.of(IllegalArgumentException.class, () -> film.toArgb(new PixelWindow(0, 0, 5, 5)));
+    }
+
     private static RenderJob job(String sampler, int spp, String shading, int tileSize) {
         Scene scene = TestScenes.shadows();
         RenderSettings s = new RenderSettings(W, H, spp, sampler, "clipping", true, shading, 0, true, 5);

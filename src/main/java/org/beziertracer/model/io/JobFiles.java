@@ -31,7 +31,8 @@ public final class JobFiles {
 
     /**
      * True when {@code nameOrPath} is a {@code .json} file whose top level has a {@code "job"} key (a
-     * file that cannot be read or parsed is left to the scene reader, which names the problem).
+     * file that cannot be read or parsed, or is larger than a scene file may be, is left to the scene
+     * reader, which names the problem).
      */
     public static boolean isJob(String nameOrPath) {
         if (!nameOrPath.toLowerCase(Locale.ROOT).endsWith(".json")) {
@@ -39,7 +40,7 @@ public final class JobFiles {
         }
         try {
             Path file = Path.of(nameOrPath);
-            if (!Files.isRegularFile(file)) {
+            if (!Files.isRegularFile(file) || Files.size(file) > ReadLimits.DEFAULT.bytesInMemory()) {
                 return false;
             }
             JsonNode root = JsonNode.parse(Files.readString(file), nameOrPath);
