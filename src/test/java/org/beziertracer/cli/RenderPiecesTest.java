@@ -45,6 +45,7 @@ class RenderPiecesTest {
         assertError("i must be 1..4", "--tile", "5/4");
         assertError("at most the image height 36", "--tile", "1/37");
         assertError("cannot be used together", "--tile", "1/2", "--crop", "0,0,5,5");
+        assertError("--frames needs a job file", "--frames", "1-2");
     }
 
     private void assertError(String expected, String... piece) {
