@@ -23,6 +23,7 @@ import org.beziertracer.model.PointLight;
 import org.beziertracer.render.DefaultLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.JobFiles;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
@@ -36,6 +37,7 @@ import org.beziertracer.render.FrameSink;
 import org.beziertracer.render.ImageDifference;
 import org.beziertracer.render.PixelFilter;
 import org.beziertracer.render.PixelProbe;
+import org.beziertracer.render.PixelWindow;
 import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.AnalysisRange;
 import org.beziertracer.render.RenderOptions;
@@ -124,6 +126,9 @@ final class RenderCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     AnalysisOptions analysisOptions = new AnalysisOptions();
 
+    @picocli.CommandLine.Mixin
+    PieceOptions pieceOptions = new PieceOptions();
+
     @Option(names = "--texture", paramLabel = "checker[:N]|none", description = "checker texture on the patches, N squares per side (default 8)")
     String texture;
 
@@ -177,30 +182,24 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
+        if (JobFiles.isJob(model)) {
+            return new JobRender(this).run();
+        }
+        if (pieceOptions.frames != null) {
+            throw new IllegalArgumentException("--frames needs a job file (a .json file with \"job\": 1)");
+        }
         checkArguments();
-        int threadCount = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        RenderOptions options = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
-                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
-                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
-                .withAnalysis(analysisOptions.settings()).withPath(pathOptions());
+        int threadCount = threadCount();
+        RenderOptions options = options(threadCount);
         SceneDocument doc = ReadNotes.show(SceneFiles.load(model, Method::parse), spec.commandLine().getErr());
         RenderSettings settings = settings(doc.settings());
         checkMemory(settings);
         this.samplesPerFrame = (long) settings.width() * settings.height() * settings.spp();
-        Scene scene = doc.scene();
-        if (!lights.isEmpty()) {
-            List<PointLight> list = new ArrayList<>();
-            for (String l : lights) {
-                list.add(new PointLight(vec("--light", l)));
-            }
-            scene = scene.toBuilder().lights(list).build();
-        }
+        Scene scene = withLights(doc.scene());
         HeapBudget.require(model, scene, RenderJob.intersectOptions(settings, options));
+        PixelWindow window = pieceOptions.window(settings.width(), settings.height());
         RenderJob job = RenderJob.prepare(scene, settings, options);
-        job = job.withCamera(camera(job.camera()));
-        if (scene.lights().isEmpty()) { // the desktop app's default light, not the renderer's light at the eye
-            job = job.withLights(List.of(new PointLight(DefaultLight.position(job.camera().spec(), scene.bounds()))));
-        }
+        job = withDefaultLight(job.withCamera(camera(job.camera())).withWindow(window), scene);
         RenderJob otherJob = differenceTo == null ? null : other(scene, settings, options, job);
         PrintWriter out = spec.commandLine().getOut();
         if (pixel != null) {
@@ -222,17 +221,29 @@ final class RenderCommand implements Callable<Integer> {
             }
             if (differenceTo != null) {
                 int[] argb = difference(session.render(otherJob).argb(), result.argb(), out);
-                PngWriter.write(output, settings.width(), settings.height(), argb);
+                PngWriter.write(output, window.width(), window.height(), argb);
             }
         }
         if (differenceTo == null) {
-            write(result, options);
+            write(result, options, window);
         }
         if (stats) {
             out.println(statsJson(job, settings, threadCount, result, frameMillis));
             out.flush();
         }
         return 0;
+    }
+
+    int threadCount() {
+        return threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+    }
+
+    /** The engine options the command line asks for. */
+    RenderOptions options(int threadCount) {
+        return RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
+                .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
+                .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
+                .withAnalysis(analysisOptions.settings()).withPath(pathOptions());
     }
 
     private boolean pathTraced() { return Integrator.parse(integrator) == Integrator.PATH; }
@@ -257,14 +268,14 @@ final class RenderCommand implements Callable<Integer> {
      * The image: a .pfm of the linear film; a PNG through the ACES curve for the path tracer, as
      * the Whitted renderer's clamp-and-encode otherwise.
      */
-    private void write(RenderResult result, RenderOptions options) throws IOException {
+    void write(RenderResult result, RenderOptions options, PixelWindow window) throws IOException {
         Film film = result.film();
         if (isPfm(output)) {
-            AtomicFiles.writeBytes(output, out -> out.write(Pfm.encode(film)));
+            AtomicFiles.writeBytes(output, out -> out.write(Pfm.encode(film, window)));
         } else if (options.path().integrator() == Integrator.PATH) {
-            PngWriter.write(output, film.width(), film.height(), ToneMap.argb(film, exposure));
+            PngWriter.write(output, window.width(), window.height(), ToneMap.argb(film, window, exposure));
         } else {
-            PngWriter.write(output, film.width(), film.height(), result.argb());
+            PngWriter.write(output, window.width(), window.height(), result.argb());
         }
     }
 
@@ -273,7 +284,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     /** The options' own checks, before anything is read: one line each. */
-    private void checkArguments() {
+    void checkArguments() {
         if (output == null && pixel == null) {
             throw new IllegalArgumentException("missing -o OUT.png");
         }
@@ -312,17 +323,37 @@ final class RenderCommand implements Callable<Integer> {
         if (repeat < 1 || repeat > MAX_REPEAT) {
             throw new IllegalArgumentException("--repeat must be 1.." + MAX_REPEAT + ", got " + repeat);
         }
+        pieceOptions.check();
         if (tessellate < 0 || tessellate > Tessellator.MAX_SEGMENTS) {
             throw new IllegalArgumentException("--tessellate must be 0 (exact) or 1.." + Tessellator.MAX_SEGMENTS
                     + ", got " + tessellate);
         }
     }
 
+    /** {@code scene} with the lights of {@code --light} instead of its own, when there are any. */
+    Scene withLights(Scene scene) {
+        if (lights.isEmpty()) {
+            return scene;
+        }
+        List<PointLight> list = new ArrayList<>();
+        for (String l : lights) {
+            list.add(new PointLight(vec("--light", l)));
+        }
+        return scene.toBuilder().lights(list).build();
+    }
+
+    /** {@code job} lit by the desktop app's default light when the scene has none (not the renderer's light at the eye). */
+    static RenderJob withDefaultLight(RenderJob job, Scene scene) {
+        return scene.lights().isEmpty()
+                ? job.withLights(List.of(new PointLight(DefaultLight.position(job.camera().spec(), scene.bounds()))))
+                : job;
+    }
+
     /** The same view rendered with the method of {@code --difference-to}. */
     private RenderJob other(Scene scene, RenderSettings s, RenderOptions options, RenderJob job) {
         RenderSettings o = new RenderSettings(s.width(), s.height(), s.spp(), s.sampler(),
                 differenceTo.trim().toLowerCase(Locale.ROOT), s.bvh(), s.shading(), s.checker(), s.shadows(), s.maxDepth());
-        return RenderJob.prepare(scene, o, options).withCamera(job.camera()).withLights(job.lights());
+        return RenderJob.prepare(scene, o, options).withCamera(job.camera()).withLights(job.lights()).withWindow(job.window());
     }
 
     /** Prints how many pixels of {@code mine} differ from {@code theirs}; the overlay image. */
@@ -336,12 +367,17 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The progress bar on standard error, or null with --quiet or when standard error is not a terminal. */
     private ProgressBarDisplay progressBar() {
+        return progressBar(repeat);
+    }
+
+    /** A progress bar over {@code frameCount} frames, or null (see {@link #progressBar()}). */
+    ProgressBarDisplay progressBar(int frameCount) {
         int columns = quiet ? 0 : stderrColumns.getAsInt();
-        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, repeat,
+        return columns == 0 ? null : new ProgressBarDisplay(spec.commandLine().getErr(), columns, frameCount,
                 samplesPerFrame);
     }
 
-    private RenderSettings settings(RenderSettings s) {
+    RenderSettings settings(RenderSettings s) {
         int w = s.width(), h = s.height();
         if (size != null) {
             int[] wh = ints("--size", size, 2, "[xX]");

@@ -7,14 +7,16 @@ package org.beziertracer.render;
  * The displayed value of a pixel is {@code sum / count}; a pixel with no sample yet shows the
  * value of the anchor of its block in the current progressive pass.
  *
- * <p>Layout: {@code sum[3 * (y * width + x) + c]}, {@code count[y * width + x]},
- * {@code first[3 * (y * width + x) + c]} ({@code null} when not kept).
+ * <p>A film may hold only a window of the image ({@code render --crop}): its pixels keep their image
+ * coordinates {@code (x, y)}, {@code x0 ≤ x < x0 + width}, {@code y0 ≤ y < y0 + height}, in every
+ * method that takes a pixel. Layout, with {@code p = (y − y0) * width + (x − x0)}: {@code sum[3 * p + c]},
+ * {@code count[p]}, {@code first[3 * p + c]} ({@code null} when not kept).
  *
  * <p>Threads: workers write disjoint tiles; passes are separated by the engine's pass barrier
  * (which also publishes the writes). Read the film from other threads only after the render ended.
  */
 public final class Film {
-    private final int width, height;
+    private final int x0, y0, width, height;
     final float[] sum;
     final int[] count;
     /** First sample of every pixel; null unless the film was made to keep it. */
@@ -31,6 +33,17 @@ public final class Film {
      * neither allocated nor written.
      */
     Film(int width, int height, boolean keepFirst) {
+        this(PixelWindow.whole(Math.max(width, 1), Math.max(height, 1)), width, height, keepFirst);
+    }
+
+    /** A film of the pixels of {@code window} only (image coordinates kept); see {@link #Film(int, int, boolean)}. */
+    Film(PixelWindow window, boolean keepFirst) {
+        this(window, window.width(), window.height(), keepFirst);
+    }
+
+    private Film(PixelWindow window, int width, int height, boolean keepFirst) {
+        this.x0 = window.x0();
+        this.y0 = window.y0();
         if (width < 1 || height < 1 || (long) width * height > (1L << 26)) {
             throw new IllegalArgumentException("film of " + width + "x" + height + " pixels is not allowed");
         }
@@ -50,9 +63,21 @@ public final class Film {
 
     public int height() { return height; }
 
+    /** The pixels of the image this film holds. */
+    public PixelWindow window() { return new PixelWindow(x0, y0, x0 + width, y0 + height); }
+
+    /** Image column of the film's first pixel (0 for a whole image). */
+    int x0() { return x0; }
+
+    /** Image row of the film's first pixel (0 for a whole image). */
+    int y0() { return y0; }
+
+    /** Index of pixel {@code (x, y)} (image coordinates) in {@link #count}. */
+    int index(int x, int y) { return (y - y0) * width + (x - x0); }
+
     /** Adds a sample to pixel {@code (x, y)}. */
     void addSample(int x, int y, double r, double g, double b) {
-        int p = y * width + x, o = 3 * p;
+        int p = (y - y0) * width + (x - x0), o = 3 * p;
         if (first != null && count[p] == 0) {
             first[o] = (float) r; first[o + 1] = (float) g; first[o + 2] = (float) b;
         }
@@ -61,11 +86,11 @@ public final class Film {
     }
 
     /** Samples in pixel {@code (x, y)} so far. */
-    public int sampleCount(int x, int y) { return count[y * width + x]; }
+    public int sampleCount(int x, int y) { return count[index(x, y)]; }
 
     /** Linear RGB of pixel {@code (x, y)} into {@code out[0..2]} (0 when it has no sample). */
     public void pixel(int x, int y, float[] out) {
-        int p = y * width + x, o = 3 * p;
+        int p = index(x, y), o = 3 * p;
         float inv = count[p] > 0 ? 1f / count[p] : 0;
         out[0] = sum[o] * inv; out[1] = sum[o + 1] * inv; out[2] = sum[o + 2] * inv;
     }
@@ -76,7 +101,7 @@ public final class Film {
         float[] px = new float[3];
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
-                pixel(x, y, px);
+                pixel(x0 + x, y0 + y, px);
                 System.arraycopy(px, 0, out, 3 * (y * width + x), 3);
             }
         }
@@ -85,27 +110,35 @@ public final class Film {
 
     /** The whole image as sRGB-encoded opaque ARGB, row-major. */
     public int[] toArgb() {
-        int[] out = new int[width * height];
-        writeArgb(0, 0, width, height, 1, out, width);
+        return toArgb(window());
+    }
+
+    /** The pixels of {@code w} (inside this film's window) as sRGB-encoded opaque ARGB, row-major. */
+    public int[] toArgb(PixelWindow w) {
+        if (w.x0() < x0 || w.y0() < y0 || w.x1() > x0 + width || w.y1() > y0 + height) {
+            throw new IllegalArgumentException("window " + w + " is outside the film's " + window());
+        }
+        int[] out = new int[w.width() * w.height()];
+        writeArgb(w.x0(), w.y0(), w.width(), w.height(), 1, out, w.width());
         return out;
     }
 
     /**
-     * Encodes the rectangle {@code (x0, y0, w, h)} into {@code argb[j * stride + i]}; a pixel without
+     * Encodes the rectangle {@code (x0, y0, w, h)} (image coordinates) into {@code argb[j * stride + i]}; a pixel without
      * samples takes the value of the anchor {@code (x − x mod block, y − y mod block)} of its block.
      * {@code block} is a power of two (the pass plan's), so the anchor is a mask away, not a division.
      */
-    void writeArgb(int x0, int y0, int w, int h, int block, int[] argb, int stride) {
+    void writeArgb(int left, int top, int w, int h, int block, int[] argb, int stride) {
         if (block < 1 || (block & (block - 1)) != 0) {
             throw new IllegalArgumentException("block must be a power of two, got " + block);
         }
         int mask = -block;
         for (int j = 0; j < h; j++) {
-            int y = y0 + j;
-            int last = -1, lastArgb = 0, anchorRow = (y & mask) * width;
+            int y = top + j;
+            int last = -1, lastArgb = 0, anchorRow = ((y & mask) - y0) * width - x0;
             for (int i = 0; i < w; i++) {
-                int x = x0 + i;
-                int p = y * width + x;
+                int x = left + i;
+                int p = index(x, y);
                 if (count[p] == 0) {
                     p = anchorRow + (x & mask);
                 }

@@ -15,14 +15,19 @@ public final class Pfm {
 
     /** The bytes of a PFM file holding the averaged linear image of {@code film}. */
     public static byte[] encode(Film film) {
-        int w = film.width(), h = film.height();
+        return encode(film, film.window());
+    }
+
+    /** The pixels of {@code window} (image coordinates, inside the film's) as a PFM file. */
+    public static byte[] encode(Film film, PixelWindow window) {
+        int w = window.width(), h = window.height();
         byte[] header = ("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
         ByteBuffer buf = ByteBuffer.allocate(header.length + 12 * w * h).order(ByteOrder.LITTLE_ENDIAN);
         buf.put(header);
         float[] px = new float[3];
         for (int y = h - 1; y >= 0; y--) {
             for (int x = 0; x < w; x++) {
-                film.pixel(x, y, px);
+                film.pixel(window.x0() + x, window.y0() + y, px);
                 buf.putFloat(px[0]).putFloat(px[1]).putFloat(px[2]);
             }
         }

@@ -26,15 +26,30 @@ import org.beziertracer.model.Sphere;
  * <p>{@code lights}, when not null, replaces the scene's lights for shading only (the desktop
  * app's light placements, some of which follow the camera): a light that moves then needs no
  * new intersector.
+ *
+ * <p>{@code window} is the piece of the image to render ({@code render --crop}, {@code --tile}); the
+ * camera and the samples stay the whole image's, so the window's pixels are byte-identical to the
+ * same pixels of the whole render. Null in the constructor means the whole image.
  */
 public record RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options,
-                        List<PointLight> lights) {
+                        List<PointLight> lights, PixelWindow window) {
 
     public RenderJob {
         if (intersector == null || camera == null || settings == null || options == null) {
             throw new IllegalArgumentException("intersector, camera, settings and options are required");
         }
         lights = lights == null ? null : List.copyOf(lights);
+        window = window == null ? PixelWindow.whole(settings.width(), settings.height()) : window;
+        if (!window.fits(settings.width(), settings.height())) {
+            throw new IllegalArgumentException("the pixel window " + window + " is outside the "
+                    + settings.width() + "x" + settings.height() + " image");
+        }
+    }
+
+    /** The whole image, lit by {@code lights} (null: the scene's own). */
+    public RenderJob(SceneIntersector intersector, Camera camera, RenderSettings settings, RenderOptions options,
+                     List<PointLight> lights) {
+        this(intersector, camera, settings, options, lights, null);
     }
 
     /** A job lit by the scene's own lights (or, with none, by one light at the eye). */
@@ -92,11 +107,24 @@ public record RenderJob(SceneIntersector intersector, Camera camera, RenderSetti
 
     public SamplerKind sampler() { return SamplerKind.parse(settings.sampler()); }
 
-    public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options, lights); }
+    public RenderJob withCamera(Camera c) { return new RenderJob(intersector, c, settings, options, lights, window); }
 
     /** Same intersector: only for options with the same {@link RenderOptions#tessellate()}. */
-    public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o, lights); }
+    public RenderJob withOptions(RenderOptions o) { return new RenderJob(intersector, camera, settings, o, lights, window); }
 
     /** The same job shaded with {@code l} instead of the scene's lights (null: the scene's own). */
-    public RenderJob withLights(List<PointLight> l) { return new RenderJob(intersector, camera, settings, options, l); }
+    public RenderJob withLights(List<PointLight> l) { return new RenderJob(intersector, camera, settings, options, l, window); }
+
+    /** The same job rendering only the pixels of {@code w} (null: the whole image). */
+    public RenderJob withWindow(PixelWindow w) { return new RenderJob(intersector, camera, settings, options, lights, w); }
+
+    /**
+     * The pixels the film must hold to render {@link #window()} exactly as the whole image does: the
+     * window itself, grown by one pixel (inside the image) when the adaptive sampler compares each
+     * pixel's first sample with its four neighbours'.
+     */
+    public PixelWindow filmWindow() {
+        boolean neighbours = sampler() == SamplerKind.ADAPTIVE && settings.spp() > 1;
+        return neighbours ? window.grow(1, width(), height()) : window;
+    }
 }

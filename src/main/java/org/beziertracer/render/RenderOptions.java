@@ -134,6 +134,12 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
                 seed, tessellate, kernel, a, path);
     }
 
+    /** With the jittered and adaptive samplers' seed {@code s} (a job file's {@code seed}). */
+    public RenderOptions withSeed(long s) {
+        return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
+                s, tessellate, kernel, analysis);
+    }
+
     /** True in tessellated (triangle mesh) mode. */
     public boolean tessellated() { return tessellate > 0; }
 }

@@ -170,8 +170,12 @@ public final class RenderSession implements AutoCloseable {
             done.completeExceptionally(new CancellationException("superseded"));
             return;
         }
-        List<int[]> tiles = tiles(job.width(), job.height(), job.options().tileSize());
-        List<PassPlan.Pass> passes = PassPlan.of(job.options().progressive(), job.sampler(), job.settings().spp());
+        // A window (a crop or tile of the image) is tiled from its own corner and rendered in one-shot
+        // passes: its pixels take the same samples in the same order as in the whole image
+        PixelWindow region = job.filmWindow();
+        List<int[]> tiles = tiles(region, job.options().tileSize());
+        boolean progressive = job.options().progressive() && job.window().isWhole(job.width(), job.height());
+        List<PassPlan.Pass> passes = PassPlan.of(progressive, job.sampler(), job.settings().spp());
         RenderState st = new RenderState(gen, job, sink, generation, new ProgressCounter(progress, gen, passes, tiles));
         int workers = Math.min(job.options().threads(), poolSize);
         int perFrame = job.options().passesPerFrame();
@@ -194,7 +198,7 @@ public final class RenderSession implements AutoCloseable {
             }
             sink.passDone(gen, p, passes.size(), st.stats());
         }
-        done.complete(new RenderResult(st.film, st.stats()));
+        done.complete(new RenderResult(st.film, st.stats(), job.window()));
     }
 
     private void work(RenderState st, PassPlan.Pass pass, List<int[]> tiles, AtomicInteger next, boolean display,
@@ -223,10 +227,15 @@ public final class RenderSession implements AutoCloseable {
 
     /** Tiles {@code {x0, y0, w, h}} covering the image, row by row. */
     static List<int[]> tiles(int width, int height, int size) {
+        return tiles(PixelWindow.whole(width, height), size);
+    }
+
+    /** Tiles {@code {x0, y0, w, h}} (image coordinates) covering {@code window}, row by row from its corner. */
+    static List<int[]> tiles(PixelWindow window, int size) {
         List<int[]> out = new ArrayList<>();
-        for (int y = 0; y < height; y += size) {
-            for (int x = 0; x < width; x += size) {
-                out.add(new int[] {x, y, Math.min(size, width - x), Math.min(size, height - y)});
+        for (int y = window.y0(); y < window.y1(); y += size) {
+            for (int x = window.x0(); x < window.x1(); x += size) {
+                out.add(new int[] {x, y, Math.min(size, window.x1() - x), Math.min(size, window.y1() - y)});
             }
         }
         return out;

@@ -30,7 +30,7 @@ final class RenderState {
         this.currentGeneration = currentGeneration;
         this.shading = new ShadingScene(job);
         this.path = job.options().path().integrator() == Integrator.PATH ? new PathScene(job, shading) : null;
-        this.film = new Film(job.width(), job.height(),
+        this.film = new Film(job.filmWindow(),
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
                 job.options().seed());

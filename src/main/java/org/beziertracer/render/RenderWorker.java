@@ -116,7 +116,8 @@ final class RenderWorker {
             colours = new double[rays.length / 2];
         }
         st.sampler.offset(x, y, s, offset);
-        camera.generateRay(x + offset[0], y + offset[1], st.film.width(), st.film.height(), rays, 6 * n);
+        // the whole image's camera, also when the film holds only a window of it
+        camera.generateRay(x + offset[0], y + offset[1], st.job.width(), st.job.height(), rays, 6 * n);
         pixels[2 * n] = x;
         pixels[2 * n + 1] = y;
         samples[n] = s;
@@ -134,13 +135,18 @@ final class RenderWorker {
         bound = null;
     }
 
-    /** True when the first sample of {@code (x, y)} differs from a 4-neighbour's by more than {@code threshold}. */
+    /**
+     * True when the first sample of {@code (x, y)} differs from a 4-neighbour's by more than {@code threshold}.
+     * Neighbours outside the film are not compared: the film is the whole image, or a window grown by one
+     * pixel ({@link RenderJob#filmWindow()}), whose own edge pixels are not kept.
+     */
     private static boolean differs(Film film, int x, int y, double threshold) {
         int width = film.width(), height = film.height();
+        int lx = x - film.x0(), ly = y - film.y0();
         float[] f = film.first;
-        int o = 3 * (y * width + x);
-        return x > 0 && far(f, o, o - 3, threshold) || x + 1 < width && far(f, o, o + 3, threshold)
-                || y > 0 && far(f, o, o - 3 * width, threshold) || y + 1 < height && far(f, o, o + 3 * width, threshold);
+        int o = 3 * (ly * width + lx);
+        return lx > 0 && far(f, o, o - 3, threshold) || lx + 1 < width && far(f, o, o + 3, threshold)
+                || ly > 0 && far(f, o, o - 3 * width, threshold) || ly + 1 < height && far(f, o, o + 3 * width, threshold);
     }
 
     private static boolean far(float[] f, int a, int b, double threshold) {

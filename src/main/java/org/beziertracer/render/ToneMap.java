@@ -22,16 +22,21 @@ public final class ToneMap {
 
     /** The film tone mapped to opaque sRGB ARGB, row-major. */
     public static int[] argb(Film film, double exposure) {
+        return argb(film, film.window(), exposure);
+    }
+
+    /** The pixels of {@code window} (image coordinates, inside the film's) tone mapped to opaque sRGB ARGB, row-major. */
+    public static int[] argb(Film film, PixelWindow window, double exposure) {
         if (!Double.isFinite(exposure)) {
             throw new IllegalArgumentException("exposure must be finite, got " + exposure);
         }
         double scale = Math.pow(2, exposure);
-        int w = film.width(), h = film.height();
+        int w = window.width(), h = window.height();
         int[] out = new int[w * h];
         float[] px = new float[3];
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                film.pixel(x, y, px);
+                film.pixel(window.x0() + x, window.y0() + y, px);
                 out[y * w + x] = Srgb.argb((float) aces(px[0] * scale), (float) aces(px[1] * scale),
                         (float) aces(px[2] * scale));
             }

@@ -454,8 +454,13 @@ final class SceneReader {
      * range error names the key that made the settings invalid.
      */
     private static RenderSettings settings(JsonNode r) {
+        return settings(r, RenderSettings.defaults());
+    }
+
+    /** As {@link #settings(JsonNode)}, each key overriding {@code base} (a job file's settings over its scene's). */
+    static RenderSettings settings(JsonNode r, RenderSettings base) {
         r.object("width", "height", "spp", "sampler", "method", "bvh", "shading", "checker", "shadows", "maxDepth");
-        RenderSettings all = RenderSettings.defaults();
+        RenderSettings all = base;
         for (String key : r.keys()) {
             all = with(all, r.get(key), key);
         }
