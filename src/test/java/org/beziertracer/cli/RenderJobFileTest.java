@@ -100,7 +100,7 @@ class RenderJobFileTest {
         assertError("--eye does not go with a job file", "{\"job\": 1, \"scene\": \"room.json\", \"output\": \"f.png\"}",
                 "--eye", "1,2,3");
         // up turns over from +z to -z: half way it is zero, found before frame 0 renders
-        assertError("camera: frame 1: camera up must not be parallel", "{\"job\": 1, \"scene\": \"room.json\","
+        assertError("camera: frame 1: camera up must not be the zero vector", "{\"job\": 1, \"scene\": \"room.json\","
                 + " \"camera\": {\"keyframes\": [{\"frame\": 0, \"eye\": [60, 0, 0], \"target\": [0, 0, 0]},"
                 + " {\"frame\": 2, \"eye\": [60, 0, 0], \"target\": [0, 0, 0], \"up\": [0, 0, -1]}]},"
                 + " \"output\": \"f-#.png\"}");

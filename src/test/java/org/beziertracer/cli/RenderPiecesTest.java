@@ -39,6 +39,46 @@ class RenderPiecesTest {
     }
 
     @Test
+    void aPathTracedCropIsTheSamePixelsAndItsPfmTheSameFloats() throws IOException {
+        String[] path = {"--integrator", "path", "--depth", "4"};
+        BufferedImage whole = render("pwhole.png", path);
+        BufferedImage crop = render("pcrop.png", concat(path, "--crop", "9,5,30,21"));
+        assertArrayEquals(whole.getRGB(9, 5, 21, 16, null, 0, 21), crop.getRGB(0, 0, 21, 16, null, 0, 21));
+        assertEquals(0, Run.of(args(dir.resolve("whole.pfm"), path)).code());
+        Run r = Run.of(args(dir.resolve("crop.pfm"), concat(path, "--crop", "9,5,30,21")));
+        assertEquals(0, r.code(), r.err());
+        float[] all = pfm(dir.resolve("whole.pfm"), 50, 36), piece = pfm(dir.resolve("crop.pfm"), 21, 16);
+        for (int y = 0; y < 16; y++) {
+            for (int x = 0; x < 21; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(all[3 * ((y + 5) * 50 + x + 9) + c], piece[3 * (y * 21 + x) + c], "pixel " + x + "," + y);
+                }
+            }
+        }
+    }
+
+    /** The floats of a PFM of the given size, top row first. */
+    private static float[] pfm(Path file, int w, int h) throws IOException {
+        byte[] bytes = Files.readAllBytes(file);
+        String header = "PF\n" + w + " " + h + "\n-1.0\n";
+        assertEquals(header, new String(bytes, 0, header.length(), java.nio.charset.StandardCharsets.US_ASCII));
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.wrap(bytes, header.length(), 12 * w * h).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        float[] out = new float[3 * w * h];
+        for (int y = h - 1; y >= 0; y--) {
+            for (int k = 0; k < 3 * w; k++) {
+                out[3 * y * w + k] = b.getFloat();
+            }
+        }
+        return out;
+    }
+
+    private static String[] concat(String[] a, String... b) {
+        String[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+
+    @Test
     void badPiecesGetOneLineErrors() {
         assertError("x1 must be greater than x0", "--crop", "20,0,10,10");
         assertError("outside the 50x36 image", "--crop", "0,0,51,10");
