@@ -3,6 +3,8 @@ package org.beziertracer.render;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 
+import org.beziertracer.intersect.TraceContext;
+
 /** What the workers of one generation share: the job, its film, counters and the staleness check. */
 final class RenderState {
     final int generation;
@@ -17,6 +19,18 @@ final class RenderState {
     final LongAdder primaryRays = new LongAdder(), shadowRays = new LongAdder(), secondaryRays = new LongAdder();
     final LongAdder solverCalls = new LongAdder(), clipSteps = new LongAdder(), evaluations = new LongAdder(),
             laneEvaluations = new LongAdder();
+
+    /** Adds one tracer's rays and {@code ctx}'s intersector work to the counters and zeroes {@code ctx}'s. */
+    void addWork(long primary, long shadow, long secondary, TraceContext ctx) {
+        primaryRays.add(primary);
+        shadowRays.add(shadow);
+        secondaryRays.add(secondary);
+        solverCalls.add(ctx.solverCalls);
+        clipSteps.add(ctx.clipIterations);
+        evaluations.add(ctx.evaluations);
+        laneEvaluations.add(ctx.laneEvaluations);
+        ctx.solverCalls = ctx.clipIterations = ctx.evaluations = ctx.laneEvaluations = 0;
+    }
     private final AtomicInteger currentGeneration;
     final long startNanos = System.nanoTime();
     volatile Throwable failure;

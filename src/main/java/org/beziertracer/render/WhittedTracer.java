@@ -120,15 +120,8 @@ public final class WhittedTracer {
      * and starts counting again.
      */
     void addCounts(RenderState st) {
-        st.primaryRays.add(primaryRays);
-        st.shadowRays.add(shadowRays);
-        st.secondaryRays.add(secondaryRays);
-        st.solverCalls.add(ctx.solverCalls);
-        st.clipSteps.add(ctx.clipIterations);
-        st.evaluations.add(ctx.evaluations);
-        st.laneEvaluations.add(ctx.laneEvaluations);
+        st.addWork(primaryRays, shadowRays, secondaryRays, ctx);
         primaryRays = shadowRays = secondaryRays = 0;
-        ctx.solverCalls = ctx.clipIterations = ctx.evaluations = ctx.laneEvaluations = 0;
     }
 
     public long shadowRays() { return shadowRays; }
