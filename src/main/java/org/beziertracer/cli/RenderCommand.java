@@ -342,9 +342,12 @@ final class RenderCommand implements Callable<Integer> {
         return scene.toBuilder().lights(list).build();
     }
 
-    /** {@code job} lit by the desktop app's default light when the scene has none (not the renderer's light at the eye). */
+    /**
+     * {@code job} lit by the desktop app's default light when the scene has none (not the renderer's
+     * light at the eye); the path tracer keeps its own rule (environment and area lights count as light).
+     */
     static RenderJob withDefaultLight(RenderJob job, Scene scene) {
-        return scene.lights().isEmpty()
+        return scene.lights().isEmpty() && job.options().path().integrator() != Integrator.PATH
                 ? job.withLights(List.of(new PointLight(DefaultLight.position(job.camera().spec(), scene.bounds()))))
                 : job;
     }

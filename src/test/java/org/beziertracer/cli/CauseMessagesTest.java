@@ -33,7 +33,10 @@ class CauseMessagesTest {
         assertEquals(0, r.code(), r.err());
         String line = r.out().lines().filter(l -> l.contains("--input")).findFirst().orElseThrow();
         assertTrue(line.contains("ray file") && !line.contains("built-in"), line);
-        String model = r.out().lines().filter(l -> l.strip().startsWith("MODEL_OR_SCENE")).findFirst().orElseThrow();
+        // the positional parameter's description, wrapped over several lines up to the first option
+        String out = r.out();
+        int from = out.indexOf("MODEL_OR_SCENE    ");
+        String model = out.substring(from, out.indexOf("\n      --", from)).replaceAll("\\s+", " ");
         assertTrue(model.contains("built-in"), model);
     }
 
