@@ -165,6 +165,21 @@ public final class AppModel {
                 || difference.busy();
     }
 
+    /** The names of the parts {@link #busy()} waits for that are busy now (for diagnostics: a soak that never goes idle). */
+    public String busyParts() {
+        String[] names = {"engine", "hover", "continuity", "overlay", "editor", "viewTasks", "io", "status", "topology",
+            "difference"};
+        boolean[] busy = {engine.busy(), hover.busy(), continuity.busy(), overlay.busy(), editor.busy(), viewTasks.busy(),
+            io.busy(), status.busy(), topology.busy(), difference.busy()};
+        StringBuilder sb = new StringBuilder();
+        for (int k = 0; k < names.length; k++) {
+            if (busy[k]) {
+                sb.append(sb.length() == 0 ? "" : ", ").append(names[k]);
+            }
+        }
+        return sb.length() == 0 ? "none" : sb.toString();
+    }
+
     /** Stops rendering and the workers. */
     public void close() {
         engine.close();

@@ -13,8 +13,16 @@ import java.awt.Insets;
  * it wraps at is the one its container's parent gives it ({@code BorderLayout.SOUTH}: the window's
  * width). A component wider than a whole row is narrowed to it (a {@code JLabel} then elides its
  * text with "…"; give it a tooltip with the full text).
+ *
+ * <p>At one width the preferred height never shrinks: a status bar whose texts change after every
+ * frame would otherwise change rows, resize the picture above it, start a new frame, change its
+ * texts again, and never settle (an app soak found the loop). The height is forgotten when the
+ * width changes.
  */
 final class WrapFlowLayout extends FlowLayout {
+
+    /** The width the tallest height was asked at, and that height (preferred sizes only). */
+    private int heldWidth = -1, heldHeight;
 
     WrapFlowLayout(int hgap, int vgap) {
         super(FlowLayout.LEFT, hgap, vgap);
@@ -22,7 +30,15 @@ final class WrapFlowLayout extends FlowLayout {
 
     @Override
     public Dimension preferredLayoutSize(Container target) {
-        return size(target, true);
+        Dimension d = size(target, true);
+        int width = rowWidth(target);
+        if (width != heldWidth) {
+            heldWidth = width;
+            heldHeight = 0;
+        }
+        heldHeight = Math.max(heldHeight, d.height);
+        d.height = heldHeight;
+        return d;
     }
 
     @Override

@@ -115,7 +115,8 @@ public final class SoakChecks {
         });
         if (!awaitIdle(onUi, app::busy, timeoutMillis)) {
             printThreads();
-            throw new AssertionError("the app did not go idle within " + timeoutMillis + " ms");
+            throw new AssertionError("the app did not go idle within " + timeoutMillis + " ms (busy: "
+                    + onUi.call(app::busyParts) + "); state " + onUi.call(() -> Final.of(app)).describe());
         }
         return onUi.call(() -> Final.of(app));
     }
