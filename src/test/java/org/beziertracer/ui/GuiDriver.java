@@ -508,8 +508,9 @@ final class GuiDriver {
     /** Pixels of {@code a} and {@code b} in a box that differ by more than {@code tol} in some channel. */
     static int differing(BufferedImage a, BufferedImage b, Rectangle box, int tol) {
         int count = 0;
-        for (int y = Math.max(0, box.y); y < Math.min(a.getHeight(), box.y + box.height); y++) {
-            for (int x = Math.max(0, box.x); x < Math.min(a.getWidth(), box.x + box.width); x++) {
+        int height = Math.min(a.getHeight(), b.getHeight()), width = Math.min(a.getWidth(), b.getWidth());
+        for (int y = Math.max(0, box.y); y < Math.min(height, box.y + box.height); y++) {
+            for (int x = Math.max(0, box.x); x < Math.min(width, box.x + box.width); x++) {
                 int p = a.getRGB(x, y), q = b.getRGB(x, y);
                 for (int s = 0; s <= 16; s += 8) {
                     if (Math.abs(((p >> s) & 255) - ((q >> s) & 255)) > tol) {
