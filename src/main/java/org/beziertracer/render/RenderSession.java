@@ -241,7 +241,10 @@ public final class RenderSession implements AutoCloseable {
         return out;
     }
 
-    /** A pool thread that keeps its {@link RenderWorker} scratch. */
+    /**
+     * A pool thread that keeps its {@link RenderWorker} scratch, taken from the {@linkplain
+     * SpareWorkers spares} of closed sessions when one fits, and left there when the thread ends.
+     */
     private static final class WorkerThread extends Thread {
         private RenderWorker worker;
 
@@ -251,9 +254,21 @@ public final class RenderSession implements AutoCloseable {
 
         RenderWorker worker(RenderJob job) {
             if (worker == null) {
-                worker = new RenderWorker(job.intersector());
+                worker = SpareWorkers.take(job);
             }
             return worker;
+        }
+
+        @Override
+        public void run() {
+            try {
+                super.run();
+            } finally {
+                if (worker != null) {
+                    SpareWorkers.leave(worker);
+                    worker = null;
+                }
+            }
         }
     }
 }

@@ -4,6 +4,7 @@ import java.util.Arrays;
 
 import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.math.LaneKernel;
 
 /**
  * Per-thread scratch and the tile loop: turns the pixels of one tile into camera rays, traces them
@@ -20,7 +21,10 @@ final class RenderWorker {
     static final int PACKET = 4;
 
     private final WhittedTracer tracer;
-    private final PathTracer pathTracer;
+    /** The path tracer and its query context, made on the first path-traced tile (a Whitted render never needs them). */
+    private PathTracer pathTracer;
+    /** The kernel of the tracer's query context ({@link #fits}). */
+    private final LaneKernel kernel;
     private final double[] offset = new double[2];
     private final RayPacket packet = new RayPacket();
     /** The packet's rays (origin, direction) and their pixels (x, y); grown, never shrunk. */
@@ -34,7 +38,15 @@ final class RenderWorker {
 
     RenderWorker(SceneIntersector any) {
         tracer = new WhittedTracer(any);
-        pathTracer = new PathTracer(any);
+        kernel = any.options().kernel();
+    }
+
+    /**
+     * True when this worker's scratch serves {@code job} as a worker made for it would: its query
+     * context has the job's kernel (a spare worker of another session is reused only then).
+     */
+    boolean fits(RenderJob job) {
+        return kernel == job.intersector().options().kernel();
     }
 
     /**
@@ -45,6 +57,9 @@ final class RenderWorker {
         if (bound != st.shading) {
             tracer.bind(st.shading);
             if (st.path != null) {
+                if (pathTracer == null) {
+                    pathTracer = new PathTracer(st.job.intersector());
+                }
                 pathTracer.bind(st.shading, st.path);
             }
             bound = st.shading;
@@ -91,7 +106,9 @@ final class RenderWorker {
             }
         }
         tracer.addCounts(st);
-        pathTracer.addCounts(st);
+        if (pathTracer != null) {
+            pathTracer.addCounts(st);
+        }
         if (display && st.sink.wantsTiles() && !st.isStale()) {
             if (argb.length < w * h) {
                 argb = new int[st.job.options().tileSize() * st.job.options().tileSize()];
@@ -131,7 +148,9 @@ final class RenderWorker {
      */
     void release() {
         tracer.unbind();
-        pathTracer.unbind();
+        if (pathTracer != null) {
+            pathTracer.unbind();
+        }
         bound = null;
     }
 
