@@ -98,7 +98,8 @@ final class ClippingLeaves extends PatchLeaves {
      * {@link #intersect(TraceContext, int, int[], int, double[])} for shadow rays: the answers of
      * {@link #occludes(TraceContext, int, double)} for each lane alone. A lane on the leaf it leaves,
      * or whose Newton start is the point it leaves, is solved alone (its first iterate is that
-     * point's evaluation, {@link RayPatchNewton#startsAtOrigin}).
+     * point's evaluation, {@link RayPatchNewton#startsAtOrigin}); on the leaf it leaves, after the
+     * batch's other leaves, and only when none of them blocked it ({@link RayBatch#putOff}).
      */
     @Override
     public void occludes(TraceContext ctx, int s, int[] lanes, int count, double[] tMax, boolean[] occluded) {
@@ -106,6 +107,18 @@ final class ClippingLeaves extends PatchLeaves {
             super.occludes(ctx, s, lanes, count, tMax, occluded);
         } else {
             solveLanes(ctx, s, lanes, count, tMax, occluded);
+        }
+    }
+
+    /**
+     * Shadow-ray lane {@code lane}'s own leaf {@code s} (the leaf its ray leaves, whose call is
+     * counted and whose proof that the ray passes behind it failed), solved alone: sets
+     * {@code occluded[lane]} when the ray meets it ahead of its origin.
+     */
+    void solveOwn(TraceContext ctx, int s, int lane, double[] tMax, boolean[] occluded) {
+        ctx.batch.loadShadowRay(ctx, lane);
+        if (solve(ctx, s, ctx.tMin, tMax[lane])) {
+            occluded[lane] = true;
         }
     }
 
@@ -135,9 +148,10 @@ final class ClippingLeaves extends PatchLeaves {
                 continue; // a leaf of the patch the ray leaves, proven behind it
             }
             if (anyHit && s == ctx.originLeaf) {
-                // the leaf the ray leaves, solved alone (from the origin's own evaluation)
-                if (solve(ctx, s, ctx.tMin, tMax[lane])) {
-                    occluded[lane] = true;
+                // the leaf the ray leaves, solved alone (from the origin's own evaluation), last:
+                // when no other leaf blocked the ray (RayBatch.putOff)
+                if (!batch.putOff(lane, this, s)) {
+                    solveOwn(ctx, s, lane, tMax, occluded);
                 }
                 continue;
             }

@@ -47,6 +47,14 @@ public final class RayBatch {
     boolean[] occluded = new boolean[0];
     /** The lane whose origin the context holds ({@link #loadShadowRay}), or -1. */
     private int originLane = -1;
+    /**
+     * A batch of shadow rays while its traversal runs: each lane's own leaf (the one its ray leaves)
+     * is put off ({@link #putOff}) until every other leaf had its say ({@link #solvePutOff}).
+     */
+    private boolean puttingOff;
+    /** Per lane, the leaves whose own leaf was put off ({@code null}: none) and that leaf. */
+    ClippingLeaves[] ownLeaves = new ClippingLeaves[0];
+    int[] ownLeaf = new int[0];
     /** A batch of one: a single ray of a gathered packet ({@code SceneIntersector.closestHit} with a packet). */
     final double[] oneRay = new double[6], oneNormal = new double[3];
     final Hit[] oneHit = {new Hit()}, oneFrom = new Hit[1];
@@ -84,6 +92,8 @@ public final class RayBatch {
         at = new SurfacePoint[c];
         normal = new double[3 * c];
         occluded = new boolean[c];
+        ownLeaves = new ClippingLeaves[c];
+        ownLeaf = new int[c];
         capacity = c;
     }
 
@@ -95,6 +105,7 @@ public final class RayBatch {
         ensure(n);
         count = n;
         originLane = -1;
+        puttingOff = false;
         this.tMin = tMin;
         for (int i = 0; i < n; i++) {
             int o = 6 * i, f = FRAME * i;
@@ -125,8 +136,44 @@ public final class RayBatch {
             normal[3 * i + 1] = normals[3 * i + 1];
             normal[3 * i + 2] = normals[3 * i + 2];
             occluded[i] = false;
+            ownLeaves[i] = null;
         }
         originLane = -1;
+        puttingOff = true;
+    }
+
+    /**
+     * Puts off the search of lane {@code i}'s own leaf {@code s} of {@code leaves} (the leaf its shadow
+     * ray leaves, reached by its traversal, not proven behind it) while the batch's traversal runs;
+     * false when it must be solved now.
+     * That leaf is the nearest on the ray and its search the dearest (the ray starts on it, where a
+     * surface curving toward the light may meet the ray again), and a ray that another leaf blocks
+     * needs no answer from it: the answer, blocked or not, is the same in any order.
+     */
+    boolean putOff(int i, ClippingLeaves leaves, int s) {
+        if (!puttingOff) {
+            return false;
+        }
+        ownLeaves[i] = leaves;
+        ownLeaf[i] = s;
+        return true;
+    }
+
+    /**
+     * After the traversal of a batch of shadow rays: the own leaves {@linkplain #putOff put off},
+     * solved now for the lanes no other leaf blocked (as they would have been when reached).
+     */
+    void solvePutOff(TraceContext ctx) {
+        puttingOff = false;
+        for (int i = 0; i < count; i++) {
+            ClippingLeaves leaves = ownLeaves[i];
+            if (leaves != null) {
+                ownLeaves[i] = null;
+                if (!occluded[i]) {
+                    leaves.solveOwn(ctx, ownLeaf[i], i, tMax, occluded);
+                }
+            }
+        }
     }
 
     /**
@@ -151,6 +198,7 @@ public final class RayBatch {
     void endShadows(TraceContext ctx) {
         ctx.originLeaf = -1;
         originLane = -1;
+        puttingOff = false;
     }
 
     /**

@@ -326,6 +326,7 @@ public final class SceneIntersector {
         try {
             ((Bvh) accel).occludedAllIn(packet, batch.traversal, n, tMin, batch.tMax, leaves.anyLanes(), ctx,
                     batch.live, batch.reached, batch.occluded);
+            batch.solvePutOff(ctx);
         } finally {
             batch.endShadows(ctx);
         }

@@ -67,7 +67,7 @@ class BatchTracingTest {
             light = new double[] {p.x(), p.y(), p.z()};
         }
         SceneIntersector si = job.intersector();
-        TraceContext camera = si.newContext(), ctx = si.newContext(), alone = si.newContext();
+        TraceContext camera = si.newContext(), ctx = si.newContext(), alone = si.newContext(), plain = si.newContext();
         int side = RenderWorker.PACKET, n = side * side;
         double[] rays = new double[6 * n], shadowRays = new double[6 * n], normals = new double[3 * n];
         Hit[] hits = new Hit[n], from = new Hit[n];
@@ -124,6 +124,13 @@ class BatchTracingTest {
                             shadowRays[q + 3], shadowRays[q + 4], shadowRays[q + 5], 0, 1 - 1e-9);
                     assertEquals(one, blocked[j], model + " (" + kernel.description() + "): shadow ray " + j
                             + " of the packet at (" + x0 + ", " + y0 + ")");
+                    // and as its own traversal answers it, its own leaf met in near-first order (a batch
+                    // puts that leaf off until the others had their say, RayBatch.putOff)
+                    boolean ownTraversal = si.occludedLeaving(plain, null, from[j], at[j], normals[3 * j],
+                            normals[3 * j + 1], normals[3 * j + 2], shadowRays[q], shadowRays[q + 1],
+                            shadowRays[q + 2], shadowRays[q + 3], shadowRays[q + 4], shadowRays[q + 5], 0, 1 - 1e-9);
+                    assertEquals(ownTraversal, blocked[j], model + " (" + kernel.description() + "): shadow ray " + j
+                            + " of the packet at (" + x0 + ", " + y0 + ") by its own traversal");
                     shadowCount++;
                     blockedCount += one ? 1 : 0;
                 }
