@@ -337,6 +337,20 @@ public final class TraceContext {
     }
 
     /** Starts a closest-hit query: no hit yet. */
+    /**
+     * Forgets what earlier queries left behind that could change the work of later ones (never
+     * their answers): {@link OriginLeaf}'s memory of failed proofs and the last evaluations kept
+     * for reuse. A context reused for another render then works as a new one would (the render's
+     * work counts repeat to the unit on one thread).
+     */
+    public void forgetHistory() {
+        java.util.Arrays.fill(originFailed, 0);
+        java.util.Arrays.fill(originSkipped, 0);
+        evalPatch = -1;
+        hitEvalPatch = -1;
+        originLeaf = -1;
+    }
+
     void beginClosestHit(double tMin) {
         this.tMin = tMin;
         anyHit = false;

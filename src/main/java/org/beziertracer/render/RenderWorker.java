@@ -4,6 +4,7 @@ import java.util.Arrays;
 
 import org.beziertracer.accel.RayPacket;
 import org.beziertracer.intersect.SceneIntersector;
+import org.beziertracer.intersect.TraceContext;
 import org.beziertracer.math.LaneKernel;
 
 /**
@@ -120,7 +121,7 @@ final class RenderWorker {
     }
 
     /** The tracer's query context (tests read its work counters). */
-    org.beziertracer.intersect.TraceContext context() {
+    TraceContext context() {
         return tracer.context();
     }
 
@@ -139,6 +140,18 @@ final class RenderWorker {
         pixels[2 * n + 1] = y;
         samples[n] = s;
         return n + 1;
+    }
+
+    /**
+     * Makes this worker's query contexts work as new ones would ({@link TraceContext#forgetHistory}):
+     * for a worker taken over from a closed session, so that a render's work does not depend on the
+     * renders its worker served before.
+     */
+    void forgetHistory() {
+        tracer.context().forgetHistory();
+        if (pathTracer != null) {
+            pathTracer.context().forgetHistory();
+        }
     }
 
     /**

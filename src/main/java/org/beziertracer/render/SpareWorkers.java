@@ -14,8 +14,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p>A worker left here holds no scene (its threads {@linkplain RenderWorker#release release}
  * it after every pass), only its scratch, so the spares keep no model alive; at most {@link #LIMIT}
  * are kept. A worker is reused only for a job it {@linkplain RenderWorker#fits fits} (the kernel of
- * its contexts), as a session's own thread reuses its worker for the session's next render.
- * Thread-safe.
+ * its contexts), and it first forgets what its earlier renders left in its contexts that could
+ * change the work (not the answers) of the next ({@link RenderWorker#forgetHistory}), so a
+ * one-thread render counts the same work as on new threads. Thread-safe.
  */
 final class SpareWorkers {
     private SpareWorkers() {}
@@ -34,6 +35,7 @@ final class SpareWorkers {
             if (w.fits(job) && SPARE.remove(w)) {
                 COUNT.decrementAndGet();
                 REUSES.incrementAndGet();
+                w.forgetHistory();
                 return w;
             }
         }

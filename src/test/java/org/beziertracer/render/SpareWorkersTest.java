@@ -5,9 +5,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+
 import org.beziertracer.math.Kernels;
 import org.beziertracer.math.LaneKernel;
+import org.beziertracer.math.Vec3;
+import org.beziertracer.model.PointLight;
 import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.model.io.SceneFiles;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -43,6 +51,51 @@ class SpareWorkersTest {
         RenderWorker w = new RenderWorker(job(scalar).intersector());
         assertTrue(w.fits(job(scalar)));
         assertFalse(w.fits(job(simd)), "a scalar worker must not serve a SIMD job");
+    }
+
+    /**
+     * A one-thread render on a reused worker counts the work a new worker counts, also after the
+     * worker served renders of other scenes and of the same one (their shadow rays fill OriginLeaf's
+     * per-thread memory of failed proofs, which changes later work, never answers).
+     */
+    @Test
+    void aReusedWorkerCountsTheWorkOfANewOne() throws InterruptedException {
+        RenderJob job = teapotWithShadows();
+        for (String other : new String[] {"curved", "wavy10", "teapot-room"}) {
+            Renderer.renderOnce(RenderJob.prepare(SceneFiles.load(other).scene(), job.settings(), job.options()));
+        }
+        Renderer.renderOnce(job);
+        waitForSpares();
+        int before = SpareWorkers.reuses();
+        FrameStats reused = Renderer.renderOnce(job).stats();
+        assertTrue(SpareWorkers.reuses() > before, "the render's thread took a spare worker");
+        assertEquals(freshWorker(job).work(), reused.work(), "the work of a new worker");
+        assertTrue(reused.shadowRays() > 1000, "shadow rays: " + reused.shadowRays());
+    }
+
+    private static RenderJob teapotWithShadows() {
+        SceneDocument doc = SceneFiles.load("teapot");
+        Scene scene = doc.scene().toBuilder().lights(List.of(new PointLight(new Vec3(-200, -350, 450)))).build();
+        RenderSettings s = doc.settings();
+        RenderSettings settings = new RenderSettings(160, 120, 1, s.sampler(), s.method(), s.bvh(), "phong",
+                s.checker(), true, s.maxDepth());
+        return RenderJob.prepare(scene, settings, RenderOptions.defaults().withThreads(1).withProgressive(false))
+                .withCamera(Camera.lookAt(new Vec3(-150, -420, 260), new Vec3(10, 0, 55), new Vec3(0, 0, 1), 40));
+    }
+
+    /** The frame's stats rendered tile by tile by a new {@link RenderWorker}, as the session's thread renders it. */
+    private static FrameStats freshWorker(RenderJob job) {
+        List<int[]> tiles = RenderSession.tiles(job.width(), job.height(), job.options().tileSize());
+        List<PassPlan.Pass> passes = PassPlan.of(false, job.sampler(), 1);
+        RenderState st = new RenderState(0, job, FrameSink.NONE, new AtomicInteger(0),
+                new ProgressCounter(RenderProgress.NONE, 0, passes, tiles));
+        RenderWorker worker = new RenderWorker(job.intersector());
+        for (PassPlan.Pass pass : passes) {
+            for (int[] t : tiles) {
+                assertTrue(worker.renderTile(st, pass, t[0], t[1], t[2], t[3], false));
+            }
+        }
+        return st.stats();
     }
 
     /** The threads of a closed session leave their workers as they end, just after close() returns. */
