@@ -82,6 +82,10 @@ public final class SparkRender {
         } else if (!conf.contains("spark.master")) {
             conf.setMaster("local[*]");
         }
+        if (conf.get("spark.master").startsWith("local")) {
+            // an embedded master needs no network: the driver listens on the loopback address only
+            conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1");
+        }
         try (JavaSparkContext sc = new JavaSparkContext(conf)) {
             return render(sc, source, doc, folder, a.output(), jobName(a.job()), tiles, out);
         } catch (RuntimeException | IOException e) {
