@@ -21,6 +21,7 @@ final class OutputFolder {
     OutputFolder(String uri) throws IOException {
         URI u = URI.create(uri);
         this.fs = FileSystem.get(u, new Configuration());
+        fs.setWriteChecksum(false); // no .NAME.crc beside each file on file:// (other file systems keep their own)
         this.root = new Path(u);
     }
 

@@ -84,7 +84,8 @@ public final class SparkRender {
         }
         if (conf.get("spark.master").startsWith("local")) {
             // an embedded master needs no network: the driver listens on the loopback address only
-            conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1");
+            conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1")
+                    .setIfMissing("spark.log.level", "WARN");
         }
         try (JavaSparkContext sc = new JavaSparkContext(conf)) {
             return render(sc, source, doc, folder, a.output(), jobName(a.job()), tiles, out);
@@ -116,6 +117,7 @@ public final class SparkRender {
             RenderTile task = new RenderTile(broadcast, job, output, threads, sc.getConf().get(FAIL_ONCE_KEY, null));
             rendered = sc.parallelize(todo, todo.size()).map(task).reduce(Integer::sum);
         }
+        progress.finish(todo.size());
         String pattern = doc.output() != null ? doc.output().getFileName().toString() : FrameAssembler.defaultPattern(job);
         FrameAssembler assembler = new FrameAssembler(folder, job, pattern, doc.scene().settings().width(),
                 doc.scene().settings().height());
@@ -125,8 +127,8 @@ public final class SparkRender {
                 frames++;
             }
         }
-        out.printf(Locale.ROOT, "%d tiles rendered, %d already there; %d frames assembled in %s%n", rendered,
-                total - todo.size(), frames, output);
+        out.printf(Locale.ROOT, "%d tiles rendered, %d already there; %d frames assembled in %s (%.2f tiles/s)%n",
+                rendered, total - todo.size(), frames, output, progress.tilesPerSecond());
         out.flush();
         return 0;
     }
