@@ -89,10 +89,20 @@ public final class SparkRender {
         }
         try (JavaSparkContext sc = new JavaSparkContext(conf)) {
             return render(sc, source, doc, folder, a.output(), jobName(a.job()), tiles, out);
-        } catch (RuntimeException | IOException e) {
-            err.println(PREFIX + Failures.describe(e));
+        } catch (Exception e) { // Spark's SparkException (a failed stage) is checked but thrown undeclared
+            err.println(PREFIX + failure(e));
             return 1;
         }
+    }
+
+    /** One line for a failed run: our own messages as the CLI gives them, Spark's first line otherwise. */
+    static String failure(Exception e) {
+        if (e instanceof IllegalArgumentException || e instanceof IOException || e.getMessage() == null) {
+            return Failures.describe(e);
+        }
+        String first = e.getMessage().lines().findFirst().orElse("").strip();
+        return "the Spark job failed (see the executors' logs): "
+                + (first.length() > 300 ? first.substring(0, 300) + "…" : first);
     }
 
     private static int render(JavaSparkContext sc, JobSource source, JobDocument doc, OutputFolder folder,
