@@ -44,6 +44,10 @@ public final class SparkRender {
 
     /** Runs the application; returns the exit code (0, 1 for a bad job or a failed run, 2 for bad usage). */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h"))) {
+            out.println(USAGE + "\nRenders a job file as (frame, tile) Spark tasks into OUT_URI (docs/spark.md).");
+            return 0;
+        }
         Arguments a;
         try {
             a = Arguments.parse(args);
