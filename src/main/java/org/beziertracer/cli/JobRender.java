@@ -3,29 +3,23 @@ package org.beziertracer.cli;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Method;
-import org.beziertracer.model.CameraSpec;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.FramePattern;
 import org.beziertracer.model.io.JobDocument;
 import org.beziertracer.model.io.JobFiles;
-import org.beziertracer.model.io.ModelFormatException;
-import org.beziertracer.render.Camera;
 import org.beziertracer.render.FrameSink;
-import org.beziertracer.render.Integrator;
+import org.beziertracer.render.JobFrames;
+import org.beziertracer.render.TilePixels;
 import org.beziertracer.render.PixelWindow;
 import org.beziertracer.render.RenderJob;
 import org.beziertracer.render.RenderOptions;
 import org.beziertracer.render.RenderProgress;
-import org.beziertracer.render.RenderResult;
 import org.beziertracer.render.RenderSession;
-import org.beziertracer.render.ToneMap;
 
 /**
  * {@code render JOB.json} (issue 37): reads the job file, checks everything (frames, pieces, output,
@@ -65,49 +59,34 @@ final class JobRender {
             throw new IllegalArgumentException(doc.output() + ": several frames need a # in the file name for the "
                     + "frame number (e.g. frame-####.png)");
         }
+        if (cmd.seed != null) {
+            doc = doc.withSeed(cmd.seed);
+        }
+        cmd.jobTracer = doc.tracer();
+        doc = doc.withTracer(cmd.tracer());
         RenderSettings settings = cmd.settings(doc.scene().settings());
         RenderCommand.checkMemory(settings);
         PixelWindow window = cmd.pieceOptions.window(settings.width(), settings.height());
         Scene scene = cmd.withLights(doc.scene().scene());
         int threadCount = cmd.threadCount();
         RenderOptions options = cmd.options(threadCount).withSeed(doc.seed());
+        JobFrames.cameras(doc, scene, settings, file.toString());
         HeapBudget.require(cmd.model, scene, RenderJob.intersectOptions(settings, options));
-        RenderJob job = RenderJob.prepare(scene, settings, options).withWindow(window);
-        List<Camera> cameras = cameras(doc, job.camera(), file);
-        try (ProgressBarDisplay bar = cmd.progressBar(cameras.size());
+        JobFrames frames = new JobFrames(doc, scene, settings, options, file.toString());
+        try (ProgressBarDisplay bar = cmd.progressBar(frames.frameCount());
              RenderSession session = new RenderSession(threadCount, FrameSink.NONE,
                      bar == null ? RenderProgress.NONE : bar)) {
-            for (int k = 0; k < cameras.size(); k++) {
-                RenderResult result = session.render(RenderCommand.withDefaultLight(job.withCamera(cameras.get(k)), scene));
-                int[] argb = options.path().integrator() == Integrator.PATH
-                        ? ToneMap.argb(result.film(), window, cmd.exposure) : result.argb();
-                Path out = doc.outputOf(doc.firstFrame() + k);
+            for (int f = doc.firstFrame(); f <= doc.lastFrame(); f++) {
+                TilePixels piece = frames.render(session, f, window);
+                Path out = doc.outputOf(f);
                 Path parent = out.toAbsolutePath().getParent();
                 if (parent != null) {
                     Files.createDirectories(parent);
                 }
-                PngWriter.write(out, window.width(), window.height(), argb);
+                PngWriter.write(out, window.width(), window.height(), piece.argb());
             }
         }
         return 0;
-    }
-
-    /** The camera of every frame to render, each checked before the first is rendered. */
-    static List<Camera> cameras(JobDocument doc, Camera base, Path file) {
-        CameraSpec spec = new CameraSpec(base.eye(), base.target(), base.up(), base.fovDegrees(), base.orthoWidth());
-        List<Camera> out = new ArrayList<>();
-        for (int f = doc.firstFrame(); f <= doc.lastFrame(); f++) {
-            if (doc.camera() == null) {
-                out.add(base);
-                continue;
-            }
-            try {
-                out.add(new Camera(doc.camera().at(f, spec)));
-            } catch (IllegalArgumentException e) {
-                throw new ModelFormatException(file.toString(), "camera: frame " + f + ": " + e.getMessage());
-            }
-        }
-        return out;
     }
 
     /** Options that do not go with a job file: one line naming the first. */

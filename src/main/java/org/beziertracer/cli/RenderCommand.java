@@ -24,6 +24,8 @@ import org.beziertracer.render.DefaultLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.JobFiles;
+import org.beziertracer.model.io.JobTracer;
+import org.beziertracer.render.JobFrames;
 import org.beziertracer.model.io.SceneFiles;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Camera;
@@ -78,17 +80,21 @@ final class RenderCommand implements Callable<Integer> {
             description = "PNG to write (atomically), or .pfm for the linear image; required unless --pixel")
     Path output;
 
-    @Option(names = "--integrator", paramLabel = "whitted|path", defaultValue = "whitted",
-            description = "Whitted ray tracing or physically based path tracing (default: ${DEFAULT-VALUE})")
+    @Option(names = "--integrator", paramLabel = "whitted|path",
+            description = "Whitted ray tracing or physically based path tracing (default: the job's, else whitted)")
     String integrator;
 
-    @Option(names = "--clamp", paramLabel = "X", defaultValue = "0",
+    @Option(names = "--clamp", paramLabel = "X",
             description = "path tracer: scale each sample down so no channel exceeds X, against fireflies (0 = off, the default)")
-    double clamp;
+    Double clamp;
 
-    @Option(names = "--exposure", paramLabel = "EV", defaultValue = "0",
-            description = "path tracer: exposure in stops before the ACES tone curve of the PNG (default: ${DEFAULT-VALUE})")
-    double exposure;
+    @Option(names = "--exposure", paramLabel = "EV",
+            description = "path tracer: exposure in stops before the ACES tone curve of the PNG (default: 0)")
+    Double exposure;
+
+    @Option(names = "--seed", paramLabel = "N",
+            description = "seed of the jittered and adaptive samplers, a whole number (default: the job's, else 1)")
+    Long seed;
 
     @Option(names = "--size", paramLabel = "WxH", description = "image size, e.g. 800x600 (default: the scene's)")
     String size;
@@ -174,6 +180,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "no progress bar (shown on standard error only when it is a terminal)")
     boolean quiet;
 
+    /** A job file's integrator settings, under the command line's ({@link #tracer()}); none without a job. */
+    JobTracer jobTracer = JobTracer.NONE;
+
     /** Samples of one frame (width × height × spp), the progress bar's first total. */
     private long samplesPerFrame;
 
@@ -240,28 +249,46 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The engine options the command line asks for. */
     RenderOptions options(int threadCount) {
-        return RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
+        RenderOptions o = RenderOptions.defaults().withThreads(threadCount).withProgressive(false)
                 .withFilter(PixelFilter.parse(filter)).withTessellate(tessellate)
                 .withKernel("auto".equalsIgnoreCase(kernel) ? Kernels.best() : Kernels.named(kernel))
-                .withAnalysis(analysisOptions.settings()).withPath(pathOptions());
+                .withAnalysis(analysisOptions.settings()).withPath(JobFrames.pathOptions(tracer()));
+        return seed == null ? o : o.withSeed(seed);
     }
 
-    private boolean pathTraced() { return Integrator.parse(integrator) == Integrator.PATH; }
+    private boolean pathTraced() { return tracer().pathTraced(); }
 
-    /** The integrator and the path tracer's settings from --integrator, --depth and --clamp. */
-    private PathOptions pathOptions() {
-        PathOptions p = PathOptions.defaults().withIntegrator(Integrator.parse(integrator));
-        if (p.integrator() != Integrator.PATH) {
-            return p;
+    /**
+     * The integrator and the path tracer's settings: {@code --integrator}, {@code --depth} (for the path
+     * tracer), {@code --clamp} and {@code --exposure} over a job's, each checked with one line.
+     */
+    JobTracer tracer() {
+        String i = integrator != null ? Integrator.parse(integrator).label() : jobTracer.integrator();
+        boolean path = "path".equals(i);
+        if (!path && (clamp != null || exposure != null)) {
+            throw new IllegalArgumentException("--clamp and --exposure need --integrator path");
         }
-        if (depth != null) {
-            if (depth < 1 || depth > PathOptions.MAX_DEPTH) {
-                throw new IllegalArgumentException("--depth must be 1.." + PathOptions.MAX_DEPTH
-                        + " for the path tracer, got " + depth);
-            }
-            p = p.withMaxDepth(depth);
+        if (!path) {
+            return new JobTracer(i, null, null, null);
         }
-        return p.withClamp(clamp);
+        if (depth != null && (depth < 1 || depth > PathOptions.MAX_DEPTH)) {
+            throw new IllegalArgumentException("--depth must be 1.." + PathOptions.MAX_DEPTH
+                    + " for the path tracer, got " + depth);
+        }
+        if (clamp != null && (!(clamp >= 0) || !Double.isFinite(clamp))) {
+            throw new IllegalArgumentException("--clamp must be a finite number >= 0 (0 = off), got " + clamp);
+        }
+        if (exposure != null && (!Double.isFinite(exposure) || Math.abs(exposure) > JobTracer.MAX_EXPOSURE)) {
+            throw new IllegalArgumentException("--exposure must be -64..64 stops, got " + exposure);
+        }
+        return new JobTracer(i, depth != null ? depth : jobTracer.pathDepth(), clamp != null ? clamp : jobTracer.clamp(),
+                exposure != null ? exposure : jobTracer.exposure());
+    }
+
+    /** Stops before the path tracer's tone curve. */
+    double exposure() {
+        JobTracer t = tracer();
+        return t.exposure() == null ? 0 : t.exposure();
     }
 
     /**
@@ -273,7 +300,7 @@ final class RenderCommand implements Callable<Integer> {
         if (isPfm(output)) {
             AtomicFiles.writeBytes(output, out -> out.write(Pfm.encode(film, window)));
         } else if (options.path().integrator() == Integrator.PATH) {
-            PngWriter.write(output, window.width(), window.height(), ToneMap.argb(film, window, exposure));
+            PngWriter.write(output, window.width(), window.height(), ToneMap.argb(film, window, exposure()));
         } else {
             PngWriter.write(output, window.width(), window.height(), result.argb());
         }
@@ -298,16 +325,7 @@ final class RenderCommand implements Callable<Integer> {
                 && !isPfm(output)) {
             throw new IllegalArgumentException(output + ": the output must be a .png (or .pfm) file");
         }
-        Integrator.parse(integrator);
-        if (!(clamp >= 0) || !Double.isFinite(clamp)) {
-            throw new IllegalArgumentException("--clamp must be a finite number >= 0 (0 = off), got " + clamp);
-        }
-        if (!Double.isFinite(exposure) || Math.abs(exposure) > 64) {
-            throw new IllegalArgumentException("--exposure must be -64..64 stops, got " + exposure);
-        }
-        if ((clamp != 0 || exposure != 0) && !pathTraced()) {
-            throw new IllegalArgumentException("--clamp and --exposure need --integrator path");
-        }
+        tracer();
         if (pixel != null && pathTraced()) {
             throw new IllegalArgumentException("--pixel traces the Whitted renderer; it does not take --integrator path");
         }
@@ -342,14 +360,9 @@ final class RenderCommand implements Callable<Integer> {
         return scene.toBuilder().lights(list).build();
     }
 
-    /**
-     * {@code job} lit by the desktop app's default light when the scene has none (not the renderer's
-     * light at the eye); the path tracer keeps its own rule (environment and area lights count as light).
-     */
+    /** {@link JobFrames#withDefaultLight}. */
     static RenderJob withDefaultLight(RenderJob job, Scene scene) {
-        return scene.lights().isEmpty() && job.options().path().integrator() != Integrator.PATH
-                ? job.withLights(List.of(new PointLight(DefaultLight.position(job.camera().spec(), scene.bounds()))))
-                : job;
+        return JobFrames.withDefaultLight(job, scene);
     }
 
     /** The same view rendered with the method of {@code --difference-to}. */

@@ -97,12 +97,21 @@ public final class Film {
 
     /** A copy of the averaged linear RGB image, {@code [3 * (y * width + x) + c]}. */
     public float[] linearRgb() {
-        float[] out = new float[sum.length];
+        return linearRgb(window());
+    }
+
+    /**
+     * A copy of the averaged linear RGB of the pixels of {@code w} (image coordinates, inside this film's
+     * window), {@code [3 * ((y − w.y0) * w.width + (x − w.x0)) + c]}.
+     */
+    public float[] linearRgb(PixelWindow w) {
+        int ww = w.width(), wh = w.height();
+        float[] out = new float[3 * ww * wh];
         float[] px = new float[3];
-        for (int y = 0; y < height; y++) {
-            for (int x = 0; x < width; x++) {
-                pixel(x0 + x, y0 + y, px);
-                System.arraycopy(px, 0, out, 3 * (y * width + x), 3);
+        for (int y = 0; y < wh; y++) {
+            for (int x = 0; x < ww; x++) {
+                pixel(w.x0() + x, w.y0() + y, px);
+                System.arraycopy(px, 0, out, 3 * (y * ww + x), 3);
             }
         }
         return out;

@@ -20,15 +20,23 @@ public final class Pfm {
 
     /** The pixels of {@code window} (image coordinates, inside the film's) as a PFM file. */
     public static byte[] encode(Film film, PixelWindow window) {
-        int w = window.width(), h = window.height();
+        return encode(window.width(), window.height(), film.linearRgb(window));
+    }
+
+    /**
+     * A {@code w × h} linear image as a PFM file; {@code rgb[3 * (y * w + x) + c]}, row 0 at the top (the
+     * file stores it last).
+     */
+    public static byte[] encode(int w, int h, float[] rgb) {
+        if (rgb.length != 3 * w * h) {
+            throw new IllegalArgumentException("expected " + 3 * w * h + " floats for " + w + "x" + h + ", got " + rgb.length);
+        }
         byte[] header = ("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
         ByteBuffer buf = ByteBuffer.allocate(header.length + 12 * w * h).order(ByteOrder.LITTLE_ENDIAN);
         buf.put(header);
-        float[] px = new float[3];
         for (int y = h - 1; y >= 0; y--) {
-            for (int x = 0; x < w; x++) {
-                film.pixel(window.x0() + x, window.y0() + y, px);
-                buf.putFloat(px[0]).putFloat(px[1]).putFloat(px[2]);
+            for (int k = 3 * y * w, end = k + 3 * w; k < end; k++) {
+                buf.putFloat(rgb[k]);
             }
         }
         return buf.array();

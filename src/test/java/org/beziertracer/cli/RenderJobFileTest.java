@@ -106,6 +106,58 @@ class RenderJobFileTest {
                 + " \"output\": \"f-#.png\"}");
     }
 
+    @Test
+    void aPathTracedJobIsTheRenderOfItsSceneWithThePathTracer() throws IOException {
+        scene();
+        Path job = job("{\"job\": 1, \"scene\": \"room.json\", \"seed\": 5, \"settings\": {\"spp\": 2,"
+                + " \"sampler\": \"jittered\", \"integrator\": \"path\", \"pathDepth\": 3, \"exposure\": 1},"
+                + " \"output\": \"p.png\"}");
+        Run r = Run.of("render", job.toString(), "--threads", "2");
+        assertEquals(0, r.code(), r.err());
+        Path alone = dir.resolve("alone.png");
+        Run one = Run.of("render", dir.resolve("room.json").toString(), "-o", alone.toString(), "--threads", "1",
+                "--spp", "2", "--sampler", "jittered", "--integrator", "path", "--depth", "3", "--exposure", "1",
+                "--seed", "5");
+        assertEquals(0, one.code(), one.err());
+        int[] fromJob = pixels(ImageIO.read(dir.resolve("p.png").toFile()));
+        assertArrayEquals(pixels(ImageIO.read(alone.toFile())), fromJob, "the job's path-traced frame");
+        Path whitted = dir.resolve("w.png");
+        assertEquals(0, Run.of("render", job.toString(), "--integrator", "whitted", "-o", whitted.toString()).code());
+        assertFalse(java.util.Arrays.equals(pixels(ImageIO.read(whitted.toFile())), fromJob),
+                "--integrator whitted overrides the job's path tracer");
+    }
+
+    @Test
+    void theSeedOptionChangesAJitteredRenderAndTheJobsSeedIsTheSameAsSeedOnTheCommandLine() throws IOException {
+        Path room = scene();
+        Path[] out = {dir.resolve("s1.png"), dir.resolve("s9.png"), dir.resolve("job9.png")};
+        assertEquals(0, Run.of("render", room.toString(), "-o", out[0].toString(), "--sampler", "jittered",
+                "--spp", "2").code());
+        assertEquals(0, Run.of("render", room.toString(), "-o", out[1].toString(), "--sampler", "jittered",
+                "--spp", "2", "--seed", "9").code());
+        Path job = job("{\"job\": 1, \"scene\": \"room.json\", \"seed\": 3, \"settings\": {\"spp\": 2,"
+                + " \"sampler\": \"jittered\"}, \"output\": \"job9.png\"}");
+        assertEquals(0, Run.of("render", job.toString(), "--seed", "9").code());
+        int[] s1 = pixels(ImageIO.read(out[0].toFile())), s9 = pixels(ImageIO.read(out[1].toFile()));
+        assertFalse(java.util.Arrays.equals(s1, s9), "another seed, other jitter");
+        assertArrayEquals(s9, pixels(ImageIO.read(out[2].toFile())), "--seed 9 replaces the job's seed 3");
+        Run bad = Run.of("render", room.toString(), "-o", out[0].toString(), "--seed", "x");
+        assertEquals(2, bad.code(), "a usage error");
+        assertTrue(UserMessages.checkOneLineOutput(bad.err()).contains("--seed: expected a whole number, found \"x\""),
+                bad.err());
+    }
+
+    @Test
+    void badIntegratorValuesOfAJobFailInOneLineNamingFileAndKey() throws IOException {
+        scene();
+        assertError("job.json: settings.integrator: unknown integrator 'photon'", "{\"job\": 1, \"scene\": \"room.json\","
+                + " \"settings\": {\"integrator\": \"photon\"}, \"output\": \"f.png\"}");
+        assertError("job.json: settings.exposure: needs \"integrator\": \"path\"", "{\"job\": 1, \"scene\": \"room.json\","
+                + " \"settings\": {\"exposure\": 1}, \"output\": \"f.png\"}");
+        assertError("--clamp and --exposure need --integrator path", "{\"job\": 1, \"scene\": \"room.json\","
+                + " \"output\": \"f.png\"}", "--clamp", "3");
+    }
+
     private void assertError(String expected, String json, String... options) throws IOException {
         Path job = job(json);
         String[] args = new String[2 + options.length];

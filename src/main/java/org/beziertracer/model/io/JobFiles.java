@@ -82,7 +82,8 @@ public final class JobFiles {
         }
         SceneDocument scene = scene(root.require("scene"), baseDir);
         RenderSettings settings = root.has("settings")
-                ? SceneReader.settings(root.get("settings"), scene.settings()) : scene.settings();
+                ? SceneReader.settings(root.get("settings"), scene.settings(), TRACER_KEYS) : scene.settings();
+        JobTracer tracer = root.has("settings") ? tracer(root.get("settings")) : JobTracer.NONE;
         try {
             methods.accept(settings.method());
         } catch (IllegalArgumentException e) {
@@ -102,8 +103,31 @@ public final class JobFiles {
         if (root.has("output")) {
             output = output(root.get("output"), baseDir, last > first);
         }
-        return new JobDocument(new SceneDocument(scene.scene(), settings, scene.notes()), seed, camera, first, last,
+        return new JobDocument(new SceneDocument(scene.scene(), settings, scene.notes()), tracer, seed, camera, first, last,
                 output);
+    }
+
+    /** The integrator keys of a job's {@code settings}, beside a scene's render keys. */
+    private static final String[] TRACER_KEYS = {"integrator", "pathDepth", "clamp", "exposure"};
+
+    /** The integrator keys of {@code settings}; an error names the key that is wrong. */
+    private static JobTracer tracer(JsonNode settings) {
+        JsonNode i = settings.get("integrator"), d = settings.get("pathDepth"), c = settings.get("clamp"),
+                e = settings.get("exposure");
+        String integrator = i == null ? null : SceneReader.build(i, () -> new JobTracer(i.asString(), null, null, null))
+                .integrator();
+        Integer depth = d == null ? null : SceneReader.build(d, () -> new JobTracer("path", d.asInt(), null, null))
+                .pathDepth();
+        Double clamp = c == null ? null : SceneReader.build(c, () -> new JobTracer("path", null, c.asDouble(), null))
+                .clamp();
+        Double exposure = e == null ? null
+                : SceneReader.build(e, () -> new JobTracer("path", null, null, e.asDouble())).exposure();
+        for (JsonNode n : new JsonNode[] {d, c, e}) {
+            if (n != null && !"path".equals(integrator)) {
+                throw n.error("needs \"integrator\": \"path\" in the same settings");
+            }
+        }
+        return new JobTracer(integrator, depth, clamp, exposure);
     }
 
     private static void checkVersion(JsonNode root) {

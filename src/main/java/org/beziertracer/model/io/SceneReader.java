@@ -457,12 +457,23 @@ final class SceneReader {
         return settings(r, RenderSettings.defaults());
     }
 
-    /** As {@link #settings(JsonNode)}, each key overriding {@code base} (a job file's settings over its scene's). */
-    static RenderSettings settings(JsonNode r, RenderSettings base) {
-        r.object("width", "height", "spp", "sampler", "method", "bvh", "shading", "checker", "shadows", "maxDepth");
+    /** A scene file's render keys. */
+    private static final List<String> RENDER_KEYS = List.of("width", "height", "spp", "sampler", "method", "bvh",
+            "shading", "checker", "shadows", "maxDepth");
+
+    /**
+     * As {@link #settings(JsonNode)}, each key overriding {@code base} (a job file's settings over its
+     * scene's); {@code otherKeys} are allowed too and left to the caller.
+     */
+    static RenderSettings settings(JsonNode r, RenderSettings base, String... otherKeys) {
+        List<String> allowed = new ArrayList<>(RENDER_KEYS);
+        allowed.addAll(List.of(otherKeys));
+        r.object(allowed.toArray(new String[0]));
         RenderSettings all = base;
         for (String key : r.keys()) {
-            all = with(all, r.get(key), key);
+            if (RENDER_KEYS.contains(key)) {
+                all = with(all, r.get(key), key);
+            }
         }
         return all;
     }

@@ -112,4 +112,33 @@ class JobFilesTest {
         assertMessage("output: several frames need a #",
                 "{\"job\": 1, \"scene\": \"teapot\", \"frames\": \"1-3\", \"output\": \"a.png\"}");
     }
+
+    @Test
+    void theIntegratorAndThePathTracersSettingsAreReadFromTheSettings() {
+        JobDocument job = parse("{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"Path\","
+                + " \"pathDepth\": 7, \"clamp\": 4.5, \"exposure\": -1, \"spp\": 2}}");
+        assertEquals(new JobTracer("path", 7, 4.5, -1.0), job.tracer());
+        assertEquals(2, job.scene().settings().spp(), "the render keys beside them still apply");
+        assertEquals(JobTracer.NONE, parse("{\"job\": 1, \"scene\": \"teapot\"}").tracer());
+        assertEquals("whitted", parse("{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"whitted\"}}")
+                .tracer().integrator());
+    }
+
+    @Test
+    void badIntegratorValuesNameTheFileAndTheKey() {
+        assertMessage("job.json: settings.integrator: unknown integrator 'photon': expected whitted or path",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"photon\"}}");
+        assertMessage("job.json: settings.integrator: expected a string",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": 2}}");
+        assertMessage("job.json: settings.pathDepth: the path depth must be 1..1024, got 0",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"path\", \"pathDepth\": 0}}");
+        assertMessage("job.json: settings.clamp: the clamp must be a finite number >= 0",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"path\", \"clamp\": -1}}");
+        assertMessage("job.json: settings.exposure: the exposure must be -64..64 stops, got 65",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"integrator\": \"path\", \"exposure\": 65}}");
+        assertMessage("job.json: settings.clamp: needs \"integrator\": \"path\"",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"clamp\": 2}}");
+        assertMessage("job.json: settings: unknown key \"depth\"",
+                "{\"job\": 1, \"scene\": \"teapot\", \"settings\": {\"depth\": 2}}");
+    }
 }

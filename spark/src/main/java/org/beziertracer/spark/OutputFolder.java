@@ -1,0 +1,56 @@
+package org.beziertracer.spark;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.URI;
+
+import org.apache.hadoop.conf.Configuration;
+import org.apache.hadoop.fs.FileSystem;
+import org.apache.hadoop.fs.Path;
+
+/**
+ * The output folder of a job on any Hadoop file system ({@code file://}, {@code hdfs://}, {@code s3a://}):
+ * tiles under {@code tiles/}, frames at the top. Every file is written whole under a temporary name in the
+ * same folder and renamed into place, so a reader (a resumed run, the assembly) sees a file whole or not
+ * at all; a tile another attempt already renamed into place is kept (its bytes are the same).
+ */
+final class OutputFolder {
+    private final FileSystem fs;
+    private final Path root;
+
+    OutputFolder(String uri) throws IOException {
+        URI u = URI.create(uri);
+        this.fs = FileSystem.get(u, new Configuration());
+        fs.setWriteChecksum(false); // no .NAME.crc beside each file on file:// (other file systems keep their own)
+        this.root = new Path(u);
+    }
+
+    Path tile(String name) { return new Path(new Path(root, "tiles"), name); }
+
+    Path frame(String name) { return new Path(root, name); }
+
+    boolean exists(Path p) throws IOException { return fs.exists(p); }
+
+    byte[] read(Path p) throws IOException {
+        try (var in = fs.open(p)) {
+            return in.readAllBytes();
+        }
+    }
+
+    /**
+     * Writes {@code bytes} to {@code target} atomically (temporary name {@code .NAME.TAG.tmp}, then rename);
+     * when another attempt got there first, its file (the same bytes) is kept.
+     */
+    void writeAtomically(Path target, byte[] bytes, String tag) throws IOException {
+        Path tmp = new Path(target.getParent(), "." + target.getName() + "." + tag + ".tmp");
+        try (OutputStream out = fs.create(tmp, true)) {
+            out.write(bytes);
+        }
+        if (!fs.rename(tmp, target)) {
+            fs.delete(tmp, false);
+            if (!fs.exists(target)) {
+                throw new IOException("cannot rename " + tmp + " to " + target);
+            }
+        }
+    }
+}

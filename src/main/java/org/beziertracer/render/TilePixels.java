@@ -1,0 +1,96 @@
+package org.beziertracer.render;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+
+/**
+ * The finished pixels of a piece of a frame (issue 37): the 8-bit picture as {@code render} writes it to
+ * a PNG (the path tracer's tone map, or the Whitted renderer's clamp-and-encode) and the linear floats of
+ * its {@code .pfm}. A tile of a job carried between machines ({@link #toBytes}) and put into its frame by
+ * {@link FrameAssembly}.
+ *
+ * <p>Immutable by contract (the arrays are not copied; do not change them). Layouts, with
+ * {@code p = (y − window.y0) * window.width + (x − window.x0)}: {@code argb[p]}, {@code rgb[3 * p + c]}.
+ *
+ * @param window the pixels of the image this tile holds
+ * @param argb   opaque sRGB ARGB, row-major
+ * @param rgb    linear RGB floats, row-major
+ */
+public record TilePixels(PixelWindow window, int[] argb, float[] rgb) {
+
+    /** Start of the bytes of {@link #toBytes}: "BTT1". */
+    private static final int MAGIC = 0x42545431;
+
+    public TilePixels {
+        int n = window.width() * window.height();
+        if (argb.length != n || rgb.length != 3 * n) {
+            throw new IllegalArgumentException("a " + window.width() + "x" + window.height() + " tile needs " + n
+                    + " pixels and " + 3 * n + " floats, got " + argb.length + " and " + rgb.length);
+        }
+    }
+
+    /**
+     * The pixels of {@code window} of a finished render: tone mapped with {@code exposure} for the path
+     * tracer, as {@link RenderResult#argb()} otherwise (the {@code render} command's PNG).
+     */
+    public static TilePixels of(RenderResult result, PixelWindow window, Integrator integrator, double exposure) {
+        int[] argb = integrator == Integrator.PATH ? ToneMap.argb(result.film(), window, exposure)
+                : result.film().toArgb(window);
+        return new TilePixels(window, argb, result.film().linearRgb(window));
+    }
+
+    /** This tile as bytes: magic, window (4 ints), pixels, floats; big-endian. */
+    public byte[] toBytes() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream(16 * argb.length + 20);
+        try (DataOutputStream out = new DataOutputStream(bytes)) {
+            out.writeInt(MAGIC);
+            out.writeInt(window.x0());
+            out.writeInt(window.y0());
+            out.writeInt(window.x1());
+            out.writeInt(window.y1());
+            for (int p : argb) {
+                out.writeInt(p);
+            }
+            for (float f : rgb) {
+                out.writeFloat(f);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // a byte array does not fail
+        }
+        return bytes.toByteArray();
+    }
+
+    /**
+     * A tile from {@link #toBytes}.
+     *
+     * @throws IllegalArgumentException one line naming {@code name} when the bytes are not a whole tile
+     */
+    public static TilePixels fromBytes(byte[] bytes, String name) {
+        try (DataInputStream in = new DataInputStream(new ByteArrayInputStream(bytes))) {
+            if (bytes.length < 20 || in.readInt() != MAGIC) {
+                throw new IllegalArgumentException(name + ": not a tile file");
+            }
+            PixelWindow w = new PixelWindow(in.readInt(), in.readInt(), in.readInt(), in.readInt());
+            long n = (long) w.width() * w.height();
+            if (bytes.length != 20 + 16 * n) {
+                throw new IllegalArgumentException(name + ": a " + w.width() + "x" + w.height() + " tile needs "
+                        + (20 + 16 * n) + " bytes, the file has " + bytes.length);
+            }
+            int[] argb = new int[(int) n];
+            float[] rgb = new float[(int) (3 * n)];
+            for (int k = 0; k < argb.length; k++) {
+                argb[k] = in.readInt();
+            }
+            for (int k = 0; k < rgb.length; k++) {
+                rgb[k] = in.readFloat();
+            }
+            return new TilePixels(w, argb, rgb);
+        } catch (IOException e) {
+            throw new IllegalArgumentException(name + ": truncated tile file");
+        }
+    }
+}
