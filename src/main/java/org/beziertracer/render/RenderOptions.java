@@ -137,7 +137,7 @@ public record RenderOptions(int threads, int tileSize, boolean progressive, int 
     /** With the jittered and adaptive samplers' seed {@code s} (a job file's {@code seed}). */
     public RenderOptions withSeed(long s) {
         return new RenderOptions(threads, tileSize, progressive, passesPerFrame, filter, adaptiveThreshold, minAttenuation,
-                s, tessellate, kernel, analysis);
+                s, tessellate, kernel, analysis, path);
     }
 
     /** True in tessellated (triangle mesh) mode. */
