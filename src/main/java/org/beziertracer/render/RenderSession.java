@@ -176,9 +176,10 @@ public final class RenderSession implements AutoCloseable {
         List<int[]> tiles = tiles(region, job.options().tileSize());
         boolean progressive = job.options().progressive() && job.window().isWhole(job.width(), job.height());
         PathOptions path = job.options().path();
-        // A progressive path-traced render refines one sample a pass and shows every pass
+        // A progressive path-traced render refines one sample a pass and shows every pass; one with a
+        // time budget also takes one sample a pass, so it can stop close to the budget
         List<PassPlan.Pass> passes = PassPlan.of(progressive, job.sampler(), job.settings().spp(),
-                progressive && path.traced());
+                onePerPass(job.options().progressive(), path));
         RenderState st = new RenderState(gen, job, sink, generation, new ProgressCounter(progress, gen, passes, tiles));
         int workers = Math.min(job.options().threads(), poolSize);
         int perFrame = path.traced() ? 1 : job.options().passesPerFrame();
@@ -231,6 +232,11 @@ public final class RenderSession implements AutoCloseable {
             activeWorkers.decrementAndGet();
             latch.countDown();
         }
+    }
+
+    /** True when the extra samples come one a pass: a path-traced render that is progressive or has a time budget. */
+    static boolean onePerPass(boolean progressive, PathOptions path) {
+        return path.traced() && (progressive || path.budgetMillis() > 0);
     }
 
     /** True when a path-traced render with a time budget has spent it by the end of {@code pass} (an extra-sample pass). */
