@@ -439,7 +439,7 @@ public final class AppModel {
         public void opened(DocumentLoader.Loaded l) {
             Scene scene = l.document().scene();
             Settings s = RenderChoices.lightFor(RenderChoices.fromScene(settings.current(), l.document().settings()),
-                    !scene.lights().isEmpty());
+                    RenderChoices.hasOwnLight(scene));
             var camera = scene.camera();
             if (camera.isPresent()) {
                 s = s.with(Level.PERSPECTIVE, Settings.perspectiveOf(camera.get().fovDegrees()));

@@ -85,6 +85,16 @@ public final class RenderChoices {
     }
 
     /**
+     * True when {@code scene} brings light of its own: point or spot lights, area lights or an
+     * environment (the studio scene is lit by an area light and its sky alone; the path tracer then
+     * needs no placed light added).
+     */
+    public static boolean hasOwnLight(org.beziertracer.model.Scene scene) {
+        return !scene.lights().isEmpty() || !scene.spotLights().isEmpty() || !scene.areaLights().isEmpty()
+                || scene.environment().isPresent();
+    }
+
+    /**
      * {@code s} with the light for a newly opened scene: a scene with lights of its own is lit by
      * them; one without keeps the chosen placement, unless that was the scene's lights, which then
      * gives way to the default light (above left of the eye).

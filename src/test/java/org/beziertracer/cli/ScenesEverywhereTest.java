@@ -64,7 +64,7 @@ class ScenesEverywhereTest {
         Run r = Run.of("info", "kettle");
         assertEquals(1, r.code());
         assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus,"
-                + " trimmed-plate, wavy6, wavy10, curved, teapot-room) and not a"
+                + " trimmed-plate, wavy6, wavy10, curved, teapot-room, studio) and not a"
                 + " .bpt, .obj, .igs, .iges, .stp, .step or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
 
@@ -74,7 +74,7 @@ class ScenesEverywhereTest {
             String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
             assertTrue(help.contains("a .bpt, .obj, .igs, .iges, .stp, .step or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
                     + " torus, trimmed-plate,"
-                    + " wavy6, wavy10, curved, teapot-room"), help);
+                    + " wavy6, wavy10, curved, teapot-room, studio"), help);
         }
     }
 }
