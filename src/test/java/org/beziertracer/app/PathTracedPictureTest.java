@@ -182,6 +182,24 @@ class PathTracedPictureTest {
         app.close();
     }
 
+    @Test
+    void theStudioOpensLitByItsOwnAreaLightAndSky() {
+        FakeEngine engine = new FakeEngine();
+        AppModel app = new AppModel(engine, new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
+        app.view().resize(W, H, 1);
+        app.settings().replace(pathTraced(16));
+        app.files().openBuiltIn("studio");
+        assertEquals(58, app.document().scene().patchCount(), "teapot and teacup");
+        assertEquals(LightPlacement.SCENE, app.settings().current().light(), "its own light, no placed point light");
+        RenderRequest r = last(engine);
+        assertEquals(58, r.scene().patchCount());
+        assertEquals(null, r.lights(), "the scene's lights: one rect light and the sky");
+        assertTrue(r.pathTraced(), "still path traced");
+        app.files().openBuiltIn("teapot");
+        assertEquals(1, last(engine).lights().size(), "a model without lights gets the placed light again");
+        app.close();
+    }
+
     private static RenderRequest last(FakeEngine e) {
         return e.requests.get(e.requests.size() - 1);
     }

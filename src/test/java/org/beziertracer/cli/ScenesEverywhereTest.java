@@ -42,6 +42,18 @@ class ScenesEverywhereTest {
     }
 
     @Test
+    void renderPathTracesTheBuiltInStudioAndCountsItsSamplesASecond() throws IOException {
+        Path png = dir.resolve("studio.png");
+        Run r = Run.of("render", "studio", "--integrator", "path", "--size", "32x24", "--spp", "2", "--threads", "1",
+                "--stats", "-o", png.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Files.size(png) > 0, "the PNG is written");
+        assertTrue(r.out().contains("\"integrator\":\"path\""), r.out());
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\"samplesPerSecond\":([0-9.]+)").matcher(r.out());
+        assertTrue(m.find() && Double.parseDouble(m.group(1)) > 0, "samples a second: " + r.out());
+    }
+
+    @Test
     void traceOpensASceneFileAndNamesWhatEachRayHit() throws IOException {
         Path rays = dir.resolve("rays.txt");
         Files.writeString(rays, "0 0 30 0 0 -1\n0.5 0.5 5 0 0 -1\n");
