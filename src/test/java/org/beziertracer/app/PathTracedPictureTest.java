@@ -160,9 +160,7 @@ class PathTracedPictureTest {
     @Test
     void aTurnOfTheViewPreviewsOneSampleAndRefinesAgainWhenReleased() {
         FakeEngine engine = new FakeEngine();
-        AppModel app = new AppModel(engine, new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
-        app.view().resize(W, H, 1);
-        app.settings().replace(pathTraced(64));
+        AppModel app = pathTracedApp(engine, 64);
         assertEquals(64, last(engine).settings().spp(), "refining to the target");
         int before = engine.requests.size();
         app.pointer().pressed(5, 5);
@@ -185,9 +183,7 @@ class PathTracedPictureTest {
     @Test
     void theStudioOpensLitByItsOwnAreaLightAndSky() {
         FakeEngine engine = new FakeEngine();
-        AppModel app = new AppModel(engine, new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
-        app.view().resize(W, H, 1);
-        app.settings().replace(pathTraced(16));
+        AppModel app = pathTracedApp(engine, 16);
         app.files().openBuiltIn("studio");
         assertEquals(58, app.document().scene().patchCount(), "teapot and teacup");
         assertEquals(LightPlacement.SCENE, app.settings().current().light(), "its own light, no placed point light");
@@ -198,6 +194,14 @@ class PathTracedPictureTest {
         app.files().openBuiltIn("teapot");
         assertEquals(1, last(engine).lights().size(), "a model without lights gets the placed light again");
         app.close();
+    }
+
+    /** The app without a window (direct threads, {@code engine} recording), path traced to {@code spp}. */
+    private static AppModel pathTracedApp(FakeEngine engine, int spp) {
+        AppModel app = new AppModel(engine, new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
+        app.view().resize(W, H, 1);
+        app.settings().replace(pathTraced(spp));
+        return app;
     }
 
     private static RenderRequest last(FakeEngine e) {
