@@ -50,7 +50,7 @@ final class RenderState {
         this.film = new Film(job.filmWindow(),
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
-                job.options().seed());
+                job.options().seed(), path != null);
     }
 
     /** True once a newer render started or this one was cancelled (or failed). */
