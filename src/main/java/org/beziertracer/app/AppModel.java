@@ -226,15 +226,33 @@ public final class AppModel {
         }
     }
 
-    /** Starts a progressive render of the current state (coalesced; never renders here). */
+    /** True when a path-traced picture was shown as a one-sample preview during the gesture in progress. */
+    private boolean previewed;
+
+    /**
+     * Starts a progressive render of the current state (coalesced; never renders here). Path
+     * traced, while a gesture turns the view or drags points the picture is a one-sample preview;
+     * {@link #motionEnded} resumes refining.
+     */
     void render() {
         Picture p = view.picture();
         if (p != null && settings.current().on(Toggle.RAY_TRACE)) {
-            engine.submit(RenderRequest.of(document.scene(), view.camera(), view.view().framing(), settings.current(), p));
+            boolean preview = settings.current().pathTraced() && pointer != null && pointer.inGesture();
+            previewed |= preview;
+            engine.submit(RenderRequest.of(document.scene(), view.camera(), view.view().framing(), settings.current(), p,
+                    preview));
         }
         compareToClipping(p);
         checkContinuity();
         view.repaint();
+    }
+
+    /** A gesture ended: a path-traced picture shown as a preview during it refines again. */
+    void motionEnded() {
+        if (previewed) {
+            previewed = false;
+            render();
+        }
     }
 
     /** View → Continuity on: certify the model's borders (off the UI thread; once a model); off: drop them. */
@@ -421,7 +439,7 @@ public final class AppModel {
         public void opened(DocumentLoader.Loaded l) {
             Scene scene = l.document().scene();
             Settings s = RenderChoices.lightFor(RenderChoices.fromScene(settings.current(), l.document().settings()),
-                    !scene.lights().isEmpty());
+                    RenderChoices.hasOwnLight(scene));
             var camera = scene.camera();
             if (camera.isPresent()) {
                 s = s.with(Level.PERSPECTIVE, Settings.perspectiveOf(camera.get().fovDegrees()));

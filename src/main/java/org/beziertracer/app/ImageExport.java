@@ -18,12 +18,18 @@ import org.beziertracer.render.RenderResult;
 import org.beziertracer.render.RenderSession;
 import org.beziertracer.render.RenderOptions;
 import org.beziertracer.render.Failures;
+import org.beziertracer.render.Integrator;
+import org.beziertracer.render.PathOptions;
+import org.beziertracer.render.Pfm;
+import org.beziertracer.render.ToneMap;
 
 /**
- * File → Export Image…: asks for the size, samples per pixel and sampler, then for the file, and
- * renders the current model as seen now — same view, shading, method and light — off screen, on a
- * background task with a progress bar and Cancel in the status bar; the PNG is written atomically
- * (a cancelled or failed export leaves no file). The PNG is encoded by the desktop
+ * File → Export Image…: asks for the size, samples per pixel, sampler and integrator (Whitted, or
+ * the path tracer with an optional time budget), then for the file, and renders the current model
+ * as seen now — same view, shading, method and light — off screen, on a background task with a
+ * progress bar and Cancel in the status bar; the PNG (path traced: through {@link ToneMap}) or, for
+ * a {@code .pfm} file name, the linear image ({@link Pfm}) is written atomically (a cancelled or
+ * failed export leaves no file). The PNG is encoded by the desktop
  * ({@link ImageEncoder}; this layer has no image library). UI thread only.
  */
 public final class ImageExport {
@@ -45,13 +51,14 @@ public final class ImageExport {
 
     /** Asks what and where (two dialogs), then renders and writes off the UI thread. */
     public void export(ImageEncoder encoder) {
-        ExportOptions offer = last != null ? last : ExportOptions.first(app.view().width(), app.view().height());
+        ExportOptions offer = last != null ? last
+                : ExportOptions.first(app.view().width(), app.view().height(), app.settings().current());
         ExportOptions o = app.dialogs().exportOptions(offer);
         if (o == null) {
             return;
         }
         last = o;
-        Path p = app.dialogs().chooseSave("Export image", "png");
+        Path p = app.dialogs().chooseSave("Export image", "png", "pfm");
         if (p != null) {
             exportTo(p, o, encoder);
         }
@@ -67,7 +74,12 @@ public final class ImageExport {
         app.status().task(task);
         io.submit(task, () -> {
             RenderResult r = render(scene, camera, lights, s, o, task);
-            AtomicFiles.writeBytes(p, encoder.encode(o.width(), o.height(), r.argb()));
+            if (isPfm(p)) {
+                AtomicFiles.writeBytes(p, out -> out.write(Pfm.encode(r.film(), r.window())));
+            } else {
+                int[] argb = o.pathTraced() ? ToneMap.argb(r.film(), 0) : r.argb();
+                AtomicFiles.writeBytes(p, encoder.encode(o.width(), o.height(), argb));
+            }
             return p;
         }, done -> {
             app.status().endTask(task);
@@ -88,7 +100,8 @@ public final class ImageExport {
         RenderSettings base = RenderChoices.renderSettings(s, o.width(), o.height());
         RenderSettings rs = new RenderSettings(o.width(), o.height(), o.spp(), o.sampler().label(), base.method(),
                 base.bvh(), base.shading(), base.checker(), base.shadows(), base.maxDepth());
-        RenderOptions options = RenderOptions.defaults().withProgressive(false).withTessellate(s.tessellate());
+        RenderOptions options = RenderOptions.defaults().withProgressive(false).withTessellate(s.tessellate())
+                .withPath(pathOptions(o));
         SceneIntersector si = SceneIntersector.build(scene, RenderChoices.intersectOptions(s));
         RenderJob job = new RenderJob(si, new Camera(camera), rs, options, lights);
         int tile = options.tileSize();
@@ -109,10 +122,24 @@ public final class ImageExport {
         }
     }
 
+    /** The integrator of an export: Whitted, or the path tracer's defaults with the export's time budget. */
+    static PathOptions pathOptions(ExportOptions o) {
+        PathOptions p = PathOptions.defaults();
+        return o.pathTraced() ? p.withIntegrator(Integrator.PATH).withBudgetMillis(1000L * o.seconds()) : p;
+    }
+
+    /** True for a file name that asks for the linear .pfm image (any case). */
+    static boolean isPfm(Path p) {
+        return p.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".pfm");
+    }
+
     /** Passes of a one-shot render with these options: the first sample, then the extra samples. */
     private static int passes(ExportOptions o) {
         if (o.spp() == 1) {
             return 1;
+        }
+        if (o.pathTraced() && o.seconds() > 0) {
+            return o.spp(); // one sample a pass, so the budget can stop it
         }
         if (o.sampler() == org.beziertracer.render.SamplerKind.ADAPTIVE) {
             return 2;

@@ -11,6 +11,10 @@ public enum Level {
     WIREFRAME_SUBDIVISION("wireframe subdivision", 1, 64, 12),
     /** Samples per pixel while super-sampling is on. */
     SAMPLES_PER_PIXEL("samples per pixel", 1, 16, 4, 4, 9, 16),
+    /** Render → Path Traced: the samples a pixel the picture refines to before it stops. */
+    PATH_SAMPLES("path-traced samples per pixel", 1, 1024, 256, 16, 64, 256, 1024),
+    /** Render → Path Traced: seconds the picture may refine before it stops (0: no limit but the samples). */
+    PATH_SECONDS("path-traced time limit in seconds", 0, 3600, 0, 0, 10, 30, 60, 300),
     /** Progressive passes per displayed frame (the memoir's interactivity). */
     INTERACTIVITY("interactivity", 1, 8, 1),
     /** 0 = orthographic .. 100 = {@value OrbitView#MAX_FOV_DEGREES}° of horizontal field of view. */

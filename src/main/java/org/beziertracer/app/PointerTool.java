@@ -126,8 +126,12 @@ public final class PointerTool {
             Gesture g = gesture;
             gesture = null;
             g.end(x, y);
+            app.motionEnded();
         }
     }
+
+    /** True from a press until its release: a turn, a drag of points or of the light, a band. */
+    public boolean inGesture() { return gesture != null; }
 
     /** Wheel: positive {@code clicks} move away from the model. */
     public void wheel(double clicks) {

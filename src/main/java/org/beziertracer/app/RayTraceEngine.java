@@ -176,9 +176,13 @@ public final class RayTraceEngine implements PictureEngine {
             }
             double speedUp = Objects.equals(TimingKey.of(r), timedKey) && millisBvhOn > 0 && millisBvhOff > 0
                     ? millisBvhOff / millisBvhOn : 0;
+            long pixels = (long) r.settings().width() * r.settings().height();
+            int samplesDone = r.pathTraced() ? (int) (stats.primaryRays() / pixels) : -1;
+            double samplesPerSecond = stats.millis() > 0 ? stats.primaryRays() / (stats.millis() / 1e3) : 0;
             listener.accept(new RenderStatus(pass + 1, passCount, stats.millis(), stats.mraysPerSecond(),
                     r.settings().spp(), r.intersect().method(), bvh, speedUp, prepMillis, r.intersect().tessellate(),
-                    ShadingMode.parse(r.settings().shading()), stats.analysisLow(), stats.analysisHigh()));
+                    ShadingMode.parse(r.settings().shading()), stats.analysisLow(), stats.analysisHigh(), samplesDone,
+                    samplesPerSecond));
             if (pass == passCount - 1) {
                 settle(n.number()); // after the status, so a listener hears the last pass before the engine is idle
             }

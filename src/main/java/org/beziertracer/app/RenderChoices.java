@@ -3,6 +3,8 @@ package org.beziertracer.app;
 import org.beziertracer.intersect.IntersectOptions;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.model.RenderSettings;
+import org.beziertracer.render.Integrator;
+import org.beziertracer.render.PathOptions;
 import org.beziertracer.render.RenderOptions;
 import org.beziertracer.render.SamplerKind;
 import org.beziertracer.render.ShadingMode;
@@ -22,9 +24,17 @@ public final class RenderChoices {
     /** Most progressive passes per frame the engine accepts. */
     public static final int MAX_PASSES_PER_FRAME = 16;
 
-    /** The renderer settings for a picture of {@code width × height} device pixels. */
+    /**
+     * The renderer settings for a picture of {@code width × height} device pixels; path traced, the
+     * samples are the {@link Level#PATH_SAMPLES} target (jittered, as {@code render --sampler jittered}).
+     */
     public static RenderSettings renderSettings(Settings s, int width, int height) {
-        return new RenderSettings(width, height, s.samplesPerPixel(), SamplerKind.JITTERED.label(), s.method().label(),
+        return renderSettings(s, width, height, s.pathTraced() ? s.level(Level.PATH_SAMPLES) : s.samplesPerPixel());
+    }
+
+    /** As {@link #renderSettings(Settings, int, int)} with {@code spp} samples per pixel. */
+    static RenderSettings renderSettings(Settings s, int width, int height, int spp) {
+        return new RenderSettings(width, height, spp, SamplerKind.JITTERED.label(), s.method().label(),
                 s.on(Toggle.BVH), s.shading().label(), s.on(Toggle.TEXTURE) ? CHECKER_SQUARES : 0,
                 s.on(Toggle.SHADOWS), s.on(Toggle.REFLECTIONS) ? REFLECTION_DEPTH : 0);
     }
@@ -35,11 +45,24 @@ public final class RenderChoices {
                 .withTessellate(s.tessellate());
     }
 
-    /** The renderer's options: passes per displayed frame, tessellation and the analysis views' settings. */
+    /**
+     * The renderer's options: passes per displayed frame, tessellation, the analysis views' settings
+     * and the integrator (path traced: {@link #pathOptions}).
+     */
     public static RenderOptions renderOptions(Settings s) {
         int passes = Math.max(1, Math.min(MAX_PASSES_PER_FRAME, s.level(Level.INTERACTIVITY)));
         return RenderOptions.defaults().withPassesPerFrame(passes).withTessellate(s.tessellate())
-                .withAnalysis(s.analysisSettings());
+                .withAnalysis(s.analysisSettings()).withPath(pathOptions(s));
+    }
+
+    /**
+     * The integrator: Whitted, or when {@link Settings#pathTraced()} the path tracer with its
+     * defaults (depth 16, no clamp, exposure 0, as {@code render --integrator path}) and the
+     * {@link Level#PATH_SECONDS} budget.
+     */
+    public static PathOptions pathOptions(Settings s) {
+        PathOptions p = PathOptions.defaults();
+        return s.pathTraced() ? p.withIntegrator(Integrator.PATH).withBudgetMillis(1000L * s.level(Level.PATH_SECONDS)) : p;
     }
 
     /**
@@ -59,6 +82,16 @@ public final class RenderChoices {
                 .with(Toggle.SUPER_SAMPLING, file.spp() > 1);
         out = out.withAnalysis(shading.isAnalysis() ? shading : null);
         return file.spp() > 1 ? out.with(Level.SAMPLES_PER_PIXEL, Level.SAMPLES_PER_PIXEL.snap(file.spp())) : out;
+    }
+
+    /**
+     * True when {@code scene} brings light of its own: point or spot lights, area lights or an
+     * environment (the studio scene is lit by an area light and its sky alone; the path tracer then
+     * needs no placed light added).
+     */
+    public static boolean hasOwnLight(org.beziertracer.model.Scene scene) {
+        return !scene.lights().isEmpty() || !scene.spotLights().isEmpty() || !scene.areaLights().isEmpty()
+                || scene.environment().isPresent();
     }
 
     /**

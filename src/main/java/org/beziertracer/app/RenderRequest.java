@@ -30,10 +30,24 @@ public record RenderRequest(Scene scene, List<PointLight> lights, CameraSpec cam
 
     /** The request for {@code s} with everything taken from the app's settings; {@code framing} places a fixed light. */
     public static RenderRequest of(Scene scene, CameraSpec camera, Framing framing, Settings s, Picture target) {
+        return of(scene, camera, framing, s, target, false);
+    }
+
+    /**
+     * As {@link #of(Scene, CameraSpec, Framing, Settings, Picture)}; a {@code preview} of a
+     * path-traced picture (while the view turns or points are dragged) takes one sample a pixel
+     * and then stops.
+     */
+    public static RenderRequest of(Scene scene, CameraSpec camera, Framing framing, Settings s, Picture target,
+                                   boolean preview) {
+        int spp = preview && s.pathTraced() ? 1 : RenderChoices.renderSettings(s, 1, 1).spp();
         return new RenderRequest(scene, LightRig.lights(s, camera, framing), camera,
-                RenderChoices.renderSettings(s, target.width(), target.height()), RenderChoices.intersectOptions(s),
+                RenderChoices.renderSettings(s, target.width(), target.height(), spp), RenderChoices.intersectOptions(s),
                 RenderChoices.renderOptions(s), target);
     }
+
+    /** True when the path tracer renders this request. */
+    public boolean pathTraced() { return options.path().traced(); }
 
     /**
      * The render job of this request over {@code snapshot}, the {@link #scene} intersected with

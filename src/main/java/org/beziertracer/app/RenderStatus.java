@@ -20,10 +20,39 @@ import org.beziertracer.render.ShadingMode;
  * @param tessellate     0: exact; {@code K ≥ 1}: rendered as a K×K triangle mesh per patch
  * @param shading        what the picture shows (an analysis view has a legend)
  * @param analysisLow, analysisHigh the ends of a curvature view's colour scale
+ * @param samplesDone    path traced: the samples every pixel has so far (0 while the first is being
+ *                       traced; {@code spp} at the end); -1 for the Whitted renderer
+ * @param samplesPerSecond path traced: camera samples (whole paths) traced a second so far
  */
 public record RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, Method method,
                            boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate, ShadingMode shading,
-                           double analysisLow, double analysisHigh) {
+                           double analysisLow, double analysisHigh, int samplesDone, double samplesPerSecond) {
+
+    /** A status of the Whitted renderer. */
+    public RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, Method method,
+                        boolean bvh, double bvhSpeedUp, double prepMillis, int tessellate, ShadingMode shading,
+                        double analysisLow, double analysisHigh) {
+        this(pass, passCount, millis, mraysPerSecond, spp, method, bvh, bvhSpeedUp, prepMillis, tessellate, shading,
+                analysisLow, analysisHigh, -1, 0);
+    }
+
+    /** True for a path-traced picture. */
+    public boolean pathTraced() { return samplesDone >= 0; }
+
+    /**
+     * The status bar's samples text: {@code "4 spp"} for Whitted; path traced, the samples so far
+     * of the target and the rate, {@code "37 of 256 spp, 412k samples/s"}.
+     */
+    public String samplesText() {
+        if (!pathTraced()) {
+            return spp + " spp";
+        }
+        double r = samplesPerSecond;
+        String rate = r >= 1e6 ? String.format(java.util.Locale.ROOT, "%.2fM", r / 1e6)
+                : r >= 1e3 ? String.format(java.util.Locale.ROOT, "%.0fk", r / 1e3)
+                : String.format(java.util.Locale.ROOT, "%.0f", r);
+        return samplesDone + " of " + spp + " spp, " + rate + " samples/s";
+    }
 
     /** A status of a shaded (not analysed) picture. */
     public RenderStatus(int pass, int passCount, double millis, double mraysPerSecond, int spp, Method method,

@@ -149,6 +149,11 @@ public final class Settings {
         return on(Toggle.SUPER_SAMPLING) ? level(Level.SAMPLES_PER_PIXEL) : 1;
     }
 
+    /** True when the picture is path traced: Render → Path Traced on and no analysis view shown. */
+    public boolean pathTraced() {
+        return on(Toggle.PATH_TRACED) && analysis == null;
+    }
+
     /** True when control points are shown and can be picked (their toggle decides, in both views). */
     public boolean pointsShown() {
         return on(Toggle.CONTROL_POINTS);

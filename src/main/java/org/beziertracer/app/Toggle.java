@@ -23,6 +23,12 @@ public enum Toggle {
     SHADOWS(true),
     /** Whitted reflection and refraction rays (depth 5; off: depth 0). */
     REFLECTIONS(true),
+    /**
+     * Render → Path Traced: the picture is path traced ({@link org.beziertracer.render.Integrator#PATH})
+     * and keeps refining, one sample a pixel a pass, up to {@link Level#PATH_SAMPLES} or
+     * {@link Level#PATH_SECONDS}; off: the Whitted renderer (the default). An analysis view wins.
+     */
+    PATH_TRACED(false),
     /** Pre-split patches in a sub-patch BVH; off: whole patches in a list. */
     BVH(true),
     /** Every patch as a uniform K×K triangle mesh ({@link Level#TESSELLATION}) instead of the exact surface. */

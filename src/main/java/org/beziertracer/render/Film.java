@@ -138,6 +138,15 @@ public final class Film {
      * {@code block} is a power of two (the pass plan's), so the anchor is a mask away, not a division.
      */
     void writeArgb(int left, int top, int w, int h, int block, int[] argb, int stride) {
+        writeArgb(left, top, w, h, block, argb, stride, 0);
+    }
+
+    /**
+     * As {@link #writeArgb(int, int, int, int, int, int[], int)}, through the path tracer's tone map
+     * ({@link ToneMap#argb(float, float, float, double)} with {@code toneScale = 2^exposure}) when
+     * {@code toneScale > 0}, else the plain clamp and sRGB encoding.
+     */
+    void writeArgb(int left, int top, int w, int h, int block, int[] argb, int stride, double toneScale) {
         if (block < 1 || (block & (block - 1)) != 0) {
             throw new IllegalArgumentException("block must be a power of two, got " + block);
         }
@@ -155,7 +164,8 @@ public final class Film {
                     // A coarse pass's pixels share their anchor's colour: encode it once per run
                     int o = 3 * p;
                     float inv = count[p] > 0 ? 1f / count[p] : 0;
-                    lastArgb = Srgb.argb(sum[o] * inv, sum[o + 1] * inv, sum[o + 2] * inv);
+                    lastArgb = toneScale > 0 ? ToneMap.argb(sum[o] * inv, sum[o + 1] * inv, sum[o + 2] * inv, toneScale)
+                            : Srgb.argb(sum[o] * inv, sum[o + 1] * inv, sum[o + 2] * inv);
                     last = p;
                 }
                 argb[j * stride + i] = lastArgb;

@@ -13,6 +13,11 @@ import java.util.List;
  * successive passes; adaptive adds samples {@code [1, spp)} in one pass, only to pixels whose first
  * sample differs from a neighbour's. Each pixel receives the same samples in the same order either
  * way, so a progressive render ends on exactly the one-shot image.
+ *
+ * <p>One sample a pass ({@link #of(boolean, SamplerKind, int, boolean)}): the extra samples come one
+ * a pass, {@code [1,2), [2,3) …}, so a progressive path-traced picture refines after every sample
+ * of every pixel (the desktop app's Path Traced mode); the per-pixel order, and so the image, is
+ * the same again.
  */
 final class PassPlan {
     /** Coarsest progressive block. */
@@ -35,6 +40,11 @@ final class PassPlan {
     private PassPlan() {}
 
     static List<Pass> of(boolean progressive, SamplerKind sampler, int spp) {
+        return of(progressive, sampler, spp, false);
+    }
+
+    /** The passes; with {@code onePerPass} the regular and jittered extra samples come one a pass. */
+    static List<Pass> of(boolean progressive, SamplerKind sampler, int spp, boolean onePerPass) {
         List<Pass> passes = new ArrayList<>();
         if (progressive) {
             for (int b = COARSEST; b >= 1; b /= 2) {
@@ -47,8 +57,8 @@ final class PassPlan {
             if (sampler == SamplerKind.ADAPTIVE) {
                 passes.add(new Pass(1, 0, 1, spp, true));
             } else {
-                for (int from = 1; from < spp; from *= 2) {
-                    passes.add(new Pass(1, 0, from, Math.min(2 * from, spp), false));
+                for (int from = 1; from < spp; from = onePerPass ? from + 1 : 2 * from) {
+                    passes.add(new Pass(1, 0, from, onePerPass ? from + 1 : Math.min(2 * from, spp), false));
                 }
             }
         }

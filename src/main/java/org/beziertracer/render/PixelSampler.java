@@ -23,6 +23,20 @@ public final class PixelSampler {
     private final int[] cell;
 
     public PixelSampler(SamplerKind kind, PixelFilter filter, int spp, long seed) {
+        this(kind, filter, spp, seed, false);
+    }
+
+    /**
+     * A sampler; with {@code spread} (the path tracer's) the regular and jittered samples visit the
+     * cells of the grid in a spread order instead of row by row: sample k takes cell
+     * {@code (centre + k·stride) mod spp}, the stride the integer nearest {@code spp/φ} (φ the golden
+     * ratio) prime to spp — a rank-1 lattice order (Korobov; the golden-ratio choice as in
+     * M. Roberts, "The unreasonable effectiveness of quasirandom sequences", 2018) that starts at the
+     * centre cell. Every cell is still taken once, but any first samples of a pixel are spread over
+     * it: a progressive picture stopped early (a time budget) is not shifted toward the top of its
+     * pixels, as a row-by-row order would leave it.
+     */
+    public PixelSampler(SamplerKind kind, PixelFilter filter, int spp, long seed, boolean spread) {
         if (spp < 1) {
             throw new IllegalArgumentException("samples per pixel must be >= 1, got " + spp);
         }
@@ -35,8 +49,10 @@ public final class PixelSampler {
         this.ky = (extra + kx - 1) / kx;
         this.fixed = new double[2 * spp];
         this.cell = new int[2 * spp];
+        boolean spreadOrder = spread && kind != SamplerKind.ADAPTIVE;
+        int stride = spreadOrder ? goldenStride(spp) : 1, start = spreadOrder ? centreCell(spp) : 0;
         for (int k = 0; k < spp; k++) {
-            int c = kind == SamplerKind.ADAPTIVE ? Math.max(k - 1, 0) : k;
+            int c = kind == SamplerKind.ADAPTIVE ? Math.max(k - 1, 0) : (int) ((start + (long) k * stride) % spp);
             cell[2 * k] = c % kx;
             cell[2 * k + 1] = c / kx;
         }
@@ -49,6 +65,28 @@ public final class PixelSampler {
             fixed[2 * k] = isFixed ? o[0] : Double.NaN;
             fixed[2 * k + 1] = isFixed ? o[1] : Double.NaN;
         }
+    }
+
+    /** The integer nearest {@code n/φ} that is prime to {@code n} (1 for n ≤ 2): the spread order's stride. */
+    static int goldenStride(int n) {
+        int base = (int) Math.round(n / ((1 + Math.sqrt(5)) / 2));
+        for (int d = 0; d < n; d++) {
+            for (int candidate : new int[] {base + d, base - d}) {
+                if (candidate >= 1 && candidate < n && gcd(candidate, n) == 1) {
+                    return candidate;
+                }
+            }
+        }
+        return 1;
+    }
+
+    /** The cell in the middle of the grid (row ky/2, column kx/2), or the last cell when that row is not full. */
+    private int centreCell(int n) {
+        return Math.min(n - 1, (ky / 2) * kx + kx / 2);
+    }
+
+    private static int gcd(int a, int b) {
+        return b == 0 ? a : gcd(b, a % b);
     }
 
     public int spp() { return spp; }

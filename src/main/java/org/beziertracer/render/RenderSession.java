@@ -175,10 +175,14 @@ public final class RenderSession implements AutoCloseable {
         PixelWindow region = job.filmWindow();
         List<int[]> tiles = tiles(region, job.options().tileSize());
         boolean progressive = job.options().progressive() && job.window().isWhole(job.width(), job.height());
-        List<PassPlan.Pass> passes = PassPlan.of(progressive, job.sampler(), job.settings().spp());
+        PathOptions path = job.options().path();
+        // A progressive path-traced render refines one sample a pass and shows every pass; one with a
+        // time budget also takes one sample a pass, so it can stop close to the budget
+        List<PassPlan.Pass> passes = PassPlan.of(progressive, job.sampler(), job.settings().spp(),
+                onePerPass(job.options().progressive(), path));
         RenderState st = new RenderState(gen, job, sink, generation, new ProgressCounter(progress, gen, passes, tiles));
         int workers = Math.min(job.options().threads(), poolSize);
-        int perFrame = job.options().passesPerFrame();
+        int perFrame = path.traced() ? 1 : job.options().passesPerFrame();
         for (int p = 0; p < passes.size(); p++) {
             PassPlan.Pass pass = passes.get(p);
             boolean display = (p + 1) % perFrame == 0 || p == passes.size() - 1;
@@ -195,6 +199,11 @@ public final class RenderSession implements AutoCloseable {
             if (st.isStale()) {
                 done.completeExceptionally(new CancellationException("superseded"));
                 return;
+            }
+            if (overBudget(path, st, pass) && p < passes.size() - 1) {
+                // The time budget is spent: this pass is the last one
+                sink.passDone(gen, p, p + 1, st.stats());
+                break;
             }
             sink.passDone(gen, p, passes.size(), st.stats());
         }
@@ -223,6 +232,17 @@ public final class RenderSession implements AutoCloseable {
             activeWorkers.decrementAndGet();
             latch.countDown();
         }
+    }
+
+    /** True when the extra samples come one a pass: a path-traced render that is progressive or has a time budget. */
+    static boolean onePerPass(boolean progressive, PathOptions path) {
+        return path.traced() && (progressive || path.budgetMillis() > 0);
+    }
+
+    /** True when a path-traced render with a time budget has spent it by the end of {@code pass} (an extra-sample pass). */
+    private static boolean overBudget(PathOptions path, RenderState st, PassPlan.Pass pass) {
+        return path.traced() && path.budgetMillis() > 0 && !pass.firstSample()
+                && System.nanoTime() - st.startNanos >= path.budgetMillis() * 1_000_000L;
     }
 
     /** Tiles {@code {x0, y0, w, h}} covering the image, row by row. */

@@ -12,6 +12,8 @@ final class RenderState {
     final ShadingScene shading;
     /** The path tracer's data when the job asks for it ({@link Integrator#PATH}), else null. */
     final PathScene path;
+    /** {@code 2^exposure} of the path tracer's tone map for the tiles shown; 0 for Whitted (no tone map). */
+    final double toneScale;
     final Film film;
     final PixelSampler sampler;
     final FrameSink sink;
@@ -44,10 +46,11 @@ final class RenderState {
         this.currentGeneration = currentGeneration;
         this.shading = new ShadingScene(job);
         this.path = job.options().path().integrator() == Integrator.PATH ? new PathScene(job, shading) : null;
+        this.toneScale = path != null ? Math.pow(2, job.options().path().exposure()) : 0;
         this.film = new Film(job.filmWindow(),
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
-                job.options().seed());
+                job.options().seed(), path != null);
     }
 
     /** True once a newer render started or this one was cancelled (or failed). */

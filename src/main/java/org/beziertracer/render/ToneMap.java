@@ -20,6 +20,15 @@ public final class ToneMap {
         return Math.min(1, y);
     }
 
+    /**
+     * One linear colour scaled by {@code scale} ({@code 2^exposure}), mapped by {@link #aces} and
+     * encoded as opaque sRGB ARGB: the one formula of the PNG and of the tiles a progressive
+     * render shows, so both give the same bytes.
+     */
+    public static int argb(float r, float g, float b, double scale) {
+        return Srgb.argb((float) aces(r * scale), (float) aces(g * scale), (float) aces(b * scale));
+    }
+
     /** The film tone mapped to opaque sRGB ARGB, row-major. */
     public static int[] argb(Film film, double exposure) {
         return argb(film, film.window(), exposure);
@@ -37,8 +46,7 @@ public final class ToneMap {
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
                 film.pixel(window.x0() + x, window.y0() + y, px);
-                out[y * w + x] = Srgb.argb((float) aces(px[0] * scale), (float) aces(px[1] * scale),
-                        (float) aces(px[2] * scale));
+                out[y * w + x] = argb(px[0], px[1], px[2], scale);
             }
         }
         return out;

@@ -243,6 +243,20 @@ public final class AppActions {
                 + "beside the model, the scene's own)", key(KeyEvent.VK_L, CTRL), s::cycleLight);
         toggle("showLight", Toggle.SHOW_LIGHT, "Show Light", "Draw the light as a marker in the view; drag the marker "
                 + "to move the light", key(KeyEvent.VK_L, CTRL | SHIFT));
+        toggle("pathTraced", Toggle.PATH_TRACED, "Path Traced", "Physically based path tracing (area lights, environment, "
+                + "metal and glass) that refines while nothing changes, up to the target samples or time; off: Whitted",
+                key(KeyEvent.VK_P, CTRL | ALT));
+        add("pathSamples", "Next Path-Traced Samples", "Cycle the samples a pixel the path-traced picture refines to "
+                + "(16, 64, 256, 1024)", null, () -> s.cycle(Level.PATH_SAMPLES));
+        add("pathSeconds", "Next Path-Traced Time Limit", "Cycle the time the path-traced picture may refine "
+                + "(no limit, 10, 30, 60, 300 s)", null, () -> s.cycle(Level.PATH_SECONDS));
+        syncs.add(() -> {
+            get("pathSamples").putValue(Action.NAME, "Next Path-Traced Samples (now "
+                    + app.settings().current().level(Level.PATH_SAMPLES) + ")");
+            int sec = app.settings().current().level(Level.PATH_SECONDS);
+            get("pathSeconds").putValue(Action.NAME, "Next Path-Traced Time Limit (now "
+                    + (sec == 0 ? "none" : sec + " s") + ")");
+        });
         add("spp", "Next Samples per Pixel", "Cycle the super-sampling rate (4, 9, 16)", key(KeyEvent.VK_P, CTRL | SHIFT),
                 () -> s.cycle(Level.SAMPLES_PER_PIXEL));
         add("moreInteractive", "More Passes per Frame", "Show the picture after more progressive passes",

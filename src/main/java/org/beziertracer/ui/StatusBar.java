@@ -115,7 +115,8 @@ public final class StatusBar extends JPanel {
             rays.setText(String.format(Locale.ROOT, "%.2f Mrays/s", s.mraysPerSecond()));
             pass.setText("pass " + s.pass() + " of " + s.passCount());
         }
-        spp.setText(t.samplesPerPixel() + " spp");
+        spp.setText(!t.pathTraced() ? t.samplesPerPixel() + " spp"
+                : s != null && s.pathTraced() && t.on(Toggle.RAY_TRACE) ? s.samplesText() : "path traced");
         method.setText(t.intersectionLabel());
         String speedUp = s != null && s.bvhSpeedUp() > 0 ? String.format(Locale.ROOT, " ×%.1f", s.bvhSpeedUp()) : "";
         bvh.setText(t.on(Toggle.BVH) ? "BVH on" + speedUp : "BVH off" + speedUp);

@@ -104,15 +104,26 @@ final class SwingDialogs implements UserDialogs {
         sampler.setRenderer(new LabelRenderer<>(SamplerKind.class, SamplerKind::label));
         sampler.setToolTipText("Where the samples of a pixel go: regular grid, jittered grid, or adaptive (more "
                 + "samples only where neighbours differ)");
+        javax.swing.JCheckBox path = new javax.swing.JCheckBox("Path traced", offer.pathTraced());
+        path.setName("export.path");
+        path.setToolTipText("Physically based path tracing (area lights, environment, metal and glass), tone mapped; "
+                + "off: the Whitted renderer");
+        javax.swing.JSpinner seconds = spinner("export.seconds", offer.seconds(), ExportOptions.MAX_SECONDS,
+                "Path tracer: stop after this many seconds even before all samples are traced (0 = no limit)");
+        ((javax.swing.SpinnerNumberModel) seconds.getModel()).setMinimum(0);
+        seconds.setValue(offer.seconds()); // the shared spinner starts at 1 at least; 0 means no limit
+        seconds.setEnabled(offer.pathTraced());
+        path.addActionListener(e -> seconds.setEnabled(path.isSelected()));
         javax.swing.JPanel panel = form(new Object[][] {{"Width", width}, {"Height", height}, {"Samples per pixel", spp},
-                {"Sampler", sampler}});
+                {"Sampler", sampler}, {"Integrator", path}, {"Time limit (s)", seconds}});
         if (JOptionPane.showConfirmDialog(parent, panel, "Export image", JOptionPane.OK_CANCEL_OPTION,
                 JOptionPane.PLAIN_MESSAGE) != JOptionPane.OK_OPTION) {
             return null;
         }
         try {
             return new ExportOptions((Integer) width.getValue(), (Integer) height.getValue(), (Integer) spp.getValue(),
-                    (SamplerKind) sampler.getSelectedItem());
+                    (SamplerKind) sampler.getSelectedItem(), path.isSelected(),
+                    path.isSelected() ? (Integer) seconds.getValue() : 0);
         } catch (IllegalArgumentException e) {
             error("Cannot export", e.getMessage());
             return null;

@@ -85,6 +85,75 @@ class ImageExportTest {
         }
     }
 
+    /** The teapot in the app (direct threads, fake engine), its picture 64×40. */
+    private AppModel teapotApp(FakeDialogs dialogs) {
+        AppModel app = new AppModel(new FakeEngine(), dialogs, AppThreads.direct(), MemoryPreferences.fresh());
+        app.view().resize(64, 40, 1);
+        app.files().openBuiltIn("teapot");
+        return app;
+    }
+
+    private static int[] pixels(byte[] raw) {
+        int[] px = new int[raw.length / 4];
+        ByteBuffer.wrap(raw).asIntBuffer().get(px);
+        return px;
+    }
+
+    @Test
+    void aPathTracedExportIsToneMappedAndItsPfmHoldsTheSameLinearPicture() throws Exception {
+        FakeDialogs dialogs = new FakeDialogs();
+        AppModel app = teapotApp(dialogs);
+        app.settings().replace(app.settings().current().with(Toggle.PATH_TRACED, true).with(Level.PATH_SAMPLES, 16));
+        dialogs.export = new ExportOptions(48, 32, 4, SamplerKind.JITTERED, true, 0);
+        dialogs.save = dir.resolve("path.png");
+        app.export().export(RAW);
+        assertEquals(ExportOptions.first(64, 40, app.settings().current()), dialogs.offered,
+                "path traced: the first offer is the picture's target samples, path traced");
+        assertTrue(dialogs.offered.pathTraced() && dialogs.offered.spp() == 16, dialogs.offered.toString());
+        int[] png = pixels(Files.readAllBytes(dialogs.save));
+        assertEquals(48 * 32, png.length);
+        app.export().exportTo(dir.resolve("path.PFM"), dialogs.export, RAW);
+        byte[] pfm = Files.readAllBytes(dir.resolve("path.PFM"));
+        byte[] header = "PF\n48 32\n-1.0\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        assertEquals(new String(header, java.nio.charset.StandardCharsets.US_ASCII),
+                new String(pfm, 0, header.length, java.nio.charset.StandardCharsets.US_ASCII), "a .pfm name: the linear image");
+        assertEquals(header.length + 12 * 48 * 32, pfm.length);
+        ByteBuffer floats = ByteBuffer.wrap(pfm, header.length, 12 * 48 * 32).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        int differ = 0;
+        for (int y = 31; y >= 0; y--) { // rows bottom-up
+            for (int x = 0; x < 48; x++) {
+                int mapped = org.beziertracer.render.ToneMap.argb(floats.getFloat(), floats.getFloat(), floats.getFloat(), 1);
+                differ += mapped == png[y * 48 + x] ? 0 : 1;
+            }
+        }
+        assertEquals(0, differ, "the PNG is the .pfm through the ACES tone map");
+        dialogs.export = new ExportOptions(48, 32, 4, SamplerKind.JITTERED);
+        dialogs.save = dir.resolve("whitted.png");
+        app.export().export(RAW);
+        int[] whitted = pixels(Files.readAllBytes(dialogs.save));
+        int changed = 0;
+        for (int k = 0; k < png.length; k++) {
+            changed += whitted[k] == png[k] ? 0 : 1;
+        }
+        assertTrue(changed > png.length / 4, "the path tracer, not Whitted, made the first: " + changed + " pixels differ");
+        assertEquals(java.util.List.of(), dialogs.errors);
+    }
+
+    @Test
+    void aTimeBudgetEndsAPathTracedExportBeforeItsSamples() throws Exception {
+        FakeDialogs dialogs = new FakeDialogs();
+        AppModel app = teapotApp(dialogs);
+        ExportOptions o = new ExportOptions(64, 48, 1024, SamplerKind.JITTERED, true, 1);
+        Task task = new Task("budget");
+        var camera = app.view().view().camera(64 / 48.0);
+        org.beziertracer.render.RenderResult r = ImageExport.render(app.document().scene(), camera, null,
+                app.settings().current(), o, task);
+        int n = r.film().sampleCount(10, 10);
+        assertTrue(n >= 2 && n < 1024, "stopped by the 1 s budget after " + n + " samples a pixel");
+        assertEquals(n, r.film().sampleCount(63, 47), "every pixel has as many");
+        assertTrue(r.stats().millis() >= 1000, "not before the budget: " + r.stats().millis());
+    }
+
     @Test
     void sizesAndSamplesAreCheckedInOneLine() {
         assertEquals("the image size must be 1..16384 pixels a side, got 0×10",
@@ -93,6 +162,10 @@ class ImageExportTest {
                 UserMessages.of(IllegalArgumentException.class, () -> new ExportOptions(10, 10, 5000, SamplerKind.REGULAR)));
         assertTrue(UserMessages.of(IllegalArgumentException.class,
                 () -> new ExportOptions(16000, 16000, 1, SamplerKind.REGULAR)).contains("too big"));
+        assertEquals("a time limit needs the path tracer", UserMessages.of(IllegalArgumentException.class,
+                () -> new ExportOptions(10, 10, 4, SamplerKind.JITTERED, false, 5)));
+        assertEquals("the time limit must be 0..86400 seconds (0 = none), got -1", UserMessages.of(
+                IllegalArgumentException.class, () -> new ExportOptions(10, 10, 4, SamplerKind.JITTERED, true, -1)));
     }
 
     private static void drain(LinkedBlockingQueue<Runnable> ui) {

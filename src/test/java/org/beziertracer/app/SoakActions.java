@@ -173,8 +173,14 @@ public final class SoakActions {
         } else if (!now.on(Toggle.CONTROL_POINTS) && b >= 0.5) {
             t = Toggle.CONTROL_POINTS;
         }
+        if (t == Toggle.PATH_TRACED && app.settings().current().level(Level.PATH_SAMPLES) > SOAK_PATH_SAMPLES) {
+            app.settings().set(Level.PATH_SAMPLES, SOAK_PATH_SAMPLES); // path traced, the picture goes idle soon
+        }
         app.settings().toggle(t);
     }
+
+    /** Samples a pixel a path-traced picture of the soak refines to (the default 256 would keep it busy). */
+    static final int SOAK_PATH_SAMPLES = 4;
 
     private void method(double a, double b) {
         if (b < 0.3) {

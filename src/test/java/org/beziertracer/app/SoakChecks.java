@@ -80,7 +80,10 @@ public final class SoakChecks {
         public int[] freshRender() {
             RenderRequest r = RenderRequest.of(scene, camera, framing, settings, new Picture(width, height, () -> {}));
             SceneIntersector snapshot = SceneIntersector.build(r.scene(), r.intersect());
-            return Renderer.renderOnce(r.job(snapshot)).argb();
+            org.beziertracer.render.RenderResult result = Renderer.renderOnce(r.job(snapshot));
+            // a path-traced picture is shown through the tone map, as its PNG is written
+            return r.pathTraced() ? org.beziertracer.render.ToneMap.argb(result.film(), r.options().path().exposure())
+                    : result.argb();
         }
 
         /** Null when every pixel of the shown picture equals {@code fresh}; else how many differ and where the first is. */

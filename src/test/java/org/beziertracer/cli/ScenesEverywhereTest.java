@@ -42,6 +42,18 @@ class ScenesEverywhereTest {
     }
 
     @Test
+    void renderPathTracesTheBuiltInStudioAndCountsItsSamplesASecond() throws IOException {
+        Path png = dir.resolve("studio.png");
+        Run r = Run.of("render", "studio", "--integrator", "path", "--size", "32x24", "--spp", "2", "--threads", "1",
+                "--stats", "-o", png.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Files.size(png) > 0, "the PNG is written");
+        assertTrue(r.out().contains("\"integrator\":\"path\""), r.out());
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\"samplesPerSecond\":([0-9.]+)").matcher(r.out());
+        assertTrue(m.find() && Double.parseDouble(m.group(1)) > 0, "samples a second: " + r.out());
+    }
+
+    @Test
     void traceOpensASceneFileAndNamesWhatEachRayHit() throws IOException {
         Path rays = dir.resolve("rays.txt");
         Files.writeString(rays, "0 0 30 0 0 -1\n0.5 0.5 5 0 0 -1\n");
@@ -64,7 +76,7 @@ class ScenesEverywhereTest {
         Run r = Run.of("info", "kettle");
         assertEquals(1, r.code());
         assertEquals("beziertracer info: kettle: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus,"
-                + " trimmed-plate, wavy6, wavy10, curved, teapot-room) and not a"
+                + " trimmed-plate, wavy6, wavy10, curved, teapot-room, studio) and not a"
                 + " .bpt, .obj, .igs, .iges, .stp, .step or .json file", UserMessages.checkOneLineOutput(r.err()));
     }
 
@@ -74,7 +86,7 @@ class ScenesEverywhereTest {
             String help = Run.of(command, "--help").out().replaceAll("\\s+", " ");
             assertTrue(help.contains("a .bpt, .obj, .igs, .iges, .stp, .step or .json file, or a built-in: patch, teapot, teacup, teaspoon, sphere,"
                     + " torus, trimmed-plate,"
-                    + " wavy6, wavy10, curved, teapot-room"), help);
+                    + " wavy6, wavy10, curved, teapot-room, studio"), help);
         }
     }
 }

@@ -15,6 +15,40 @@ class PixelSamplerTest {
 
     private final double[] out = new double[2];
 
+    /** The path tracer's spread order: every cell once, from the centre, any first samples spread over the pixel. */
+    @Test
+    void theSpreadOrderTakesEveryCellOnceFromTheCentreAndSpreadsItsFirstSamples() {
+        for (int spp : new int[] {1, 2, 3, 6, 16, 64, 100, 256, 1000, 1024}) {
+            PixelSampler sampler = new PixelSampler(SamplerKind.REGULAR, PixelFilter.BOX, spp, 1, true);
+            int kx = (int) Math.ceil(Math.sqrt(spp)), ky = (spp + kx - 1) / kx;
+            java.util.Set<Integer> cells = new java.util.HashSet<>();
+            double sumX = 0, sumY = 0, drift = 0;
+            for (int k = 0; k < spp; k++) {
+                sampler.offset(3, 4, k, out);
+                int cx = (int) Math.floor(out[0] * kx), cy = (int) Math.floor(out[1] * ky);
+                assertTrue(cells.add(cy * kx + cx), "spp " + spp + ": cell of sample " + k + " taken twice");
+                assertTrue(cy * kx + cx < spp, "spp " + spp + ": only the grid's first spp cells");
+                sumX += out[0];
+                sumY += out[1];
+                if (k >= 3) {
+                    drift += Math.max(Math.abs(sumX / (k + 1) - 0.5), Math.abs(sumY / (k + 1) - 0.5));
+                }
+            }
+            if (spp >= 4) {
+                // Row by row, the mean of the first k samples sits 0.4 pixels or more up the pixel on average
+                double meanDrift = drift / (spp - 3);
+                assertTrue(meanDrift < 0.07, "spp " + spp + ": the means of the first k samples are "
+                        + meanDrift + " from the centre on average");
+            }
+            sampler.offset(3, 4, 0, out);
+            if (spp == 256) {
+                assertEquals((8 + 0.5) / 16, out[0], 0, "sample 0 in the centre cell");
+                assertEquals((8 + 0.5) / 16, out[1], 0);
+            }
+        }
+        assertEquals(159, PixelSampler.goldenStride(256), "256/φ ≈ 158.2; 159 is the nearest odd");
+    }
+
     @Test
     void regularSamplesAreTheCellCentres() {
         for (int spp : new int[] {1, 2, 4, 5, 9}) {

@@ -19,6 +19,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 
@@ -28,6 +29,54 @@ class RenderSessionTest {
         RenderSettings s = new RenderSettings(w, h, spp, sampler, "clipping", true, "phong", 0, true, 5);
         return TestScenes.job(TestScenes.reflection(), s)
                 .withOptions(RenderOptions.defaults().withThreads(2).withProgressive(progressive).withTileSize(16));
+    }
+
+    /** Found with the app's path-traced mode: a job file's seed turned its path tracer back into Whitted. */
+    @Test
+    void aNewSeedKeepsThePathTracersOptions() {
+        PathOptions p = PathOptions.defaults().withIntegrator(Integrator.PATH).withClamp(4).withBudgetMillis(500);
+        RenderOptions o = RenderOptions.defaults().withPath(p).withSeed(7);
+        assertEquals(p, o.path());
+        assertEquals(7, o.seed());
+    }
+
+    /** Path traced and progressive: one sample a pass after the first, every pass shown tone mapped, a budget ends it early. */
+    @Test
+    void aProgressivePathTracedRenderRefinesOneSampleAPassAndStopsAtItsBudget() throws InterruptedException {
+        Scene scene = TestScenes.reflection();
+        RenderSettings rs = new RenderSettings(32, 24, 5, "jittered", "clipping", true, "phong", 0, true, 5);
+        PathOptions path = PathOptions.defaults().withIntegrator(Integrator.PATH).withExposure(1);
+        RenderJob job = RenderJob.prepare(scene, rs, RenderOptions.defaults().withThreads(2).withPath(path)
+                .withPassesPerFrame(4));
+        java.util.List<Integer> passCounts = new java.util.concurrent.CopyOnWriteArrayList<>();
+        int[] shown = new int[32 * 24];
+        FrameSink sink = new FrameSink() {
+            @Override
+            public synchronized void tileDone(int generation, int x0, int y0, int w, int h, int[] argb, int stride) {
+                for (int j = 0; j < h; j++) {
+                    System.arraycopy(argb, j * stride, shown, (y0 + j) * 32 + x0, w);
+                }
+            }
+
+            @Override
+            public void passDone(int generation, int pass, int passCount, FrameStats stats) {
+                passCounts.add(passCount);
+            }
+        };
+        RenderResult r;
+        try (RenderSession session = new RenderSession(2, sink)) {
+            r = session.render(job);
+        }
+        assertEquals(4 + 4, passCounts.size(), "four first-sample passes, then one a further sample");
+        assertArrayEquals(ToneMap.argb(r.film(), 1), shown, "every pass shown (interactivity ignored), tone mapped at 1 EV");
+        RenderJob slow = job.withOptions(job.options().withPath(path.withBudgetMillis(1)));
+        passCounts.clear();
+        try (RenderSession session = new RenderSession(2, sink)) {
+            r = session.render(slow);
+        }
+        assertEquals(5, passCounts.size(), "stopped after the first extra pass: " + passCounts);
+        assertEquals(5, passCounts.get(4), "which says it is the last");
+        assertEquals(2, r.film().sampleCount(0, 0), "two samples a pixel");
     }
 
     @Test

@@ -167,6 +167,36 @@ class FilesGuiTest extends GuiSession {
         assertEquals("exported 200×150 image to " + png, d.status("message"), "Cancel exports nothing");
     }
 
+    @Test
+    @Order(7)
+    void exportImageOffersThePathTracerAndWritesTheLinearPfm() throws Exception {
+        Path pfm = dir.resolve("path.pfm");
+        d.menu("File", "exportImage");
+        JDialog options = d.dialogWith(JSpinner.class);
+        JSpinner seconds = (JSpinner) GuiDriver.find(options, "export.seconds");
+        javax.swing.JCheckBox path = (javax.swing.JCheckBox) GuiDriver.find(options, "export.path");
+        assertFalse(GuiDriver.onEdt(() -> path.isSelected() || seconds.isEnabled()), "Whitted first: no time limit");
+        d.typeSpinner(options, "export.width", "64");
+        d.typeSpinner(options, "export.height", "48");
+        d.typeSpinner(options, "export.spp", "2");
+        d.click(path);
+        d.waitFor("the time limit enabled", seconds::isEnabled);
+        assertEquals(0, (int) GuiDriver.onEdt(() -> (Integer) seconds.getValue()), "no time limit offered");
+        d.click(GuiDriver.onEdt(() -> GuiDriver.button(options, "OK")));
+        d.chooseFile(pfm);
+        d.waitFor("the export to finish", () -> d.app.status().message().startsWith("exported"));
+        byte[] bytes = Files.readAllBytes(pfm);
+        String header = "PF\n64 48\n-1.0\n";
+        assertEquals(header, new String(bytes, 0, header.length(), java.nio.charset.StandardCharsets.US_ASCII));
+        assertEquals(header.length() + 12 * 64 * 48, bytes.length, "three floats a pixel");
+        d.menu("File", "exportImage");
+        JDialog again = d.dialogWith(JSpinner.class);
+        assertTrue(GuiDriver.onEdt(() -> ((javax.swing.JCheckBox) GuiDriver.find(again, "export.path")).isSelected()),
+                "path traced is offered again");
+        d.click(GuiDriver.onEdt(() -> GuiDriver.button(again, "Cancel")));
+        d.waitFor("the dialog to close", () -> !again.isShowing());
+    }
+
     /** File → Export Image…: types the size and samples, picks the first sampler (regular), OK, then the file. */
     private static void exportThroughTheDialog(Path png, String width, String height, String spp) {
         d.menu("File", "exportImage");

@@ -50,7 +50,9 @@ public final class BuiltIns {
             model("wavy10", "a wavy 10×10-point grid (degree 9)", () -> GeneratedModels.wavy(10)),
             model("curved", "a strongly curved bicubic arch", GeneratedModels::curved),
             resource("teapot-room", "the teapot on a checkered floor, with a mirror and a glass sphere",
-                    "scenes/teapot-room.json"));
+                    "scenes/teapot-room.json"),
+            resource("studio", "a gold teapot and a glass teacup on a floor under an area light and a constant sky "
+                    + "(for the path tracer)", "scenes/studio.json"));
 
     /** Names of every built-in, in order. */
     public static List<String> names() {

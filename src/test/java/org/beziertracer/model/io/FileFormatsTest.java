@@ -72,8 +72,9 @@ class FileFormatsTest {
         assertEquals(models, BuiltIns.names(Holds.MODEL));
         List<String> all = new java.util.ArrayList<>(models);
         all.add("teapot-room");
+        all.add("studio");
         assertEquals(all, BuiltIns.names());
-        assertEquals(List.of("teapot-room"), BuiltIns.names(Holds.SCENE));
+        assertEquals(List.of("teapot-room", "studio"), BuiltIns.names(Holds.SCENE));
         for (BuiltIns.BuiltIn b : BuiltIns.ALL) {
             SceneDocument doc = b.load();
             assertTrue(doc.scene().patchCount() > 0, b.name());

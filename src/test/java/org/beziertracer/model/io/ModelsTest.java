@@ -83,7 +83,7 @@ class ModelsTest {
     void anUnknownExtensionOrMissingFileIsAOneLineErrorNamingTheFile() {
         String e = UserMessages.of(ModelFormatException.class, () -> Models.load("model.stl"));
         assertEquals("model.stl: not a built-in name (patch, teapot, teacup, teaspoon, sphere, torus, trimmed-plate,"
-                + " wavy6, wavy10, curved, teapot-room) and not a .bpt, .obj, .igs, .iges, .stp, .step or .json file",
+                + " wavy6, wavy10, curved, teapot-room, studio) and not a .bpt, .obj, .igs, .iges, .stp, .step or .json file",
                 e);
         String missing = dir.resolve("missing.bpt").toString();
         e = UserMessages.of(ModelFormatException.class, () -> Models.load(missing));

@@ -1,0 +1,74 @@
+package org.beziertracer.ui;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Render → Path Traced through the real menus ({@link java.awt.Robot}): the samples a pixel in
+ * the status bar rise while the picture changes (it refines), and an edit starts it again.
+ */
+@Tag("gui")
+class PathTracedGuiTest extends GuiSession {
+
+    private static final Pattern SAMPLES = Pattern.compile("(\\d+) of (\\d+) spp, .+ samples/s");
+
+    /** The samples a pixel the status bar shows now, or -1 while it shows none yet (event thread). */
+    private static int shownSamples() {
+        Matcher m = SAMPLES.matcher(d.frame.statusBar().text("spp"));
+        return m.matches() ? Integer.parseInt(m.group(1)) : -1;
+    }
+
+    /** {@link #shownSamples()} from the test thread. */
+    private static int samples() {
+        return GuiDriver.onEdt(PathTracedGuiTest::shownSamples);
+    }
+
+    /**
+     * As {@link GuiDriver#waitFor} with up to 120 s: a pass of the path tracer over the whole picture
+     * may take seconds on a machine shared with other builds.
+     */
+    private static void waitLong(String what, java.util.function.BooleanSupplier condition) {
+        long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(120);
+        while (!GuiDriver.onEdt(condition::getAsBoolean)) {
+            assertTrue(System.nanoTime() < end, "timed out waiting for " + what);
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new AssertionError(what, e);
+            }
+        }
+    }
+
+    @Test
+    void thePathTracedPictureRefinesWhileTheSamplesRiseAndAnEditStartsItAgain() {
+        BufferedImage whitted = shot();
+        d.menu("Render", "pathTraced");
+        waitLong("a first path-traced sample in every pixel", () -> shownSamples() >= 1);
+        int early = samples();
+        BufferedImage first = d.capturePanel();
+        waitLong("more samples a pixel", () -> shownSamples() >= early + 2);
+        BufferedImage later = d.capturePanel();
+        String text = d.status("spp");
+        assertTrue(SAMPLES.matcher(text).matches() && text.contains(" of 256 spp"), "the target is shown: " + text);
+        int changed = GuiDriver.differing(first, later, 2);
+        assertTrue(changed > 50, "the picture refines: " + changed + " pixels changed "
+                + GuiDriver.save(first, "path-first") + " " + GuiDriver.save(later, "path-later"));
+        assertTrue(GuiDriver.differing(whitted, later, 8) > 500, "path traced, not the Whitted picture: "
+                + GuiDriver.save(whitted, "path-whitted"));
+
+        int before = samples();
+        d.menu("Surface", "randomize");
+        waitLong("the count to start again below " + before, () -> shownSamples() >= 0 && shownSamples() < before);
+        d.menu("Render", "pathTraced");
+        d.settle();
+        assertTrue(d.status("spp").endsWith(" spp") && !d.status("spp").contains(" of "),
+                "Whitted again: " + d.status("spp"));
+    }
+}
