@@ -36,7 +36,7 @@ final class SceneTextures {
             JsonNode s = color.get("scale");
             scale = s.asNumbers(2);
             if (!(scale[0] > 0 && scale[1] > 0)) {
-                throw s.error("scale must be 2 numbers > 0 (repeats along u and v), found " + s.text());
+                throw s.error("scale must be 2 numbers > 0 (repeats along u and v), found " + shown(scale));
             }
         }
         double su = scale[0], sv = scale[1];
@@ -77,9 +77,18 @@ final class SceneTextures {
     static double[] albedo(JsonNode n) {
         double[] c = n.asColor();
         if (c[0] > 1 || c[1] > 1 || c[2] > 1) {
-            throw n.error("a physically based colour is an albedo in 0..1, found " + n.text());
+            throw n.error("a physically based colour is an albedo in 0..1, found " + shown(c));
         }
         return c;
+    }
+
+    /** Numbers as the file gives them: {@code [2, 0, 0]}. */
+    private static String shown(double[] v) {
+        StringBuilder out = new StringBuilder("[");
+        for (int i = 0; i < v.length; i++) {
+            out.append(i > 0 ? ", " : "").append(NumberText.show(v[i]));
+        }
+        return out.append(']').toString();
     }
 
     /** The {@code "color"} object of a texture, as {@link #read} reads it. */
