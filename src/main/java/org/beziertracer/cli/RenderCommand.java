@@ -33,6 +33,7 @@ import org.beziertracer.render.Film;
 import org.beziertracer.render.Integrator;
 import org.beziertracer.render.PathOptions;
 import org.beziertracer.render.Pfm;
+import org.beziertracer.render.RadianceHdr;
 import org.beziertracer.render.ToneMap;
 import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.render.FrameSink;
@@ -63,7 +64,7 @@ import picocli.CommandLine.Spec;
  * it is a terminal (not with {@code --quiet}). Bad values end with one error line and exit code 1.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
-        description = "Ray traces a model or scene into a PNG image (or, from the path tracer, a linear .pfm).")
+        description = "Ray traces a model or scene into a PNG image (or a linear .hdr or .pfm, for the path tracer).")
 final class RenderCommand implements Callable<Integer> {
 
     static final int MAX_REPEAT = 1000;
@@ -77,7 +78,7 @@ final class RenderCommand implements Callable<Integer> {
     String model;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT.png",
-            description = "PNG to write (atomically), or .pfm for the linear image; required unless --pixel")
+            description = "PNG to write (atomically), or .hdr (Radiance RGBE) or .pfm for the linear image; required unless --pixel")
     Path output;
 
     @Option(names = "--integrator", paramLabel = "whitted|path",
@@ -292,13 +293,15 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * The image: a .pfm of the linear film; a PNG through the ACES curve for the path tracer, as
+     * The image: a .hdr (Radiance RGBE) or .pfm of the linear film; a PNG through the ACES curve for the path tracer, as
      * the Whitted renderer's clamp-and-encode otherwise.
      */
     void write(RenderResult result, RenderOptions options, PixelWindow window) throws IOException {
         Film film = result.film();
         if (isPfm(output)) {
             AtomicFiles.writeBytes(output, out -> out.write(Pfm.encode(film, window)));
+        } else if (isHdr(output)) {
+            AtomicFiles.writeBytes(output, out -> out.write(RadianceHdr.encode(film, window)));
         } else if (options.path().integrator() == Integrator.PATH) {
             PngWriter.write(output, window.width(), window.height(), ToneMap.argb(film, window, exposure()));
         } else {
@@ -308,6 +311,10 @@ final class RenderCommand implements Callable<Integer> {
 
     private static boolean isPfm(Path p) {
         return p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pfm");
+    }
+
+    private static boolean isHdr(Path p) {
+        return p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".hdr");
     }
 
     /** The options' own checks, before anything is read: one line each. */
@@ -322,8 +329,8 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
         }
         if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")
-                && !isPfm(output)) {
-            throw new IllegalArgumentException(output + ": the output must be a .png (or .pfm) file");
+                && !isPfm(output) && !isHdr(output)) {
+            throw new IllegalArgumentException(output + ": the output must be a .png (or .hdr or .pfm) file");
         }
         tracer();
         if (pixel != null && pathTraced()) {

@@ -14,9 +14,11 @@ import java.util.Locale;
  * @param eta       a conductor's complex index, real part per channel
  * @param k         a conductor's complex index, imaginary part per channel
  * @param metal     the preset a conductor came from (gold, copper, aluminium, silver), or null
+ * @param texture   the colour over (u,v) when it varies (a checker or an image), else null; then
+ *                  {@code r, g, b} hold its mean colour
  */
 public record Surface(Kind kind, double r, double g, double b, double roughness, double ior, Vec eta, Vec k,
-                      String metal) {
+                      String metal, Texture texture) {
 
     /** The kinds of surface, by their scene-file names. */
     public enum Kind {
@@ -71,6 +73,17 @@ public record Surface(Kind kind, double r, double g, double b, double roughness,
                 }
             }
         }
+    }
+
+    /** A surface of one colour (no texture). */
+    public Surface(Kind kind, double r, double g, double b, double roughness, double ior, Vec eta, Vec k, String metal) {
+        this(kind, r, g, b, roughness, ior, eta, k, metal, null);
+    }
+
+    /** This surface with its colour given by {@code t} (null: one colour), {@code r, g, b} set to its mean. */
+    public Surface withTexture(Texture t) {
+        double[] c = t == null ? new double[] {r, g, b} : t.mean();
+        return new Surface(kind, c[0], c[1], c[2], roughness, ior, eta, k, metal, t);
     }
 
     public static Surface diffuse(double r, double g, double b) {

@@ -29,7 +29,7 @@ import org.beziertracer.render.light.SpotSource;
 /**
  * A job's data for the path tracer, built once per render and shared read-only by the workers:
  * one {@link Bsdf} per material ({@link Scene#surfaceOrPhong}), its colours (base, and the second
- * colour of its checker) in {@code colours[6k ..]}, its checker squares, and the lights.
+ * colour of its checker) in {@code colours[6k ..]}, its checker squares, its texture, and the lights.
  *
  * <p>Lights: the scene's area lights and environment; its point lights (or the job's, or with no
  * light at all one at the eye, as the Whitted renderer does) become inverse-square sources whose
@@ -40,6 +40,8 @@ final class PathScene {
     final Bsdf[] bsdfs;
     final double[] colours;
     final int[] checker;
+    /** Per material, its texture or null ({@link ShadingScene#textures}). */
+    final SurfaceTexture[] textures;
     final Light[] lights;
     /** The environment among {@link #lights}, or null. */
     final Light environment;
@@ -54,6 +56,7 @@ final class PathScene {
         bsdfs = new Bsdf[n];
         colours = new double[6 * n];
         checker = new int[n];
+        textures = shading.textures;
         for (int k = 0; k < n; k++) {
             Surface s = scene.surfaceOrPhong(k);
             bsdfs[k] = bsdf(s);
@@ -117,9 +120,17 @@ final class PathScene {
         };
     }
 
-    /** The material colour at a hit into {@code out[0..2]}: the base colour or its checker's second colour. */
+    /**
+     * The material colour at a hit into {@code out[0..2]}: with a forced patch checker (settings) its
+     * colours, else the material's texture at the hit's (u,v), else its colour or its checker's second.
+     */
     void baseColour(int material, Hit hit, int forcedChecker, double[] out) {
-        int squares = hit.kind == Hit.PATCH && forcedChecker > 0 ? forcedChecker : checker[material];
+        boolean forced = hit.kind == Hit.PATCH && forcedChecker > 0;
+        if (textures[material] != null && !forced) {
+            textures[material].lookup(hit.u, hit.v, out);
+            return;
+        }
+        int squares = forced ? forcedChecker : checker[material];
         int o = 6 * material;
         if (squares > 0) {
             long cu = (long) Math.floor(hit.u * squares), cv = (long) Math.floor(hit.v * squares);

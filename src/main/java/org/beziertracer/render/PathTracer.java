@@ -175,7 +175,9 @@ final class PathTracer {
                     double pdfB = bsdf.eval(wox, woy, woz, wix, wiy, wiz, base, f);
                     if (f[0] + f[1] + f[2] > 0 && !shadowed(hx, hy, hz, wiz, ls)) {
                         double lightPdf = pickPdf * ls.pdf;
-                        double w = ls.delta || !opt.mis() ? 1 : powerHeuristic(lightPdf, pdfB);
+                        // at the last bounce no BSDF sample follows to take its share: the light sample counts whole
+                        boolean last = depth + 1 >= opt.maxDepth();
+                        double w = ls.delta || !opt.mis() || last ? 1 : powerHeuristic(lightPdf, pdfB);
                         double k = Math.abs(wiz) * w / lightPdf;
                         lr += wr * f[0] * ls.r * k; lg += wg * f[1] * ls.g * k; lb += wb * f[2] * ls.b * k;
                     }

@@ -7,12 +7,14 @@ import org.beziertracer.intersect.SceneIntersector;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.PointLight;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.Surface;
 
 /**
  * A job's shading data in flat arrays, built once per render and shared read-only by the workers.
  *
  * <p>Layouts: {@code materials[MAT_STRIDE * k + …] = r, g, b, ka, kd, ks, shininess, kr, kt, ior,
- * checkerSquares, r2, g2, b2}; {@code lights[6 * k + …] = x, y, z, r, g, b}. Primitive materials:
+ * checkerSquares, r2, g2, b2} (a textured material's colour is its {@link #textures} entry's at the
+ * hit); {@code lights[6 * k + …] = x, y, z, r, g, b}. Primitive materials:
  * {@code patchMaterial[k]}, {@code planeMaterial[k]}, {@code sphereMaterial[k]}, {@code meshMaterial[k]}.
  *
  * <p>The job's own lights, when it has them, replace the scene's. With no lights in the scene there
@@ -30,6 +32,8 @@ final class ShadingScene {
 
     final SceneIntersector intersector;
     final double[] materials;
+    /** Per material, its texture when its colour varies over (u,v) ({@code Surface.texture}), else null. */
+    final SurfaceTexture[] textures;
     final int[] patchMaterial, planeMaterial, sphereMaterial, meshMaterial;
     final double[] lights;
     final int lightCount;
@@ -58,6 +62,11 @@ final class ShadingScene {
                     noSecond ? CHECKER_LIGHT : m.r2(), noSecond ? CHECKER_LIGHT : m.g2(),
                     noSecond ? CHECKER_LIGHT : m.b2()};
             System.arraycopy(row, 0, materials, MAT_STRIDE * k, MAT_STRIDE);
+        }
+        textures = new SurfaceTexture[mats.size()];
+        for (int k = 0; k < mats.size(); k++) {
+            Surface surface = scene.surface(k);
+            textures[k] = surface != null && surface.texture() != null ? new SurfaceTexture(surface.texture()) : null;
         }
         patchMaterial = new int[scene.patchCount()];
         for (int k = 0; k < patchMaterial.length; k++) {

@@ -440,10 +440,16 @@ public final class WhittedTracer {
         return top;
     }
 
-    /** Material colour at the hit, or its checker colour. */
+    /** Material colour at the hit: the settings' patch checker, else its texture's, else its own or its checker's. */
     private void baseColour(int m, double[] out) {
         double[] mat = s.materials;
-        int squares = hit.kind == Hit.PATCH && s.patchChecker > 0 ? s.patchChecker : (int) mat[m + ShadingScene.CHECKER];
+        boolean forced = hit.kind == Hit.PATCH && s.patchChecker > 0;
+        SurfaceTexture texture = s.textures[m / ShadingScene.MAT_STRIDE];
+        if (texture != null && !forced) {
+            texture.lookup(hit.u, hit.v, out);
+            return;
+        }
+        int squares = forced ? s.patchChecker : (int) mat[m + ShadingScene.CHECKER];
         boolean second = false;
         if (squares > 0) {
             long cu = (long) Math.floor(hit.u * squares), cv = (long) Math.floor(hit.v * squares);

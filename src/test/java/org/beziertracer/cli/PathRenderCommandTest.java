@@ -100,7 +100,7 @@ class PathRenderCommandTest {
                 "render", scene, "--pixel", "1,1", "--integrator", "path");
         assertError("--difference-to compares Whitted renders", "render", scene, "-o", out, "--integrator", "path",
                 "--difference-to", "newton");
-        assertError("the output must be a .png (or .pfm) file", "render", scene, "-o", dir.resolve("x.exr").toString());
+        assertError("the output must be a .png (or .hdr or .pfm) file", "render", scene, "-o", dir.resolve("x.exr").toString());
         assertTrue(Files.notExists(dir.resolve("x.png")), "nothing written");
     }
 

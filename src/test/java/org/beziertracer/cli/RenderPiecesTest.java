@@ -9,14 +9,20 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import javax.imageio.ImageIO;
 
 import org.beziertracer.UserMessages;
+import org.beziertracer.model.HdrImage;
+import org.beziertracer.model.io.HdrReader;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code render --crop} and {@code --tile} (issue 37): the PNG of a piece holds the whole render's pixels. */
+/**
+ * {@code render --crop} and {@code --tile} (issue 37): the PNG of a piece holds the whole render's
+ * pixels, and so do its linear {@code .pfm} and {@code .hdr} (issue 34).
+ */
 class RenderPiecesTest {
 
     @TempDir
@@ -52,6 +58,58 @@ class RenderPiecesTest {
             for (int x = 0; x < 21; x++) {
                 for (int c = 0; c < 3; c++) {
                     assertEquals(all[3 * ((y + 5) * 50 + x + 9) + c], piece[3 * (y * 21 + x) + c], "pixel " + x + "," + y);
+                }
+            }
+        }
+    }
+
+    @Test
+    void aPathTracedHdrHoldsThePfmsFloatsWithinRgbePrecisionAndItsPiecesTheWholesPixels() throws IOException {
+        String[] path = {"--integrator", "path", "--depth", "4"};
+        assertEquals(0, Run.of(args(dir.resolve("whole.pfm"), path)).code());
+        Run r = Run.of(args(dir.resolve("whole.hdr"), path));
+        assertEquals(0, r.code(), r.err());
+        float[] linear = pfm(dir.resolve("whole.pfm"), 50, 36);
+        HdrImage whole = HdrReader.read(dir.resolve("whole.hdr"));
+        assertEquals(50, whole.width());
+        assertEquals(36, whole.height());
+        for (int p = 0; p < 50 * 36; p++) {
+            double max = Math.max(linear[3 * p], Math.max(linear[3 * p + 1], linear[3 * p + 2]));
+            for (int c = 0; c < 3; c++) {
+                assertEquals(linear[3 * p + c], whole.get(p % 50, p / 50, c), max / 256, "pixel " + p + " channel " + c);
+            }
+        }
+        assertTrue(max(whole) > 0, "the teapot is lit");
+        Run crop = Run.of(args(dir.resolve("crop.hdr"), concat(path, "--crop", "9,5,30,21")));
+        assertEquals(0, crop.code(), crop.err());
+        assertPiece(whole, HdrReader.read(dir.resolve("crop.hdr")), 9, 5, 21, 16);
+        Run tile = Run.of(args(dir.resolve("tile.hdr"), concat(path, "--tile", "5/5")));
+        assertEquals(0, tile.code(), tile.err());
+        assertPiece(whole, HdrReader.read(dir.resolve("tile.hdr")), 0, 28, 50, 8);
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of(), files.filter(f -> f.getFileName().toString().contains(".tmp")).toList(),
+                    "atomic saves leave no temporary file");
+        }
+    }
+
+    private static double max(HdrImage image) {
+        double max = 0;
+        for (int y = 0; y < image.height(); y++) {
+            for (int x = 0; x < image.width(); x++) {
+                max = Math.max(max, image.get(x, y, 1));
+            }
+        }
+        return max;
+    }
+
+    /** The piece holds the whole image's pixels from {@code (x0, y0)}, to the float. */
+    private static void assertPiece(HdrImage whole, HdrImage piece, int x0, int y0, int w, int h) {
+        assertEquals(w, piece.width());
+        assertEquals(h, piece.height());
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(whole.get(x0 + x, y0 + y, c), piece.get(x, y, c), "pixel " + x + "," + y);
                 }
             }
         }

@@ -55,7 +55,7 @@ class UsageErrorsTest {
         assertEquals(0, help.code());
         String text = help.out().replaceAll("\\s+", " ");
         var d = org.beziertracer.model.RenderSettings.defaults();
-        assertTrue(text.contains("PNG to write (atomically), or .pfm for the linear image; required unless --pixel"), text);
+        assertTrue(text.contains("PNG to write (atomically), or .hdr (Radiance RGBE) or .pfm for the linear image; required unless --pixel"), text);
         assertTrue(text.contains("for the path tracer the most bounces of a path, 1.."
                 + org.beziertracer.render.PathOptions.MAX_DEPTH + " (default "
                 + org.beziertracer.render.PathOptions.defaults().maxDepth() + ")"), "path depth: " + text);

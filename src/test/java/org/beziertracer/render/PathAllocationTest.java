@@ -7,17 +7,19 @@ import java.lang.management.ManagementFactory;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.AreaLight;
 import org.beziertracer.model.Environment;
+import org.beziertracer.model.HdrImage;
 import org.beziertracer.model.Material;
 import org.beziertracer.model.Plane;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.Surface;
+import org.beziertracer.model.Texture;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
 
 /**
  * The path tracer's hot path allocates nothing: after a warm-up, tracing thousands of paths
- * (every BSDF kind, area lights, the environment) adds no more to the thread's allocated bytes than
+ * (every BSDF kind, image and checker textures, area lights, the environment) adds no more to the thread's allocated bytes than
  * the measuring itself costs — far less than one small object per path.
  */
 class PathAllocationTest {
@@ -26,8 +28,10 @@ class PathAllocationTest {
     void tracingPathsAllocatesNothing() {
         Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addMaterial(Material.DEFAULT)
                 .addMaterial(Material.DEFAULT).addPatches(Models.sphere().patches(), 0)
-                .surface(0, Surface.dielectric(1.5, 0.2)).surface(1, Surface.plastic(0.5, 0.5, 0.5, 0.3))
-                .surface(2, Surface.conductor(new Surface.Vec(0.2, 0.9, 1.1), new Surface.Vec(3.9, 2.4, 2.1), 0.3))
+                .surface(0, Surface.dielectric(1.5, 0.2)).surface(1, Surface.plastic(0.5, 0.5, 0.5, 0.3).withTexture(new Texture.Image("grain.png",
+                        new HdrImage(2, 2, new float[] {0.1f, 0.2f, 0.3f, 0.9f, 0.8f, 0.7f, 0.5f, 0.5f, 0.5f, 0, 1, 0}), 3, 2)))
+                .surface(2, Surface.conductor(new Surface.Vec(0.2, 0.9, 1.1), new Surface.Vec(3.9, 2.4, 2.1), 0.3)
+                        .withTexture(new Texture.Checker(new Surface.Vec(1, 1, 1), new Surface.Vec(0.5, 0.4, 0.3), 4, 4)))
                 .addPlane(new Plane(new Vec3(0, 0, -1), Vec3.Z, 1, 1))
                 .addPlane(new Plane(new Vec3(0, 3, 0), new Vec3(0, -1, 0), 2, 1))
                 .addAreaLight(AreaLight.sphere(new Vec3(2, -2, 3), 0.5, 8, 8, 8, Double.NaN))

@@ -144,6 +144,25 @@ class PathTracerTest {
     }
 
     @Test
+    void theLastBounceKeepsAllOfItsLightSamplesShare() {
+        // a big rect light just above the plane: at the last bounce (depth 1, no BSDF sample follows) the
+        // light sample must count whole, not with the MIS weight it would share with that sample.
+        // L_o = albedo · L · 4 F, F the form factor of a quarter a × a at height h (Howell's table, C-11)
+        double a = 2, h = 0.5, light = 3, x = a / h, r = Math.sqrt(1 + x * x);
+        double quarter = (2 * x / r * Math.atan(x / r)) / (2 * Math.PI);
+        Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPlane(new Plane(Vec3.ZERO, Vec3.Z, 0, 1))
+                .surface(0, Surface.diffuse(0.8, 0.8, 0.8))
+                .addAreaLight(AreaLight.rect(new Vec3(-a, -a, h), new Vec3(0, 2 * a, 0), new Vec3(2 * a, 0, 0), light, light,
+                        light, Double.NaN)).build();
+        Camera foot = Camera.lookAt(new Vec3(0.3, 0, 0.2), Vec3.ZERO, Vec3.Z, 0.5);
+        double expected = 0.8 * light * 4 * quarter;
+        for (int depth : new int[] {1, 2}) {
+            double mean = stats(Renderer.renderOnce(job(scene, 8, 8, 1024, path(depth), foot, 2, 8)).film().linearRgb())[0];
+            assertEquals(expected, mean, PERCENT * expected, "depth " + depth);
+        }
+    }
+
+    @Test
     void aSpotLightLightsItsFootAsAPointSourceAndNothingOutsideItsCone() {
         // intensity C·d², d = h (the plane's bounds are centred on its point): E = C, L = albedo · C / π
         Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPlane(new Plane(Vec3.ZERO, Vec3.Z, 0, 1))

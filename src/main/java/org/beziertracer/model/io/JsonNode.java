@@ -208,6 +208,8 @@ final class JsonNode {
 
     boolean isNumber() { return value.isJsonPrimitive() && value.getAsJsonPrimitive().isNumber(); }
 
+    boolean isObject() { return value.isJsonObject(); }
+
     boolean isString() { return value.isJsonPrimitive() && value.getAsJsonPrimitive().isString(); }
 
     /** A finite number. */

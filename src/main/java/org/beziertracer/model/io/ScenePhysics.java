@@ -13,6 +13,7 @@ import org.beziertracer.model.Scene;
 import org.beziertracer.model.SpotLight;
 import java.util.List;
 import org.beziertracer.model.Surface;
+import org.beziertracer.model.Texture;
 
 /**
  * The scene file's keys for the path tracer (docs/scene-file.md): typed materials
@@ -38,8 +39,11 @@ final class ScenePhysics {
         }
     }
 
-    /** A typed material object: its surface. */
-    static Surface surface(JsonNode n) {
+    /**
+     * A typed material object: its surface. Its {@code "color"} is {@code [r, g, b]} or a texture
+     * ({@link SceneTextures}), whose image file resolves against {@code baseDir}.
+     */
+    static Surface surface(JsonNode n, java.nio.file.Path baseDir) {
         n.object(MATERIAL_KEYS);
         JsonNode typeNode = n.require("type");
         String type = typeNode.asString();
@@ -50,15 +54,14 @@ final class ScenePhysics {
             throw typeNode.error("unknown material type " + Echo.quote(type)
                     + " (expected diffuse, conductor, dielectric or plastic)");
         }
-        double[] c = n.has("color") ? n.get("color").asColor() : kind == Surface.Kind.DIFFUSE
-                || kind == Surface.Kind.PLASTIC ? new double[] {0.8, 0.8, 0.8} : new double[] {1, 1, 1};
-        if (n.has("color")) {
-            for (double v : c) {
-                if (v > 1) {
-                    throw n.get("color").error("a physically based colour is an albedo in 0..1, found " + n.get("color").text());
-                }
-            }
+        JsonNode color = n.get("color");
+        Texture texture = color != null && color.isObject() ? SceneTextures.read(color, baseDir) : null;
+        if (texture != null && n.has("checker")) {
+            throw n.get("checker").error("give either a textured \"color\" or \"checker\", not both");
         }
+        double[] c = texture != null ? texture.mean() : color != null ? SceneTextures.albedo(color)
+                : kind == Surface.Kind.DIFFUSE || kind == Surface.Kind.PLASTIC ? new double[] {0.8, 0.8, 0.8}
+                : new double[] {1, 1, 1};
         double roughness = kind == Surface.Kind.DIFFUSE ? 1 : 0;
         if (n.has("roughness")) {
             JsonNode r = n.get("roughness");
@@ -109,7 +112,7 @@ final class ScenePhysics {
         Surface.Vec fe = eta, fk = k;
         String fm = metal;
         double fr = roughness, fi = ior;
-        return SceneReader.build(n, () -> new Surface(kind, c[0], c[1], c[2], fr, fi, fe, fk, fm));
+        return SceneReader.build(n, () -> new Surface(kind, c[0], c[1], c[2], fr, fi, fe, fk, fm, texture));
     }
 
     private static double[] positive(JsonNode n, boolean strict) {

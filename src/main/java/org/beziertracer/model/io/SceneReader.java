@@ -69,7 +69,8 @@ final class SceneReader {
             for (String name : map.keys()) {
                 named.put(name, materials.size());
                 JsonNode m = map.get(name);
-                addMaterial(material(m), typed(m));
+                Surface surface = typed(m);
+                addMaterial(material(m, surface), surface);
             }
         }
         for (JsonNode m : list(root, "models")) {
@@ -361,8 +362,8 @@ final class SceneReader {
     }
 
     /** The surface of a material object with a {@code "type"}, else null (a Phong material). */
-    private static Surface typed(JsonNode n) {
-        return !n.isString() && n.keys().contains("type") ? ScenePhysics.surface(n) : null;
+    private Surface typed(JsonNode n) {
+        return !n.isString() && n.keys().contains("type") ? ScenePhysics.surface(n, baseDir) : null;
     }
 
     /** Index of a material reference: absent = default, a name, or an inline object. */
@@ -378,7 +379,8 @@ final class SceneReader {
             }
             return index;
         }
-        return indexOrAdd(material(ref), typed(ref));
+        Surface surface = typed(ref);
+        return indexOrAdd(material(ref, surface), surface);
     }
 
     private int indexOrAdd(Material m, Surface surface) {
@@ -390,12 +392,12 @@ final class SceneReader {
         return addMaterial(m, surface);
     }
 
-    private static Material material(JsonNode n) {
+    /** The Phong material of a material object; {@code surface} is its typed surface already read, or null. */
+    private static Material material(JsonNode n, Surface surface) {
         if (n.isString()) {
             throw n.expected("a material object");
         }
-        if (n.keys().contains("type")) {
-            Surface surface = ScenePhysics.surface(n);
+        if (surface != null) {
             int checker = n.has("checker") ? n.get("checker").asInt() : 0;
             double[] c2 = n.has("color2") ? n.get("color2").asColor() : new double[] {0.95, 0.95, 0.95};
             return build(n, () -> ScenePhysics.phong(surface, checker, c2));

@@ -199,7 +199,7 @@ final class SceneWriter {
     private static JsonObject typed(Surface s, Material m) {
         JsonObject o = new JsonObject();
         o.addProperty("type", s.kind().label());
-        o.add("color", numbers(s.r(), s.g(), s.b()));
+        o.add("color", s.texture() != null ? SceneTextures.write(s.texture()) : numbers(s.r(), s.g(), s.b()));
         o.add("roughness", number(s.roughness()));
         if (s.kind() == Surface.Kind.DIELECTRIC || s.kind() == Surface.Kind.PLASTIC) {
             o.add("ior", number(s.ior()));
