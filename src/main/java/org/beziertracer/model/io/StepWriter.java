@@ -29,7 +29,8 @@ import org.beziertracer.model.TrimRegion;
  * A surface without an outer trim loop gets its parameter range as the outer loop: four lines
  * trimmed by parameter values, which {@link StepReader} reads back as the range. A region of
  * several outer loops becomes one face per outer loop, each with every hole (a face has one
- * outer bound). Reals are written by {@link Double#toString}, the shortest text that reads back
+ * outer bound). Points, directions and curves are written once and referred to wherever they
+ * recur (neighbouring faces share their boundary points). Reals are written by {@link Double#toString}, the shortest text that reads back
  * to the same {@code double}, so {@link StepReader} gives back the same nets, weights, knots and
  * trims to the last bit.
  *
@@ -57,8 +58,31 @@ public final class StepWriter {
         w.emit(out);
     }
 
+    /** Geometry written once and referred to wherever it recurs (points shared by neighbouring faces, the range's lines). */
+    private final java.util.Map<String, Integer> shared = new java.util.HashMap<>();
+
+    private static final List<String> SHAREABLE = List.of("CARTESIAN_POINT(", "DIRECTION(", "VECTOR(", "LINE(",
+            "TRIMMED_CURVE(", "B_SPLINE_CURVE_WITH_KNOTS(", "(BOUNDED_CURVE()", "DEFINITIONAL_REPRESENTATION(");
+
+    /**
+     * Adds an entity; a geometric one (a point, direction, curve: never a surface, whose faces
+     * must stay apart, nor topology) already written with the same text is referred to again.
+     */
     private int add(String text) {
+        boolean shareable = false;
+        for (String prefix : SHAREABLE) {
+            shareable |= text.startsWith(prefix);
+        }
+        if (shareable) {
+            Integer id = shared.get(text);
+            if (id != null) {
+                return id;
+            }
+        }
         entities.add(text);
+        if (shareable) {
+            shared.put(text, entities.size());
+        }
         return entities.size();
     }
 
