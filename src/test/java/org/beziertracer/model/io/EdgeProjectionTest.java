@@ -130,4 +130,29 @@ class EdgeProjectionTest {
         assertTrue(!tri.contains(0.55, 0.5, scratch), "beyond the hypotenuse");
         assertTrue(!tri.contains(0.05, 0.5, scratch), "left of the triangle");
     }
+
+    @Test
+    void anIgesTrimmedSurfaceWhoseCurvesAreInModelSpaceOnlyIsProjected() throws Exception {
+        Path file = Path.of(EdgeProjectionTest.class.getResource("/iges/edges3d.igs").toURI());
+        IgesReader.Model m = IgesReader.readModel(TextSource.of(Files.readString(file), "edges3d.igs"));
+        assertTrue(m.skipped().isEmpty(), "skipped: " + m.skipped());
+        assertEquals(1, m.surfaces().size());
+        TrimRegion t = m.surfaces().get(0).trim();
+        assertEquals(1, t.outer().size());
+        assertEquals(1, t.holes().size());
+        double[] scratch = new double[TrimCurves.SCRATCH_LENGTH];
+        TrimCurves c = TrimCurves.of(t);
+        // the square (2,2)..(8,8) of x = 10 u, y = 10 v, less the circle of radius 1 about (5,5)
+        assertTrue(c.contains(0.3, 0.3, scratch));
+        assertTrue(c.contains(0.5, 0.61, scratch), "just outside the hole");
+        assertTrue(!c.contains(0.5, 0.59, scratch), "just inside the hole");
+        assertTrue(!c.contains(0.19, 0.5, scratch), "left of the square");
+        assertTrue(!c.contains(0.5, 0.81, scratch), "above the square");
+        // the projected circle lies on the circle to the stated tolerance
+        for (double[] line : TrimCurves.of(new TrimRegion(List.of(), t.holes())).polylines(64)) {
+            for (int k = 0; k < line.length; k += 2) {
+                assertEquals(0.1, Math.hypot(line[k] - 0.5, line[k + 1] - 0.5), 1e-6, "at (" + line[k] + ", " + line[k + 1] + ")");
+            }
+        }
+    }
 }
