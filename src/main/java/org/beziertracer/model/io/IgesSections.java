@@ -183,6 +183,31 @@ final class IgesSections {
     }
 
     private int number(String raw, int from, int to, int line, String what) {
+        // in place: blanks, an optional sign, at most 9 digits, blanks (what fixed columns hold)
+        int i = from;
+        while (i < to && raw.charAt(i) == ' ') {
+            i++;
+        }
+        boolean negative = i < to && raw.charAt(i) == '-';
+        if (i < to && (negative || raw.charAt(i) == '+')) {
+            i++;
+        }
+        int start = i, v = 0;
+        while (i < to && i - start < 9 && raw.charAt(i) >= '0' && raw.charAt(i) <= '9') {
+            v = 10 * v + (raw.charAt(i++) - '0');
+        }
+        int end = i;
+        while (i < to && raw.charAt(i) == ' ') {
+            i++;
+        }
+        if (i == to && end > start) {
+            return negative ? -v : v;
+        }
+        return slowNumber(raw, from, to, line, what);
+    }
+
+    /** {@link #number} for what the fast form does not cover: empty fields, other blanks, errors. */
+    private int slowNumber(String raw, int from, int to, int line, String what) {
         String f = raw.substring(from, to).trim();
         if (f.isEmpty()) {
             return 0;
@@ -204,7 +229,7 @@ final class IgesSections {
             throw source.error(line, "parameter line " + seq + " points to directory entry " + owner
                     + ", whose data is lines " + e.paramStart + "–" + (e.paramStart + Math.max(1, e.paramLines) - 1));
         }
-        StringBuilder sb = params.computeIfAbsent(owner, k -> new StringBuilder());
+        StringBuilder sb = params.computeIfAbsent(owner, k -> new StringBuilder(64 * Math.max(1, Math.min(e.paramLines, 1024))));
         if (sb.length() == 0) {
             paramLine.put(owner, line);
         }
