@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.beziertracer.model.Material;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.TrimCurve;
 import org.beziertracer.model.TrimLoop;
@@ -32,7 +33,9 @@ import org.beziertracer.model.TrimRegion;
  * outer bound). Points, directions and curves are written once and referred to wherever they
  * recur (neighbouring faces share their boundary points). Reals are written by {@link Double#toString}, the shortest text that reads back
  * to the same {@code double}, so {@link StepReader} gives back the same nets, weights, knots and
- * trims to the last bit.
+ * trims to the last bit. A surface whose material is not the default has its diffuse colour
+ * written as a {@code STYLED_ITEM} on each of its faces (one style per colour, channels above 1
+ * clamped), gathered in a {@code MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION}.
  *
  * <p>References: ISO 10303-21 (the file), ISO 10303-42 (geometry, topology), ISO 10303-214;
  * CAx-IF <i>Recommended Practices for AP203/AP214</i> (the product structure).
@@ -53,8 +56,9 @@ public final class StepWriter {
         }
         StepWriter w = new StepWriter();
         int context3d = w.contexts();
-        IgesWriter.eachSurface(scene.patches(), w::face);
+        IgesWriter.eachSurface(scene.patches(), k -> w.material = scene.materials().get(scene.patchMaterial(k)), w::face);
         w.product(context3d);
+        w.styles(context3d);
         w.emit(out);
     }
 
@@ -125,6 +129,41 @@ public final class StepWriter {
         return ctx;
     }
 
+    /** The material of the surface being written (its first patch's). */
+    private Material material = Material.DEFAULT;
+    private final List<Integer> styled = new ArrayList<>();
+    private final java.util.Map<Material, Integer> styleOf = new java.util.HashMap<>();
+
+    /**
+     * The presentation style of a material's diffuse colour, made once a colour (CAx-IF
+     * recommended practice: PRESENTATION_STYLE_ASSIGNMENT → SURFACE_STYLE_USAGE(.BOTH.) →
+     * SURFACE_SIDE_STYLE → SURFACE_STYLE_FILL_AREA → FILL_AREA_STYLE → FILL_AREA_STYLE_COLOUR →
+     * COLOUR_RGB).
+     */
+    private int style(Material m) {
+        Integer known = styleOf.get(m);
+        if (known != null) {
+            return known;
+        }
+        int rgb = add("COLOUR_RGB(''," + real(Math.min(1, m.r())) + "," + real(Math.min(1, m.g())) + ","
+                + real(Math.min(1, m.b())) + ")");
+        int fillColour = add("FILL_AREA_STYLE_COLOUR(''," + ref(rgb) + ")");
+        int fill = add("FILL_AREA_STYLE('',(" + ref(fillColour) + "))");
+        int area = add("SURFACE_STYLE_FILL_AREA(" + ref(fill) + ")");
+        int side = add("SURFACE_SIDE_STYLE('',(" + ref(area) + "))");
+        int usage = add("SURFACE_STYLE_USAGE(.BOTH.," + ref(side) + ")");
+        int psa = add("PRESENTATION_STYLE_ASSIGNMENT((" + ref(usage) + "))");
+        styleOf.put(m, psa);
+        return psa;
+    }
+
+    /** The styled faces gathered in one presentation representation (AP214's colour container). */
+    private void styles(int context3d) {
+        if (!styled.isEmpty()) {
+            add("MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION(''," + refs(styled) + "," + ref(context3d) + ")");
+        }
+    }
+
     /** The product, its definition and its shape, holding the shell of every face. */
     private void product(int context3d) {
         int app = add("APPLICATION_CONTEXT('automotive design')");
@@ -178,7 +217,11 @@ public final class StepWriter {
             List<Integer> bounds = new ArrayList<>();
             bounds.add(add("FACE_OUTER_BOUND(''," + ref(outer) + ",.T.)"));
             bounds.addAll(holes);
-            faces.add(add("ADVANCED_FACE(''," + refs(bounds) + "," + ref(surface) + ",.T.)"));
+            int face = add("ADVANCED_FACE(''," + refs(bounds) + "," + ref(surface) + ",.T.)");
+            faces.add(face);
+            if (!material.equals(Material.DEFAULT)) {
+                styled.add(add("STYLED_ITEM('colour',(" + ref(style(material)) + ")," + ref(face) + ")"));
+            }
         }
     }
 
