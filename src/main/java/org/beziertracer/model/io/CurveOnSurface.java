@@ -42,19 +42,11 @@ final class CurveOnSurface {
     /** The surface's Bézier patches in homogeneous form {@code (wx, wy, wz, w)}, made once per surface. */
     record Patches(int p, int q, BezierDecomposition.Patches pieces, boolean rational) {
         static Patches of(SplinePoint s) {
-            int n = s.countU() * s.countV();
-            double[] h = new double[4 * n], pts = s.points(), w = s.weights();
-            for (int k = 0; k < n; k++) {
-                double wk = w == null ? 1 : w[k];
-                h[4 * k] = wk * pts[3 * k];
-                h[4 * k + 1] = wk * pts[3 * k + 1];
-                h[4 * k + 2] = wk * pts[3 * k + 2];
-                h[4 * k + 3] = wk;
-            }
+            double[] h = SplinePoint.homogeneous(s.points(), s.weights());
             double[] ku = s.knotsU(), kv = s.knotsV();
             int p = s.p(), q = s.q();
             return new Patches(p, q, BezierDecomposition.surface(p, q, ku, kv, s.countU(), s.countV(), h, 4,
-                    ku[p], ku[s.countU()], kv[q], kv[s.countV()]), w != null);
+                    ku[p], ku[s.countU()], kv[q], kv[s.countV()]), s.weights() != null);
         }
     }
 

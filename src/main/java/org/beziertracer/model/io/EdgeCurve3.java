@@ -114,26 +114,7 @@ final class EdgeCurve3 {
         if (distance(at(hi), p) <= tol) {
             return hi;
         }
-        int samples = 256;
-        double best = lo, bestD = Double.POSITIVE_INFINITY;
-        for (int k = 0; k <= samples; k++) {
-            double t = lo + (hi - lo) * k / samples, d = distance(at(t), p);
-            if (d < bestD) {
-                bestD = d;
-                best = t;
-            }
-        }
-        double a = Math.max(lo, best - (hi - lo) / samples), b = Math.min(hi, best + (hi - lo) / samples);
-        double gr = (Math.sqrt(5) - 1) / 2;
-        for (int k = 0; k < 100 && b - a > 1e-15 * Math.max(1, Math.abs(a)); k++) {
-            double x1 = b - gr * (b - a), x2 = a + gr * (b - a);
-            if (distance(at(x1), p) <= distance(at(x2), p)) {
-                b = x2;
-            } else {
-                a = x1;
-            }
-        }
-        return (a + b) / 2;
+        return StepTrims.minimum(t -> distance(at(t), p), lo, hi, 256, 100);
     }
 
     private static double distance(double[] a, double[] b) {
