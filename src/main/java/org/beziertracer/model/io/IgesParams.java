@@ -37,9 +37,16 @@ final class IgesParams {
 
     /** Field bounds as the parse finds them. */
     private static final class Bounds {
-        int[] from = new int[16], to = new int[16];
-        boolean[] hollerith = new boolean[16];
+        int[] from, to;
+        boolean[] hollerith;
         int size;
+
+        /** Room for {@code capacity} fields (grown when a record holds more). */
+        Bounds(int capacity) {
+            from = new int[capacity];
+            to = new int[capacity];
+            hollerith = new boolean[capacity];
+        }
 
         void add(int a, int b, boolean h) {
             if (size == from.length) {
@@ -60,7 +67,7 @@ final class IgesParams {
      * @param what what the record is, for messages ({@code "entity 128 (directory line 7)"})
      */
     static IgesParams parse(String text, char delimiter, char end, TextSource source, int line, String what) {
-        Bounds fields = new Bounds();
+        Bounds fields = new Bounds(Math.max(16, text.length() / 6)); // an estimate: B-spline records take about 6 characters a field
         int k = 0, n = text.length();
         boolean ended = false;
         while (k <= n && !ended) {

@@ -219,8 +219,17 @@ final class IgesSections {
         }
     }
 
+    /** The entry and text of the parameter line before (an entity's lines come together): no map look-up for the rest. */
+    private Entry lastEntry;
+    private StringBuilder lastText;
+
     private void parameterLine(String raw, int line, int seq) {
         int owner = number(raw, 65, 72, line, "directory pointer (columns 66–72) of the parameter line");
+        if (lastEntry != null && lastEntry.sequence == owner && seq > lastEntry.paramStart
+                && seq < lastEntry.paramStart + Math.max(1, lastEntry.paramLines)) {
+            appendParameters(lastText, raw, line, owner);
+            return;
+        }
         Entry e = entries.get(owner);
         if (e == null) {
             throw source.error(line, "the parameter line points to directory entry " + owner + ", which does not exist");
@@ -229,10 +238,17 @@ final class IgesSections {
             throw source.error(line, "parameter line " + seq + " points to directory entry " + owner
                     + ", whose data is lines " + e.paramStart + "–" + (e.paramStart + Math.max(1, e.paramLines) - 1));
         }
-        StringBuilder sb = params.computeIfAbsent(owner, k -> new StringBuilder(64 * Math.max(1, Math.min(e.paramLines, 1024))));
+        StringBuilder sb = params.computeIfAbsent(owner,
+                k -> new StringBuilder(64 * Math.max(1, Math.min(e.paramLines, 1024))));
         if (sb.length() == 0) {
             paramLine.put(owner, line);
         }
+        lastEntry = e;
+        lastText = sb;
+        appendParameters(sb, raw, line, owner);
+    }
+
+    private void appendParameters(StringBuilder sb, String raw, int line, int owner) {
         sb.append(raw, 0, 64);
         if (sb.length() > source.limits().lineChars() * 64L) {
             throw source.error(line, "the parameter data of directory entry " + owner + " is too long");
