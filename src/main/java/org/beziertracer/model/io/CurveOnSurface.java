@@ -334,12 +334,21 @@ final class CurveOnSurface {
         return h;
     }
 
-    static double binomial(int n, int k) {
-        double c = 1;
-        for (int i = 1; i <= k; i++) {
-            c = c * (n - k + i) / i;
+    /** Pascal's triangle up to the largest degree a product reaches, exact (below 2^53). */
+    private static final double[][] BINOMIAL = new double[MAX_DEGREE + 1][];
+
+    static {
+        for (int n = 0; n <= MAX_DEGREE; n++) {
+            BINOMIAL[n] = new double[n + 1];
+            BINOMIAL[n][0] = BINOMIAL[n][n] = 1;
+            for (int k = 1; k < n; k++) {
+                BINOMIAL[n][k] = BINOMIAL[n - 1][k - 1] + BINOMIAL[n - 1][k];
+            }
         }
-        return Math.rint(c);
+    }
+
+    static double binomial(int n, int k) {
+        return BINOMIAL[n][k];
     }
 
     /**
