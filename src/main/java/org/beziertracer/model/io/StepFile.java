@@ -179,9 +179,18 @@ final class StepFile {
     }
 
     /** A keyword (entity or section name, letters, digits, '_' and '-'), upper case as written. */
+    /** The names read so far, each once, as the JVM's interned strings (the types' literals in the code are the same objects). */
+    private final Map<String, String> names = new HashMap<>();
+    private final StringBuilder keywordText = new StringBuilder(32);
+
+    /**
+     * A name; one string object per distinct name, the interned one, so entities share their
+     * type names and {@link Entity#is} meets the code's literals by identity.
+     */
     private String keyword() throws IOException {
         skipSpace();
-        StringBuilder sb = new StringBuilder();
+        StringBuilder sb = keywordText;
+        sb.setLength(0);
         while (Character.isLetterOrDigit(c) || c == '_' || c == '-') {
             sb.append((char) c);
             if (sb.length() > maxToken) {
@@ -189,7 +198,13 @@ final class StepFile {
             }
             next();
         }
-        return sb.toString();
+        String name = sb.toString();
+        String known = names.get(name);
+        if (known == null) {
+            known = names.size() < 100_000 ? name.intern() : name; // a file of endless made-up names interns no more
+            names.put(known, known);
+        }
+        return known;
     }
 
     // ---- structure
