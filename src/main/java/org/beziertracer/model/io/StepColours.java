@@ -37,12 +37,16 @@ final class StepColours {
     /** Each coloured face's id → its {@code r, g, b} in [0, 1]. */
     static Map<Integer, double[]> of(StepFile file) {
         Map<Integer, double[]> onFace = new HashMap<>(), onBody = new HashMap<>();
-        for (int pass = 0; pass < 2; pass++) { // plain styled items, then the over-riding ones
-            for (StepFile.Entity e : file.order) {
-                boolean overriding = e.is("OVER_RIDING_STYLED_ITEM");
-                if (!(overriding || e.is("STYLED_ITEM")) || overriding != (pass == 1)) {
-                    continue;
-                }
+        List<StepFile.Entity> plain = new java.util.ArrayList<>(), overriding = new java.util.ArrayList<>();
+        for (StepFile.Entity e : file.order) {
+            if (e.is("OVER_RIDING_STYLED_ITEM")) {
+                overriding.add(e);
+            } else if (e.is("STYLED_ITEM")) {
+                plain.add(e);
+            }
+        }
+        for (List<StepFile.Entity> items : List.of(plain, overriding)) { // plain styled items, then the over-riding ones
+            for (StepFile.Entity e : items) {
                 List<Object> p = e.parts().get(0).params();
                 if (p.size() < 3 || !(p.get(1) instanceof List<?> styles) || !(p.get(2) instanceof StepFile.Ref item)) {
                     continue;

@@ -75,8 +75,10 @@ final class StepFile {
 
         /** The part of type {@code type}, or null. */
         Part part(String type) {
-            for (Part p : parts) {
-                if (p.type().equals(type)) {
+            for (int k = 0, n = parts.size(); k < n; k++) { // no iterator: called for every entity, often
+                Part p = parts.get(k);
+                String t = p.type();
+                if (t == type || t.equals(type)) {
                     return p;
                 }
             }
