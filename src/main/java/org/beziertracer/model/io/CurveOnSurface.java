@@ -23,8 +23,9 @@ import org.beziertracer.model.TrimCurve;
  * {@code A = (U − aW)/(b−a)}, {@code Ā = (bW − U)/(b−a)}, and the same in v, so the image is the
  * Bézier curve {@code Σ C(p,i)C(q,j) A^i Ā^(p−i) B^j B̄^(q−j) P^w_ij} of degree
  * {@code d·(p + q)} (a factor drops out when u or v is constant along the curve: an iso-parameter
- * line gives the iso-curve of degree {@code p} or {@code q}). The pieces, raised to one degree,
- * join at knots of full multiplicity. Exact but for rounding (the crossing parameters are
+ * line gives the iso-curve of degree {@code p} or {@code q}). The pieces are then lowered to
+ * the least degree all of them have exactly (a polygon trim along iso-lines gives the surface's
+ * degree) and join at knots of full multiplicity. Exact but for rounding (the crossing parameters are
  * rounded to the nearest double); polynomial when neither the surface nor the curve is rational.
  * Stateless.
  */
@@ -90,7 +91,11 @@ final class CurveOnSurface {
                 from = to;
             }
         }
-        return join(degree, bez, breaks, s.rational() || curve.rational());
+        int reduced = reducedDegree(bez, degree);
+        if (reduced < degree) {
+            bez.replaceAll(h -> reduce(h, degree, reduced));
+        }
+        return join(reduced, bez, breaks, s.rational() || curve.rational());
     }
 
     /**
@@ -118,6 +123,83 @@ final class CurveOnSurface {
         split(left, right, 3, d, 0.5);
         return add(s, left, d, uv, uVaries, vVaries, degree, tFrom, tMid, depth + 1, bez, breaks)
                 && add(s, right, d, uv, uVaries, vVaries, degree, tMid, tTo, depth + 1, bez, breaks);
+    }
+
+    /**
+     * The lowest degree every piece has exactly (to rounding): a piece of degree {@code n} is of
+     * degree {@code n − 1} when its n-th difference {@code Σ (−1)^i C(n,i) P_i} vanishes (an
+     * iso-parameter segment of a polygon trim is an iso-curve of the surface's degree), checked
+     * by reducing and raising back (Farin, <i>Curves and Surfaces for CAGD</i>, 5th ed., §6.9).
+     */
+    private static int reducedDegree(List<double[]> bez, int degree) {
+        int m = degree;
+        while (m > 1) {
+            boolean all = true;
+            for (int b = 0; b < bez.size() && all; b++) {
+                double[] h = bez.get(b), q = reduce(h, degree, m - 1);
+                all = sameAfterRaising(q, m - 1, h, degree);
+                for (int k = 3; k < q.length && all; k += 4) {
+                    all = q[k] > 0; // a positive weight for every point of the lower degree too
+                }
+            }
+            if (!all) {
+                break;
+            }
+            m--;
+        }
+        return m;
+    }
+
+    /**
+     * The points of degree {@code m} that raise to {@code h} (degree {@code n}), when it is of
+     * degree {@code m}: the degree-elevation relation solved from both ends and blended (the
+     * forward solution is exact near the start, the backward one near the end).
+     */
+    private static double[] reduce(double[] h, int n, int m) {
+        double[] cur = h;
+        for (int d = n; d > m; d--) {
+            double[] fwd = new double[4 * d], bwd = new double[4 * d];
+            for (int c = 0; c < 4; c++) {
+                fwd[c] = cur[c];
+                for (int i = 1; i < d; i++) {
+                    fwd[4 * i + c] = (d * cur[4 * i + c] - i * fwd[4 * (i - 1) + c]) / (d - i);
+                }
+                bwd[4 * (d - 1) + c] = cur[4 * d + c];
+                for (int i = d - 1; i >= 1; i--) {
+                    bwd[4 * (i - 1) + c] = (d * cur[4 * i + c] - (d - i) * bwd[4 * i + c]) / i;
+                }
+            }
+            double[] out = new double[4 * d];
+            for (int i = 0; i < d; i++) {
+                boolean first = 2 * i < d - 1;
+                System.arraycopy(first ? fwd : bwd, 4 * i, out, 4 * i, 4);
+            }
+            cur = out;
+        }
+        return cur;
+    }
+
+    /** Whether {@code q} (degree {@code m}) raised to degree {@code n} is {@code h} within 1e-12 of its size. */
+    private static boolean sameAfterRaising(double[] q, int m, double[] h, int n) {
+        double[] cur = q;
+        for (int d = m; d < n; d++) {
+            double[] up = new double[4 * (d + 2)];
+            for (int c = 0; c < 4; c++) {
+                up[c] = cur[c];
+                up[4 * (d + 1) + c] = cur[4 * d + c];
+                for (int i = 1; i <= d; i++) {
+                    double a = (double) i / (d + 1);
+                    up[4 * i + c] = a * cur[4 * (i - 1) + c] + (1 - a) * cur[4 * i + c];
+                }
+            }
+            cur = up;
+        }
+        double size = 0, err = 0;
+        for (int k = 0; k < h.length; k++) {
+            size = Math.max(size, Math.abs(h[k]));
+            err = Math.max(err, Math.abs(cur[k] - h[k]));
+        }
+        return err <= 1e-12 * Math.max(size, Double.MIN_NORMAL);
     }
 
     /** The parameters in (0, 1) where the Bézier piece {@code h} crosses an interior knot line, sorted. */

@@ -118,6 +118,28 @@ class CurveOnSurfaceTest {
     }
 
     @Test
+    void aPolygonAlongIsoLinesIsLoweredToTheSurfacesDegreeAndStaysExact() {
+        Random rnd = new Random(3);
+        double[] knots = {0, 0, 0, 0, 1, 1, 1, 1};
+        double[] pts = new double[48];
+        for (int k = 0; k < pts.length; k++) {
+            pts[k] = rnd.nextDouble();
+        }
+        FreeFormSurface s = new FreeFormSurface(SplineBasis.BSPLINE, 3, 3, knots, knots, 4, 4, pts, null,
+                new double[] {0, 1, 0, 1}, null);
+        TrimCurve square = TrimLoop.polygon(0.1, 0.1, 0.9, 0.1, 0.9, 0.9, 0.1, 0.9).pieces().get(0).curve();
+        CurveOnSurface.Curve3 image = CurveOnSurface.compose(CurveOnSurface.Patches.of(at(s)), square, 0, 4);
+        assertEquals(3, image.degree(), "each side is an iso-curve of degree 3 (composed: 6)");
+        assertEquals(13, image.count());
+        for (int k = 0; k <= 40; k++) {
+            double t = 4.0 * k / 40;
+            double[] uv = reference(1, square.knots(), square.points(), null, 2, t);
+            double[] got = reference(3, image.knots(), image.points(), image.weights(), 3, t);
+            assertTrue(new Vec3(got[0], got[1], got[2]).sub(surfaceAt(s, uv[0], uv[1])).length() <= 1e-12, "t = " + t);
+        }
+    }
+
+    @Test
     void aLineAcrossKnotLinesIsCutAtTheCrossings() {
         // a bicubic of 2 × 2 spans; the diagonal crosses u = 0.5 and v = 0.25 inside
         double[] knots = {0, 0, 0, 0, 0.5, 1, 1, 1, 1};
