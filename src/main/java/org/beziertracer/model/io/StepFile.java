@@ -440,7 +440,7 @@ final class StepFile {
         }
         try {
             if (!real) {
-                return whole(sb);
+                return NumberText.whole(sb);
             }
             double v = JavaDoubleParser.parseDouble(sb);
             if (!Double.isFinite(v)) {
@@ -450,27 +450,6 @@ final class StepFile {
         } catch (NumberFormatException e) {
             throw source.error(line, "expected a number, found " + Echo.quote(sb.toString()));
         }
-    }
-
-    /** A whole number: an optional sign and up to 18 digits in place, else {@link Long#parseLong} (which also reports). */
-    private static Long whole(StringBuilder sb) {
-        int n = sb.length(), i = 0;
-        boolean negative = n > 0 && sb.charAt(0) == '-';
-        if (n > 0 && (negative || sb.charAt(0) == '+')) {
-            i++;
-        }
-        if (i < n && n - i <= 18) {
-            long v = 0;
-            for (; i < n; i++) {
-                char d = sb.charAt(i);
-                if (d < '0' || d > '9') {
-                    return Long.parseLong(sb.toString());
-                }
-                v = 10 * v + (d - '0');
-            }
-            return negative ? -v : v;
-        }
-        return Long.parseLong(sb.toString());
     }
 
     /** A string: {@code ''} is one quote; {@code \\} one backslash; other escapes are kept as written. */
