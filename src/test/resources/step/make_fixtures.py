@@ -9,7 +9,7 @@ ISO 10303-42 as AP214 uses them. Faces:
                  a polynomial B-spline face whose range is a rectangle of trimmed lines,
                  a plane with a square outer loop of lines and a circular hole,
                  a full cylinder (seam edges), a half cone, a sphere patch, a torus patch,
-                 a plane bounded by 3-D lines only (skipped)
+                 a plane bounded by a 3-D line there and back (skipped: no area)
   inches.stp   - a unit square plane face in inches
   assembly.stp - a part (one plane face) placed twice in an assembly and once by a mapped item
 """
@@ -222,7 +222,7 @@ def sampler():
     tp = lambda u, v: (10 + (3 + math.cos(v)) * math.cos(u), 10 + (3 + math.cos(v)) * math.sin(u), math.sin(v))
     h = math.pi / 2
     faces.append(face(s, tor, line_loop(s, tor, c2, [(-h, -h), (h, -h), (h, h), (-h, h)], tp)))
-    # 8. a plane bounded by 3-D lines only: skipped
+    # 8. a plane bounded by a 3-D line there and back only: skipped (projected, it encloses no area)
     pl = s.add("PLANE('',%s)" % axis3(s, (0, 0, 20), (0, 0, 1), (1, 0, 0)))
     a, b = vertex(s, (0, 0, 20)), vertex(s, (1, 0, 20))
     l3 = s.add("LINE('',%s,%s)" % (pt(s, 0, 0, 20), s.add("VECTOR('',%s,1.)" % dirn(s, 1, 0, 0))))

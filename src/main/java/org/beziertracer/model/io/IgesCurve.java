@@ -51,15 +51,7 @@ record IgesCurve(int degree, double[] knots, double[] points, double[] weights, 
 
     /** The point at {@code t0} (or {@code t1}), exact to rounding (a Bézier end point after knot insertion). */
     double[] end(boolean last) {
-        int n = count();
-        double[] h = new double[4 * n];
-        for (int k = 0; k < n; k++) {
-            double wk = weights == null ? 1 : weights[k];
-            h[4 * k] = wk * points[3 * k];
-            h[4 * k + 1] = wk * points[3 * k + 1];
-            h[4 * k + 2] = wk * points[3 * k + 2];
-            h[4 * k + 3] = wk;
-        }
+        double[] h = SplinePoint.homogeneous(points, weights);
         double[] p = BezierDecomposition.curve(degree, knots, h, 4, t0, t1).points();
         int at = last ? p.length - 4 : 0;
         return new double[] {p[at] / p[at + 3], p[at + 1] / p[at + 3], p[at + 2] / p[at + 3]};

@@ -237,12 +237,34 @@ final class IgesEntities {
         IgesParams p = file.params(e);
         p.require(6, "CRTN SPTR BPTR CPTR PREF");
         if (p.pointer(3) == 0) {
-            throw new Skip("trimmed by model-space curves only");
+            return projectedLoop(p, base);
         }
         IgesSections.Entry b = entry(p.pointer(3), p, "its parameter-space curve", 100, 102, 110, 126);
         List<TrimPiece> pieces = new ArrayList<>();
         for (IgesCurve c : curve(b, 0)) {
             pieces.add(c.toTrimPiece(false));
+        }
+        return loop(pieces, base, p);
+    }
+
+    /**
+     * A 142 without a parameter-space curve: its model-space curve (CPTR) projected onto the base
+     * surface, piece by piece ({@link EdgeProjection}). The curve is taken in the surface's frame,
+     * so a base surface with its own transformation matrix is skipped.
+     */
+    private TrimLoop projectedLoop(IgesParams p, IgesSurface base) {
+        if (p.pointer(4) == 0) {
+            throw p.error("a curve on a surface with neither a parameter-space nor a model-space curve");
+        }
+        IgesSections.Entry surfaceEntry = entry(p.pointer(2), p, "its surface", 128, 120, 122, 108, 143, 144);
+        if (!matrix(surfaceEntry).identity()) {
+            throw new Skip("trimmed by model-space curves only, on a surface with its own transformation matrix");
+        }
+        IgesSections.Entry c = entry(p.pointer(4), p, "its model-space curve", 100, 102, 110, 126);
+        EdgeProjection projection = EdgeProjection.onto(SplinePoint.of(base), base.range());
+        List<TrimPiece> pieces = new ArrayList<>();
+        for (IgesCurve piece : curve(c, 0)) {
+            pieces.add(projection.project(t -> EdgeProjection.point(piece, t), piece.t0(), piece.t1()));
         }
         return loop(pieces, base, p);
     }

@@ -1,8 +1,5 @@
 package org.beziertracer.model.io;
 
-import java.util.ArrayList;
-import java.util.List;
-
 /**
  * The free-format parameters of one IGES record (a parameter-data entry or the global section):
  * fields separated by the parameter delimiter, ended by the record delimiter, Hollerith strings
@@ -17,18 +14,50 @@ import java.util.List;
  */
 final class IgesParams {
 
-    private final List<String> fields;
-    private final List<Boolean> hollerith;
+    /** The record's text; field {@code k} is {@code text[from[k], to[k])}, trimmed (no copy until asked for). */
+    private final String text;
+    private final int[] from, to;
+    private final boolean[] hollerith;
+    private final int size;
     private final TextSource source;
     private final int line;
     private final String what;
 
-    private IgesParams(List<String> fields, List<Boolean> hollerith, TextSource source, int line, String what) {
-        this.fields = fields;
+    private IgesParams(String text, int[] from, int[] to, boolean[] hollerith, int size, TextSource source, int line,
+                       String what) {
+        this.text = text;
+        this.from = from;
+        this.to = to;
         this.hollerith = hollerith;
+        this.size = size;
         this.source = source;
         this.line = line;
         this.what = what;
+    }
+
+    /** Field bounds as the parse finds them. */
+    private static final class Bounds {
+        int[] from, to;
+        boolean[] hollerith;
+        int size;
+
+        /** Room for {@code capacity} fields (grown when a record holds more). */
+        Bounds(int capacity) {
+            from = new int[capacity];
+            to = new int[capacity];
+            hollerith = new boolean[capacity];
+        }
+
+        void add(int a, int b, boolean h) {
+            if (size == from.length) {
+                from = java.util.Arrays.copyOf(from, 2 * size);
+                to = java.util.Arrays.copyOf(to, 2 * size);
+                hollerith = java.util.Arrays.copyOf(hollerith, 2 * size);
+            }
+            from[size] = a;
+            to[size] = b;
+            hollerith[size++] = h;
+        }
     }
 
     /**
@@ -38,8 +67,7 @@ final class IgesParams {
      * @param what what the record is, for messages ({@code "entity 128 (directory line 7)"})
      */
     static IgesParams parse(String text, char delimiter, char end, TextSource source, int line, String what) {
-        List<String> fields = new ArrayList<>();
-        List<Boolean> hollerith = new ArrayList<>();
+        Bounds fields = new Bounds(Math.max(16, text.length() / 6)); // an estimate: B-spline records take about 6 characters a field
         int k = 0, n = text.length();
         boolean ended = false;
         while (k <= n && !ended) {
@@ -62,8 +90,7 @@ final class IgesParams {
                 if (count > n - k - 1) {
                     throw source.error(line, what + ": a string of " + count + " characters runs past the record's end");
                 }
-                fields.add(text.substring(k + 1, k + 1 + count));
-                hollerith.add(true);
+                fields.add(k + 1, k + 1 + count, true);
                 k += 1 + count;
                 while (k < n && text.charAt(k) == ' ') {
                     k++;
@@ -73,8 +100,14 @@ final class IgesParams {
                 while (k < n && text.charAt(k) != delimiter && text.charAt(k) != end) {
                     k++;
                 }
-                fields.add(text.substring(start, k).trim());
-                hollerith.add(false);
+                int a = start, b = k;
+                while (a < b && text.charAt(a) <= ' ') {
+                    a++;
+                }
+                while (b > a && text.charAt(b - 1) <= ' ') {
+                    b--;
+                }
+                fields.add(a, b, false);
             }
             if (k >= n) {
                 throw source.error(line, what + ": the record does not end with " + Echo.quote(String.valueOf(end)));
@@ -84,15 +117,15 @@ final class IgesParams {
                 ended = true;
             } else if (c != delimiter) {
                 throw source.error(line, what + ": expected " + Echo.quote(String.valueOf(delimiter)) + " or "
-                        + Echo.quote(String.valueOf(end)) + " after field " + fields.size() + ", found "
+                        + Echo.quote(String.valueOf(end)) + " after field " + fields.size + ", found "
                         + Echo.quote(String.valueOf(c)));
             }
             k++;
         }
-        return new IgesParams(fields, hollerith, source, line, what);
+        return new IgesParams(text, fields.from, fields.to, fields.hollerith, fields.size, source, line, what);
     }
 
-    int size() { return fields.size(); }
+    int size() { return size; }
 
     int line() { return line; }
 
@@ -100,11 +133,30 @@ final class IgesParams {
 
     /** Whether field {@code k} (0-based) is present and not empty. */
     boolean has(int k) {
-        return k < fields.size() && !fields.get(k).isEmpty();
+        return k < size && to[k] > from[k];
     }
 
     /** Field {@code k} as a whole number; an empty field is 0. */
     int integer(int k) {
+        check(k);
+        int a = from[k], b = to[k];
+        if (a < b && b - a <= 9) { // up to 9 characters: digits after an optional sign never overflow
+            int i = a;
+            boolean negative = text.charAt(i) == '-';
+            if (negative || text.charAt(i) == '+') {
+                i++;
+            }
+            int v = 0;
+            boolean digits = i < b;
+            for (; i < b && digits; i++) {
+                char c = text.charAt(i);
+                digits = c >= '0' && c <= '9';
+                v = 10 * v + (c - '0');
+            }
+            if (digits) {
+                return negative ? -v : v;
+            }
+        }
         String f = field(k);
         if (f.isEmpty()) {
             return 0;
@@ -127,10 +179,15 @@ final class IgesParams {
 
     /** Field {@code k} as a real; an empty field is {@code otherwise}. Fortran exponents ({@code 1.5D2}) read. */
     double real(int k, double otherwise) {
-        String f = field(k);
-        if (f.isEmpty()) {
+        check(k);
+        if (from[k] == to[k]) {
             return otherwise;
         }
+        double fast = NumberText.finiteOrNaN(text, from[k], to[k]); // a plain decimal, parsed in place
+        if (!Double.isNaN(fast)) {
+            return fast;
+        }
+        String f = field(k);
         double v;
         try {
             v = Double.parseDouble(f.replace('D', 'E').replace('d', 'e'));
@@ -149,12 +206,12 @@ final class IgesParams {
 
     /** Field {@code k} as a string (a Hollerith string, or the bare text); empty when absent. */
     String string(int k) {
-        return k < fields.size() ? fields.get(k) : "";
+        return k < size ? text.substring(from[k], to[k]) : "";
     }
 
     /** Whether field {@code k} was written as a Hollerith string. */
     boolean isString(int k) {
-        return k < fields.size() && hollerith.get(k);
+        return k < size && hollerith[k];
     }
 
     /** Fields {@code from .. from+count-1} as reals. */
@@ -168,8 +225,8 @@ final class IgesParams {
 
     /** Requires at least {@code count} fields ({@code naming} them for the message). */
     void require(int count, String naming) {
-        if (fields.size() < count) {
-            throw error("expected " + count + " fields (" + naming + "), found " + fields.size());
+        if (size < count) {
+            throw error("expected " + count + " fields (" + naming + "), found " + size);
         }
     }
 
@@ -177,13 +234,18 @@ final class IgesParams {
         return source.error(line, what + ": " + detail);
     }
 
+    /** Field {@code k} must be there and not a string. */
+    private void check(int k) {
+        if (k >= size) {
+            throw error("expected at least " + (k + 1) + " fields, found " + size);
+        }
+        if (hollerith[k]) {
+            throw error("field " + (k + 1) + ": expected a number, found the string " + Echo.quote(string(k)));
+        }
+    }
+
     private String field(int k) {
-        if (k >= fields.size()) {
-            throw error("expected at least " + (k + 1) + " fields, found " + fields.size());
-        }
-        if (hollerith.get(k)) {
-            throw error("field " + (k + 1) + ": expected a number, found the string " + Echo.quote(fields.get(k)));
-        }
-        return fields.get(k);
+        check(k);
+        return string(k);
     }
 }

@@ -183,6 +183,31 @@ final class IgesSections {
     }
 
     private int number(String raw, int from, int to, int line, String what) {
+        // in place: blanks, an optional sign, at most 9 digits, blanks (what fixed columns hold)
+        int i = from;
+        while (i < to && raw.charAt(i) == ' ') {
+            i++;
+        }
+        boolean negative = i < to && raw.charAt(i) == '-';
+        if (i < to && (negative || raw.charAt(i) == '+')) {
+            i++;
+        }
+        int start = i, v = 0;
+        while (i < to && i - start < 9 && raw.charAt(i) >= '0' && raw.charAt(i) <= '9') {
+            v = 10 * v + (raw.charAt(i++) - '0');
+        }
+        int end = i;
+        while (i < to && raw.charAt(i) == ' ') {
+            i++;
+        }
+        if (i == to && end > start) {
+            return negative ? -v : v;
+        }
+        return slowNumber(raw, from, to, line, what);
+    }
+
+    /** {@link #number} for what the fast form does not cover: empty fields, other blanks, errors. */
+    private int slowNumber(String raw, int from, int to, int line, String what) {
         String f = raw.substring(from, to).trim();
         if (f.isEmpty()) {
             return 0;
@@ -194,8 +219,17 @@ final class IgesSections {
         }
     }
 
+    /** The entry and text of the parameter line before (an entity's lines come together): no map look-up for the rest. */
+    private Entry lastEntry;
+    private StringBuilder lastText;
+
     private void parameterLine(String raw, int line, int seq) {
         int owner = number(raw, 65, 72, line, "directory pointer (columns 66–72) of the parameter line");
+        if (lastEntry != null && lastEntry.sequence == owner && seq > lastEntry.paramStart
+                && seq < lastEntry.paramStart + Math.max(1, lastEntry.paramLines)) {
+            appendParameters(lastText, raw, line, owner);
+            return;
+        }
         Entry e = entries.get(owner);
         if (e == null) {
             throw source.error(line, "the parameter line points to directory entry " + owner + ", which does not exist");
@@ -204,10 +238,17 @@ final class IgesSections {
             throw source.error(line, "parameter line " + seq + " points to directory entry " + owner
                     + ", whose data is lines " + e.paramStart + "–" + (e.paramStart + Math.max(1, e.paramLines) - 1));
         }
-        StringBuilder sb = params.computeIfAbsent(owner, k -> new StringBuilder());
+        StringBuilder sb = params.computeIfAbsent(owner,
+                k -> new StringBuilder(64 * Math.max(1, Math.min(e.paramLines, 1024))));
         if (sb.length() == 0) {
             paramLine.put(owner, line);
         }
+        lastEntry = e;
+        lastText = sb;
+        appendParameters(sb, raw, line, owner);
+    }
+
+    private void appendParameters(StringBuilder sb, String raw, int line, int owner) {
         sb.append(raw, 0, 64);
         if (sb.length() > source.limits().lineChars() * 64L) {
             throw source.error(line, "the parameter data of directory entry " + owner + " is too long");

@@ -66,6 +66,11 @@ public final class IgesWriter {
      * its parameter box.
      */
     static void eachSurface(List<BezierPatch> patches, SurfaceSink sink) {
+        eachSurface(patches, k -> { }, sink);
+    }
+
+    /** {@link #eachSurface}, telling {@code firstPatch} the index of each surface's first patch before the surface. */
+    static void eachSurface(List<BezierPatch> patches, java.util.function.IntConsumer firstPatch, SurfaceSink sink) {
         Map<FreeFormSurface, BitSet> present = new IdentityHashMap<>();
         for (BezierPatch p : patches) {
             PatchOrigin o = p.origin();
@@ -74,10 +79,12 @@ public final class IgesWriter {
             }
         }
         Map<FreeFormSurface, Boolean> written = new IdentityHashMap<>();
-        for (BezierPatch p : patches) {
+        for (int k = 0; k < patches.size(); k++) {
+            BezierPatch p = patches.get(k);
             PatchOrigin o = p.origin();
             if (o != null && present.get(o.surface()).cardinality() == o.pieceCount()) {
                 if (written.put(o.surface(), Boolean.TRUE) == null) {
+                    firstPatch.accept(k);
                     FreeFormSurface s = o.surface();
                     sink.surface(s.degreeU(), s.degreeV(), s.basis().knotVector(s.degreeU(), s.parmU()),
                             s.basis().knotVector(s.degreeV(), s.parmV()), s.countU(), s.countV(), s.points(),
@@ -86,6 +93,7 @@ public final class IgesWriter {
             } else {
                 PatchDomain d = p.domain();
                 int n = p.degreeU(), m = p.degreeV();
+                firstPatch.accept(k);
                 sink.surface(n, m, bezierKnots(n, d.u0(), d.u1()), bezierKnots(m, d.v0(), d.v1()), n + 1, m + 1,
                         p.copyNet(), p.weights(), new double[] {d.u0(), d.u1(), d.v0(), d.v1()}, p.trim());
             }

@@ -158,4 +158,25 @@ final class NumberText {
     static double finiteOrNaN(String token) {
         return token == null ? Double.NaN : finiteOrNaN(token, 0, token.length());
     }
+
+    /** A whole number: an optional sign and up to 18 digits in place, else {@link Long#parseLong} (which also reports). */
+    static Long whole(CharSequence sb) {
+        int n = sb.length(), i = 0;
+        boolean negative = n > 0 && sb.charAt(0) == '-';
+        if (n > 0 && (negative || sb.charAt(0) == '+')) {
+            i++;
+        }
+        if (i < n && n - i <= 18) {
+            long v = 0;
+            for (; i < n; i++) {
+                char d = sb.charAt(i);
+                if (d < '0' || d > '9') {
+                    return Long.parseLong(sb.toString());
+                }
+                v = 10 * v + (d - '0');
+            }
+            return negative ? -v : v;
+        }
+        return Long.parseLong(sb.toString());
+    }
 }

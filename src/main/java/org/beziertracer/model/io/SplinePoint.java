@@ -75,4 +75,18 @@ record SplinePoint(int p, int q, double[] knotsU, double[] knotsV, int countU, i
         }
         return n;
     }
+
+    /** Homogeneous points {@code (w·x, w·y, w·z, w)} of {@code xyz} points and their weights (null: all 1). */
+    static double[] homogeneous(double[] points, double[] weights) {
+        int n = points.length / 3;
+        double[] h = new double[4 * n];
+        for (int k = 0; k < n; k++) {
+            double wk = weights == null ? 1 : weights[k];
+            h[4 * k] = wk * points[3 * k];
+            h[4 * k + 1] = wk * points[3 * k + 1];
+            h[4 * k + 2] = wk * points[3 * k + 2];
+            h[4 * k + 3] = wk;
+        }
+        return h;
+    }
 }

@@ -20,8 +20,11 @@ import org.beziertracer.model.TrimRegion;
  * face whose surface is reversed ({@code same_sense .F.}) is transposed (u and v swapped), which
  * turns its normal exactly.
  *
+ * <p>An edge without a parameter-space curve on the face's surface has its 3-D curve projected
+ * onto a B-spline surface or a plane ({@link EdgeProjection}, {@link EdgeCurve3}).
+ *
  * <p>A face is skipped ({@link IgesEntities.Skip}, with the reason) when an edge has no
- * parameter-space curve (projecting 3-D edges onto the surface is a later step), when a line or
+ * parameter-space curve on another kind of surface, when a line or
  * circle trim lies on a surface without a closed-form inverse, when a trim across an angle
  * parameter is not an iso-parameter line (the angle has no exact rational map), or when a loop
  * does not close in the parameters. A B-spline face bounded by exactly one outer loop of four
@@ -187,7 +190,14 @@ final class StepFaces {
             boolean sameSense = ea.bool(4, "same_sense", true);
             boolean forward = oa.bool(4, "orientation", true) == sameSense;
             boolean loopStartIsEdgeStart = oa.bool(4, "orientation", true);
-            List<StepFile.Entity> pcurves = pcurves(ea.ref(3, "edge_geometry"), surfaceId);
+            StepFile.Entity geometry = ea.ref(3, "edge_geometry");
+            List<StepFile.Entity> pcurves = pcurves(geometry, surfaceId);
+            if (pcurves.isEmpty()) {
+                Raw r = new Raw(projected(geometry, ea, loopStartIsEdgeStart, forward, s), false);
+                out.add(r);
+                previous = TrimLoop.ends(r.piece());
+                continue;
+            }
             Raw best = null;
             double bestGap = Double.POSITIVE_INFINITY;
             for (StepFile.Entity pc : pcurves) {
@@ -227,10 +237,46 @@ final class StepFaces {
                 }
             }
         }
-        if (out.isEmpty()) {
-            throw new IgesEntities.Skip("trimmed by model-space curves only (no PCURVE on its surface)");
-        }
         return out;
+    }
+
+    /**
+     * An edge without a pcurve on the face's surface: its 3-D curve (the edge geometry, or a
+     * surface curve's {@code curve_3d}) between its vertices, projected onto the surface
+     * ({@link EdgeProjection}) from the loop's start vertex to its end vertex.
+     */
+    private TrimPiece projected(StepFile.Entity geometry, StepArgs edge, boolean loopStartIsEdgeStart, boolean forward,
+                                StepSurface s) {
+        if (s.kind != StepSurface.Kind.BSPLINE && s.kind != StepSurface.Kind.PLANE) {
+            throw new IgesEntities.Skip("trimmed by model-space curves only on a "
+                    + s.kind.name().toLowerCase(java.util.Locale.ROOT) + " surface (projected only onto B-spline surfaces and planes)");
+        }
+        StepFile.Entity curveEntity = geometry;
+        if (!geometry.is("LINE") && !geometry.is("CIRCLE") && !geometry.is("B_SPLINE_CURVE_WITH_KNOTS")
+                && !geometry.is("TRIMMED_CURVE")) {
+            StepArgs sa = StepArgs.of(g.file, geometry, geometry.parts().get(0).type()).require(2, "name, curve_3d");
+            curveEntity = sa.ref(1, "curve_3d");
+        }
+        StepFile.Entity v0 = edge.ref(1, "edge_start", "VERTEX_POINT"), v1 = edge.ref(2, "edge_end", "VERTEX_POINT");
+        double[] start = vertex(loopStartIsEdgeStart ? v0 : v1), end = vertex(loopStartIsEdgeStart ? v1 : v0);
+        EdgeCurve3 c = EdgeCurve3.of(g, curveEntity, angleUnit, start, end, v0.id() == v1.id(), forward);
+        EdgeProjection projection;
+        if (s.kind == StepSurface.Kind.BSPLINE) {
+            projection = EdgeProjection.onto(SplinePoint.of(s.spline), s.spline.range());
+        } else {
+            double extent = 0; // the plane's parameters are lengths: the tolerance follows the curve's size
+            double[] first = c.at(c.ta());
+            for (int k = 1; k <= 16; k++) {
+                double[] q = c.at(c.ta() + (c.tb() - c.ta()) * k / 16);
+                extent = Math.max(extent, Math.max(Math.abs(q[0] - first[0]), Math.max(Math.abs(q[1] - first[1]),
+                        Math.abs(q[2] - first[2]))));
+            }
+            projection = new EdgeProjection((p, guess) -> {
+                double[] uv = s.inverse(p);
+                return new double[] {uv[0], uv[1], 0};
+            }, new double[] {0, extent, 0, extent}, 1);
+        }
+        return projection.project(c::at, c.ta(), c.tb());
     }
 
     private void addIfOn(StepFile.Entity pcurve, int surfaceId, List<StepFile.Entity> out) {

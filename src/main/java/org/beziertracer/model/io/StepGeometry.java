@@ -154,8 +154,16 @@ final class StepGeometry {
         return t.length() > 60 ? t.substring(0, 60) + "…" : t;
     }
 
-    /** B_SPLINE_CURVE_WITH_KNOTS, simple or in the complex form with RATIONAL_B_SPLINE_CURVE. */
+    /** B_SPLINE_CURVE_WITH_KNOTS, simple or in the complex form with RATIONAL_B_SPLINE_CURVE, of degree 1..15. */
     IgesCurve spline(StepFile.Entity e) {
+        return spline(e, BezierPatch.MAX_DEGREE);
+    }
+
+    /**
+     * The same of degree 1..{@code maxDegree}: a 3-D edge curve may pass a trim's limit (the
+     * exact image of a cubic trim on a bicubic surface is of degree 18, {@link CurveOnSurface}).
+     */
+    IgesCurve spline(StepFile.Entity e, int maxDegree) {
         StepArgs b, k;
         int at;
         if (e.complex()) {
@@ -171,8 +179,8 @@ final class StepGeometry {
         int degree = b.integer(at, "degree");
         List<?> refs = b.list(at + 1, "control_points_list");
         int n = refs.size();
-        if (degree < 1 || degree > BezierPatch.MAX_DEGREE || n < 2 || n > 1_000_000) {
-            throw b.error("expected degree 1.." + BezierPatch.MAX_DEGREE + " and 2 to 1,000,000 control points, found degree "
+        if (degree < 1 || degree > maxDegree || n < 2 || n > 1_000_000) {
+            throw b.error("expected degree 1.." + maxDegree + " and 2 to 1,000,000 control points, found degree "
                     + degree + " and " + n + " points");
         }
         double[] pts = new double[3 * n];

@@ -62,6 +62,11 @@ public final class StepReader {
         return new Walk(StepFile.read(text)).run();
     }
 
+    /** Entities that hold faces: solids, shells, face sets. */
+    static final Set<String> CONTAINERS = Set.of("MANIFOLD_SOLID_BREP", "BREP_WITH_VOIDS",
+            "SHELL_BASED_SURFACE_MODEL", "FACE_BASED_SURFACE_MODEL", "CLOSED_SHELL", "OPEN_SHELL",
+            "ORIENTED_CLOSED_SHELL", "ORIENTED_OPEN_SHELL", "CONNECTED_FACE_SET");
+
     /** A placed child of a representation: the child's class and the map from its frame into the parent's. */
     private record Child(int rep, IgesMatrix m) { }
 
@@ -83,6 +88,9 @@ public final class StepReader {
         private final Map<Integer, Object> converted = new HashMap<>();
         private final List<FreeFormSurface> surfaces = new ArrayList<>();
         private final List<Integer> surfaceMaterial = new ArrayList<>();
+        private final Map<Integer, double[]> colours;
+        private final List<Material> materials = new ArrayList<>(List.of(Material.DEFAULT));
+        private final Map<String, Integer> materialOf = new HashMap<>();
         private final Map<String, Integer> skipped = new TreeMap<>();
         private long pieces;
         private int faceCount;
@@ -93,6 +101,19 @@ public final class StepReader {
             StepUnits u = StepUnits.of(file);
             this.units = u.millimetres() == 1 ? IgesMatrix.IDENTITY : IgesMatrix.scaleMove(u.millimetres(), 0, 0, 0);
             this.faces = new StepFaces(g, u.radians());
+            this.colours = StepColours.of(file);
+        }
+
+        /** The material of face {@code id}: its colour's (one per distinct colour), else the default. */
+        private int material(int id) {
+            double[] rgb = colours.get(id);
+            if (rgb == null) {
+                return 0;
+            }
+            return materialOf.computeIfAbsent(java.util.Arrays.toString(rgb), k -> {
+                materials.add(Material.diffuse(rgb[0], rgb[1], rgb[2]));
+                return materials.size() - 1;
+            });
         }
 
         IgesReader.Model run() throws InterruptedIOException {
@@ -125,7 +146,7 @@ public final class StepReader {
                 String what = skipped.isEmpty() ? "no faces" : none.summary();
                 throw file.source.error(0, "no surface to draw (STEP ADVANCED_FACE): " + what);
             }
-            return new IgesReader.Model(List.copyOf(surfaces), List.copyOf(surfaceMaterial), List.of(Material.DEFAULT),
+            return new IgesReader.Model(List.copyOf(surfaces), List.copyOf(surfaceMaterial), List.copyOf(materials),
                     skipped);
         }
 
@@ -218,10 +239,6 @@ public final class StepReader {
             return StepGeometry.frameMatrix(g.placement(to)).after(a.identity() ? IgesMatrix.IDENTITY : inverse);
         }
 
-        private static final Set<String> CONTAINERS = Set.of("MANIFOLD_SOLID_BREP", "BREP_WITH_VOIDS",
-                "SHELL_BASED_SURFACE_MODEL", "FACE_BASED_SURFACE_MODEL", "CLOSED_SHELL", "OPEN_SHELL",
-                "ORIENTED_CLOSED_SHELL", "ORIENTED_OPEN_SHELL", "CONNECTED_FACE_SET");
-
         /** The faces an item holds (through solids, shells and face sets). */
         private void collectFaces(StepFile.Entity item, Set<Integer> out, int depth) {
             if (item.is("ADVANCED_FACE") || item.is("FACE_SURFACE")) {
@@ -308,7 +325,7 @@ public final class StepReader {
                         + " patches; this face makes " + f.pieceCount() + " more after " + (pieces - f.pieceCount()));
             }
             surfaces.add(f);
-            surfaceMaterial.add(0);
+            surfaceMaterial.add(material(id));
         }
     }
 }

@@ -85,26 +85,7 @@ final class StepTrims {
             throw new IgesEntities.Skip("with a trim line outside its surface's parameter range");
         }
         SplinePoint at = SplinePoint.of(s);
-        int samples = 64;
-        double best = lo, bestDistance = Double.POSITIVE_INFINITY;
-        for (int k = 0; k <= samples; k++) {
-            double t = lo + (hi - lo) * k / samples, dist = distance(at, c, t, p, r);
-            if (dist < bestDistance) {
-                bestDistance = dist;
-                best = t;
-            }
-        }
-        double a = Math.max(lo, best - (hi - lo) / samples), b = Math.min(hi, best + (hi - lo) / samples);
-        double g = (Math.sqrt(5) - 1) / 2;
-        for (int k = 0; k < 80 && b - a > 1e-15 * Math.max(1, Math.abs(a)); k++) {
-            double x1 = b - g * (b - a), x2 = a + g * (b - a);
-            if (distance(at, c, x1, p, r) <= distance(at, c, x2, p, r)) {
-                b = x2;
-            } else {
-                a = x1;
-            }
-        }
-        double t = (a + b) / 2;
+        double t = minimum(x -> distance(at, c, x, p, r), lo, hi, 64, 80);
         double size = 0;
         double[] q = s.points();
         for (int k = 3; k < q.length; k++) {
@@ -117,6 +98,33 @@ final class StepTrims {
         int ax = Math.abs(d[0]) >= Math.abs(d[1]) ? 0 : 1;
         double x = snap(p0[ax] + t * d[ax], r[2 * ax], r[2 * ax + 1]);
         return (x - p0[ax]) / d[ax];
+    }
+
+    /**
+     * Where {@code f} is least on {@code [lo, hi]}: the best of {@code samples + 1} equal steps,
+     * refined by golden-section search between its neighbours ({@code iterations} at most).
+     */
+    static double minimum(java.util.function.DoubleUnaryOperator f, double lo, double hi, int samples,
+                          int iterations) {
+        double best = lo, bestValue = Double.POSITIVE_INFINITY;
+        for (int k = 0; k <= samples; k++) {
+            double t = lo + (hi - lo) * k / samples, value = f.applyAsDouble(t);
+            if (value < bestValue) {
+                bestValue = value;
+                best = t;
+            }
+        }
+        double a = Math.max(lo, best - (hi - lo) / samples), b = Math.min(hi, best + (hi - lo) / samples);
+        double g = (Math.sqrt(5) - 1) / 2;
+        for (int k = 0; k < iterations && b - a > 1e-15 * Math.max(1, Math.abs(a)); k++) {
+            double x1 = b - g * (b - a), x2 = a + g * (b - a);
+            if (f.applyAsDouble(x1) <= f.applyAsDouble(x2)) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        return (a + b) / 2;
     }
 
     static double distance(SplinePoint at, StepGeometry.ParamCurve c, double t, double[] p, double[] r) {

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.beziertracer.model.Material;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.TrimCurve;
 import org.beziertracer.model.TrimLoop;
@@ -22,15 +23,19 @@ import org.beziertracer.model.TrimRegion;
  * {@code EDGE_LOOP}s whose edges are {@code EDGE_CURVE}s on a {@code SURFACE_CURVE}: its
  * {@code PCURVE} (the master representation, {@code .PCURVE_S1.}) holds the trim curve as a
  * {@code B_SPLINE_CURVE_WITH_KNOTS} in (u, v), inside a {@code TRIMMED_CURVE} by parameter
- * values when only part of it is used; its 3-D curve is a polyline through surface points along
- * the trim (a trim has no exact 3-D image of low degree); vertices are the surface's points at
- * the ends.
+ * values when only part of it is used; its 3-D curve is the trim's exact image on the surface in
+ * the same parameter ({@link CurveOnSurface}: a B-spline of degree {@code d·(p+q)}, of degree
+ * {@code p} or {@code q} along an iso-parameter line), trimmed backwards when the piece runs
+ * backwards; vertices are the surface's points at the ends.
  * A surface without an outer trim loop gets its parameter range as the outer loop: four lines
  * trimmed by parameter values, which {@link StepReader} reads back as the range. A region of
  * several outer loops becomes one face per outer loop, each with every hole (a face has one
- * outer bound). Reals are written by {@link Double#toString}, the shortest text that reads back
+ * outer bound). Points, directions and curves are written once and referred to wherever they
+ * recur (neighbouring faces share their boundary points). Reals are written by {@link Double#toString}, the shortest text that reads back
  * to the same {@code double}, so {@link StepReader} gives back the same nets, weights, knots and
- * trims to the last bit.
+ * trims to the last bit. A surface whose material is not the default has its diffuse colour
+ * written as a {@code STYLED_ITEM} on each of its faces (one style per colour, channels above 1
+ * clamped), gathered in a {@code MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION}.
  *
  * <p>References: ISO 10303-21 (the file), ISO 10303-42 (geometry, topology), ISO 10303-214;
  * CAx-IF <i>Recommended Practices for AP203/AP214</i> (the product structure).
@@ -51,13 +56,37 @@ public final class StepWriter {
         }
         StepWriter w = new StepWriter();
         int context3d = w.contexts();
-        IgesWriter.eachSurface(scene.patches(), w::face);
+        IgesWriter.eachSurface(scene.patches(), k -> w.material = scene.materials().get(scene.patchMaterial(k)), w::face);
         w.product(context3d);
+        w.styles(context3d);
         w.emit(out);
     }
 
+    /** Geometry written once and referred to wherever it recurs (points shared by neighbouring faces, the range's lines). */
+    private final java.util.Map<String, Integer> shared = new java.util.HashMap<>();
+
+    private static final List<String> SHAREABLE = List.of("CARTESIAN_POINT(", "DIRECTION(", "VECTOR(", "LINE(",
+            "TRIMMED_CURVE(", "B_SPLINE_CURVE_WITH_KNOTS(", "(BOUNDED_CURVE()", "DEFINITIONAL_REPRESENTATION(");
+
+    /**
+     * Adds an entity; a geometric one (a point, direction, curve: never a surface, whose faces
+     * must stay apart, nor topology) already written with the same text is referred to again.
+     */
     private int add(String text) {
+        boolean shareable = false;
+        for (String prefix : SHAREABLE) {
+            shareable |= text.startsWith(prefix);
+        }
+        if (shareable) {
+            Integer id = shared.get(text);
+            if (id != null) {
+                return id;
+            }
+        }
         entities.add(text);
+        if (shareable) {
+            shared.put(text, entities.size());
+        }
         return entities.size();
     }
 
@@ -100,6 +129,41 @@ public final class StepWriter {
         return ctx;
     }
 
+    /** The material of the surface being written (its first patch's). */
+    private Material material = Material.DEFAULT;
+    private final List<Integer> styled = new ArrayList<>();
+    private final java.util.Map<Material, Integer> styleOf = new java.util.HashMap<>();
+
+    /**
+     * The presentation style of a material's diffuse colour, made once a colour (CAx-IF
+     * recommended practice: PRESENTATION_STYLE_ASSIGNMENT → SURFACE_STYLE_USAGE(.BOTH.) →
+     * SURFACE_SIDE_STYLE → SURFACE_STYLE_FILL_AREA → FILL_AREA_STYLE → FILL_AREA_STYLE_COLOUR →
+     * COLOUR_RGB).
+     */
+    private int style(Material m) {
+        Integer known = styleOf.get(m);
+        if (known != null) {
+            return known;
+        }
+        int rgb = add("COLOUR_RGB(''," + real(Math.min(1, m.r())) + "," + real(Math.min(1, m.g())) + ","
+                + real(Math.min(1, m.b())) + ")");
+        int fillColour = add("FILL_AREA_STYLE_COLOUR(''," + ref(rgb) + ")");
+        int fill = add("FILL_AREA_STYLE('',(" + ref(fillColour) + "))");
+        int area = add("SURFACE_STYLE_FILL_AREA(" + ref(fill) + ")");
+        int side = add("SURFACE_SIDE_STYLE('',(" + ref(area) + "))");
+        int usage = add("SURFACE_STYLE_USAGE(.BOTH.," + ref(side) + ")");
+        int psa = add("PRESENTATION_STYLE_ASSIGNMENT((" + ref(usage) + "))");
+        styleOf.put(m, psa);
+        return psa;
+    }
+
+    /** The styled faces gathered in one presentation representation (AP214's colour container). */
+    private void styles(int context3d) {
+        if (!styled.isEmpty()) {
+            add("MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION(''," + refs(styled) + "," + ref(context3d) + ")");
+        }
+    }
+
     /** The product, its definition and its shape, holding the shell of every face. */
     private void product(int context3d) {
         int app = add("APPLICATION_CONTEXT('automotive design')");
@@ -132,27 +196,32 @@ public final class StepWriter {
     private void face(int p, int q, double[] knotsU, double[] knotsV, int countU, int countV, double[] points,
                       double[] weights, double[] range, TrimRegion trim) {
         SplinePoint at = new SplinePoint(p, q, knotsU, knotsV, countU, countV, points, weights);
+        CurveOnSurface.Patches patches = CurveOnSurface.Patches.of(at);
         int surface = surface(p, q, knotsU, knotsV, countU, countV, points, weights);
         List<Integer> holes = new ArrayList<>();
         if (trim != null) {
             for (TrimLoop loop : trim.holes()) {
-                holes.add(add("FACE_BOUND(''," + ref(loop(surface, loop, at)) + ",.T.)"));
+                holes.add(add("FACE_BOUND(''," + ref(loop(surface, loop, at, patches)) + ",.T.)"));
             }
         }
         List<Integer> outers = new ArrayList<>();
         if (trim != null) {
             for (TrimLoop loop : trim.outer()) {
-                outers.add(loop(surface, loop, at));
+                outers.add(loop(surface, loop, at, patches));
             }
         }
         if (outers.isEmpty()) {
-            outers.add(rangeLoop(surface, range, at));
+            outers.add(rangeLoop(surface, range, at, patches));
         }
         for (int outer : outers) {
             List<Integer> bounds = new ArrayList<>();
             bounds.add(add("FACE_OUTER_BOUND(''," + ref(outer) + ",.T.)"));
             bounds.addAll(holes);
-            faces.add(add("ADVANCED_FACE(''," + refs(bounds) + "," + ref(surface) + ",.T.)"));
+            int face = add("ADVANCED_FACE(''," + refs(bounds) + "," + ref(surface) + ",.T.)");
+            faces.add(face);
+            if (!material.equals(Material.DEFAULT)) {
+                styled.add(add("STYLED_ITEM('colour',(" + ref(style(material)) + ")," + ref(face) + ")"));
+            }
         }
     }
 
@@ -203,7 +272,7 @@ public final class StepWriter {
     }
 
     /** An EDGE_LOOP of the loop's pieces, consecutive edges sharing their vertex. */
-    private int loop(int surface, TrimLoop loop, SplinePoint at) {
+    private int loop(int surface, TrimLoop loop, SplinePoint at, CurveOnSurface.Patches patches) {
         List<TrimPiece> pieces = loop.pieces();
         List<Integer> vertices = new ArrayList<>();
         for (TrimPiece piece : pieces) {
@@ -213,8 +282,8 @@ public final class StepWriter {
         List<Integer> edges = new ArrayList<>();
         for (int k = 0; k < pieces.size(); k++) {
             int curve = pieceCurve(pieces.get(k));
-            edges.add(edge(surface, curve, vertices.get(k), vertices.get((k + 1) % pieces.size()), at,
-                    along(pieces.get(k))));
+            edges.add(edge(surface, curve, vertices.get(k), vertices.get((k + 1) % pieces.size()),
+                    curve3d(pieces.get(k), at, patches)));
         }
         return add("EDGE_LOOP(''," + refs(edges) + ")");
     }
@@ -224,52 +293,52 @@ public final class StepWriter {
         return add("VERTEX_POINT(''," + point(p) + ")");
     }
 
-    /** Points of an edge's 3-D polyline (its curve_3d, the pcurve being the master representation). */
-    private static final int POLYLINE_POINTS = 17;
-
     /**
      * The oriented edge from vertex {@code v0} to {@code v1} whose geometry is a SURFACE_CURVE:
-     * the PCURVE of {@code curve2d} as the master representation, and a 3-D polyline through
-     * the surface points over {@code uv} (a trim curve has no exact 3-D image of low degree; the
-     * pcurve is exact, and AP214's advanced face wants a surface curve on its edges).
+     * the PCURVE of {@code curve2d} as the master representation, and {@code curve3d}, its exact
+     * image on the surface in the same parameter (AP214's advanced face wants a surface curve on
+     * its edges).
      */
-    private int edge(int surface, int curve2d, int v0, int v1, SplinePoint at, double[][] uv) {
+    private int edge(int surface, int curve2d, int v0, int v1, int curve3d) {
         int rep = add("DEFINITIONAL_REPRESENTATION('',(" + ref(curve2d) + ")," + ref(context2d) + ")");
         int pcurve = add("PCURVE(''," + ref(surface) + "," + ref(rep) + ")");
-        StringBuilder pts = new StringBuilder("(");
-        for (int k = 0; k < uv.length; k++) {
-            pts.append(k == 0 ? "" : ",").append(point(at.at(uv[k][0], uv[k][1])));
-        }
-        StringBuilder knots = new StringBuilder("("), mults = new StringBuilder("(");
-        for (int k = 0; k < uv.length; k++) {
-            knots.append(k == 0 ? "" : ",").append(real(k));
-            mults.append(k == 0 ? "" : ",").append(k == 0 || k == uv.length - 1 ? 2 : 1);
-        }
-        int curve3d = add("B_SPLINE_CURVE_WITH_KNOTS(''," + 1 + "," + pts.append(')') + ",.POLYLINE_FORM.,.F.,.F.,"
-                + mults.append(')') + "," + knots.append(')') + ",.UNSPECIFIED.)");
         int sc = add("SURFACE_CURVE(''," + ref(curve3d) + ",(" + ref(pcurve) + "),.PCURVE_S1.)");
         int ec = add("EDGE_CURVE(''," + ref(v0) + "," + ref(v1) + "," + ref(sc) + ",.T.)");
         return add("ORIENTED_EDGE('',*,*," + ref(ec) + ",.T.)");
     }
 
-    /** {@value #POLYLINE_POINTS} parameter points along {@code piece}, from its start to its end. */
-    private static double[][] along(TrimPiece piece) {
-        TrimCurve c = piece.curve();
-        double[] knots = c.knots(), uv = c.points(), w = c.weights();
-        double[][] out = new double[POLYLINE_POINTS][];
-        for (int k = 0; k < POLYLINE_POINTS; k++) {
-            double t = piece.from() + (piece.to() - piece.from()) * k / (POLYLINE_POINTS - 1);
-            out[k] = SplinePoint.curve(c.degree(), knots, uv, w, k == POLYLINE_POINTS - 1 ? piece.to() : t);
+    /**
+     * The 3-D curve of {@code piece} on the surface: {@link CurveOnSurface#compose} over the
+     * piece's parameters (a fit within {@link CurveOnSurface#FIT_TOLERANCE} when the exact degree
+     * would pass {@link CurveOnSurface#MAX_DEGREE}), trimmed backwards by parameter values when
+     * the piece runs backwards, so it has the pcurve's parameter and direction.
+     */
+    private int curve3d(TrimPiece piece, SplinePoint at, CurveOnSurface.Patches patches) {
+        double lo = Math.min(piece.from(), piece.to()), hi = Math.max(piece.from(), piece.to());
+        CurveOnSurface.Curve3 c = CurveOnSurface.compose(patches, piece.curve(), lo, hi);
+        if (c == null) {
+            c = CurveOnSurface.fit(at, piece.curve(), lo, hi);
         }
-        double[] ends = TrimLoop.ends(piece);
-        out[0] = new double[] {ends[0], ends[1]};
-        out[POLYLINE_POINTS - 1] = new double[] {ends[2], ends[3]};
-        return out;
+        int n = c.count();
+        StringBuilder pts = new StringBuilder("(");
+        double[] xyz = c.points();
+        for (int k = 0; k < n; k++) {
+            pts.append(k == 0 ? "" : ",").append(point(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]));
+        }
+        int curve = bspline(c.degree(), c.knots(), pts.append(')').toString(), c.weights());
+        return piece.from() < piece.to() ? curve : trimmed(curve, piece.from(), piece.to());
     }
 
-    /** Two parameter points: a straight edge of the range rectangle. */
-    private static double[][] segment(double u0, double v0, double u1, double v1) {
-        return new double[][] {{u0, v0}, {u1, v1}};
+    /** A B_SPLINE_CURVE_WITH_KNOTS of the written points {@code pts}, the rational complex form when weighted. */
+    private int bspline(int degree, double[] knots, String pts, double[] w) {
+        String[] kn = distinct(knots);
+        return w == null
+                ? add("B_SPLINE_CURVE_WITH_KNOTS(''," + degree + "," + pts + ",.UNSPECIFIED.,.F.,.F.," + kn[1] + ","
+                + kn[0] + ",.UNSPECIFIED.)")
+                : add("(BOUNDED_CURVE()B_SPLINE_CURVE(" + degree + "," + pts + ",.UNSPECIFIED.,.F.,.F.)"
+                + "B_SPLINE_CURVE_WITH_KNOTS(" + kn[1] + "," + kn[0] + ",.UNSPECIFIED.)CURVE()"
+                + "GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE(" + reals(w, 0, w.length)
+                + ")REPRESENTATION_ITEM(''))");
     }
 
     /** A trim piece's curve in (u, v): the B-spline, trimmed by parameter values unless the whole of it runs forward. */
@@ -282,13 +351,7 @@ public final class StepWriter {
             pts.append(k == 0 ? "" : ",").append(point(uv[2 * k], uv[2 * k + 1]));
         }
         pts.append(')');
-        String[] kn = distinct(c.knots());
-        int curve = w == null
-                ? add("B_SPLINE_CURVE_WITH_KNOTS(''," + c.degree() + "," + pts + ",.UNSPECIFIED.,.F.,.F.," + kn[1] + ","
-                + kn[0] + ",.UNSPECIFIED.)")
-                : add("(BOUNDED_CURVE()B_SPLINE_CURVE(" + c.degree() + "," + pts + ",.UNSPECIFIED.,.F.,.F.)"
-                + "B_SPLINE_CURVE_WITH_KNOTS(" + kn[1] + "," + kn[0] + ",.UNSPECIFIED.)CURVE()"
-                + "GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE(" + reals(w, 0, n) + ")REPRESENTATION_ITEM(''))");
+        int curve = bspline(c.degree(), c.knots(), pts.toString(), w);
         if (piece.from() == c.start() && piece.to() == c.end()) {
             return curve;
         }
@@ -301,16 +364,30 @@ public final class StepWriter {
     }
 
     /** The rectangle {@code u0 u1 v0 v1} as four lines trimmed by parameter values (u along the first and third). */
-    private int rangeLoop(int surface, double[] r, SplinePoint at) {
+    private int rangeLoop(int surface, double[] r, SplinePoint at, CurveOnSurface.Patches patches) {
         int[] v = {vertex(at, r[0], r[2]), vertex(at, r[1], r[2]), vertex(at, r[1], r[3]), vertex(at, r[0], r[3])};
         int alongU0 = line(0, r[2], 1, 0), alongV1 = line(r[1], 0, 0, 1), alongU1 = line(0, r[3], 1, 0);
         int alongV0 = line(r[0], 0, 0, 1);
-        List<Integer> edges = List.of(
-                edge(surface, trimmed(alongU0, r[0], r[1]), v[0], v[1], at, segment(r[0], r[2], r[1], r[2])),
-                edge(surface, trimmed(alongV1, r[2], r[3]), v[1], v[2], at, segment(r[1], r[2], r[1], r[3])),
-                edge(surface, trimmed(alongU1, r[1], r[0]), v[2], v[3], at, segment(r[1], r[3], r[0], r[3])),
-                edge(surface, trimmed(alongV0, r[3], r[2]), v[3], v[0], at, segment(r[0], r[3], r[0], r[2])));
+        int c0 = curve3d(iso(r[0], r[2], r[1], r[2], false), at, patches);
+        int c1 = curve3d(iso(r[1], r[2], r[1], r[3], false), at, patches);
+        int c2 = curve3d(iso(r[0], r[3], r[1], r[3], true), at, patches);
+        int c3 = curve3d(iso(r[0], r[2], r[0], r[3], true), at, patches);
+        List<Integer> edges = List.of(edge(surface, trimmed(alongU0, r[0], r[1]), v[0], v[1], c0),
+                edge(surface, trimmed(alongV1, r[2], r[3]), v[1], v[2], c1),
+                edge(surface, trimmed(alongU1, r[1], r[0]), v[2], v[3], c2),
+                edge(surface, trimmed(alongV0, r[3], r[2]), v[3], v[0], c3));
         return add("EDGE_LOOP(''," + refs(edges) + ")");
+    }
+
+    /**
+     * The iso-parameter line from {@code (u0, v0)} to {@code (u1, v1)} as a degree-1 piece whose
+     * parameter is the varying coordinate (the LINE's parameter), run backwards when {@code back}.
+     */
+    private static TrimPiece iso(double u0, double v0, double u1, double v1, boolean back) {
+        double t0 = u0 == u1 ? v0 : u0, t1 = u0 == u1 ? v1 : u1;
+        TrimCurve c = new TrimCurve(org.beziertracer.model.SplineBasis.BSPLINE, 1, new double[] {t0, t0, t1, t1},
+                new double[] {u0, v0, u1, v1}, null);
+        return back ? new TrimPiece(c, t1, t0) : new TrimPiece(c, t0, t1);
     }
 
     private int line(double u, double v, double du, double dv) {

@@ -60,16 +60,7 @@ class IgesReaderTest {
 
     /** The same point by Cox–de Boor on the knots, points and weights read. */
     static Vec3 coxDeBoor(FreeFormSurface s, double u, double v) {
-        double[] pts = s.points(), w = s.weights();
-        int n = s.countU() * s.countV();
-        double[] h = new double[4 * n];
-        for (int k = 0; k < n; k++) {
-            double wk = w == null ? 1 : w[k];
-            h[4 * k] = wk * pts[3 * k];
-            h[4 * k + 1] = wk * pts[3 * k + 1];
-            h[4 * k + 2] = wk * pts[3 * k + 2];
-            h[4 * k + 3] = wk;
-        }
+        double[] h = SplinePoint.homogeneous(s.points(), s.weights());
         double[] r = SplineReference.surface(s.basis().knotVector(s.degreeU(), s.parmU()), s.degreeU(),
                 s.basis().knotVector(s.degreeV(), s.parmV()), s.degreeV(), s.countU(), s.countV(), h, 4, u, v);
         return new Vec3(r[0] / r[3], r[1] / r[3], r[2] / r[3]);

@@ -51,6 +51,32 @@ class StepFileTest {
     }
 
     @Test
+    void numbersReadInPlaceHaveTheBitsOfTheJdkParse() {
+        java.util.Random rnd = new java.util.Random(10303);
+        StringBuilder data = new StringBuilder();
+        List<String> texts = new java.util.ArrayList<>();
+        for (int k = 0; k < 5000; k++) {
+            double v = (rnd.nextDouble() - 0.5) * Math.pow(10, rnd.nextInt(40) - 20);
+            String t = switch (k % 6) {
+                case 0 -> Double.toString(v);
+                case 1 -> String.format(java.util.Locale.ROOT, "%.17E", v);
+                case 2 -> String.format(java.util.Locale.ROOT, "%.6f", v);
+                case 3 -> (v < 0 ? "-" : "+") + Math.abs((long) (v * 1e3) % 1_000_000_000_000L) + ".";
+                case 4 -> (v < 0 ? "-" : "") + Math.abs((long) (v * 1e3) % 1_000_000_000_000L) + ".E-07";
+                default -> Long.toString(rnd.nextLong() >> rnd.nextInt(64));
+            };
+            texts.add(t);
+            data.append("#").append(k + 1).append("=N(").append(t).append(");\n");
+        }
+        StepFile f = read(data.toString());
+        for (int k = 0; k < texts.size(); k++) {
+            String t = texts.get(k);
+            Object expected = t.contains(".") || t.contains("E") ? (Object) Double.parseDouble(t) : (Object) Long.parseLong(t);
+            assertEquals(expected, f.entities.get(k + 1).parts().get(0).params().get(0), t);
+        }
+    }
+
+    @Test
     void complexInstancesKeepTheirRecordsInOrder() {
         StepFile f = read("#5=(BOUNDED_SURFACE()B_SPLINE_SURFACE(2,1)\nRATIONAL_B_SPLINE_SURFACE(((1.,2.))));\n");
         StepFile.Entity e = f.entities.get(5);

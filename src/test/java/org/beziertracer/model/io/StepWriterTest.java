@@ -183,7 +183,7 @@ class StepWriterTest {
         assertTrue(text.contains("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));"));
         for (String entity : List.of("PRODUCT_DEFINITION_SHAPE(", "SHAPE_DEFINITION_REPRESENTATION(", "OPEN_SHELL(",
                 "MANIFOLD_SURFACE_SHAPE_REPRESENTATION(", "RATIONAL_B_SPLINE_SURFACE(", "ADVANCED_FACE(", "PCURVE(",
-                "SURFACE_CURVE('',", ".PCURVE_S1.)", ".POLYLINE_FORM.",
+                "SURFACE_CURVE('',", ".PCURVE_S1.)",
                 "SI_UNIT(.MILLI.,.METRE.)")) {
             assertTrue(text.contains(entity), entity);
         }
