@@ -1,6 +1,7 @@
 package org.beziertracer.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -8,7 +9,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 
+import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.model.io.FileFormats;
 import org.junit.jupiter.api.Test;
 
@@ -93,5 +96,43 @@ class CancelLatencyTest {
         assertSame(before, app.document().scene(), "the model stays");
         assertNull(app.status().task(), "the bar is gone");
         assertTrue(!Thread.currentThread().isInterrupted(), "no interrupt leaks out of the job");
+    }
+
+    @Test
+    void cancellingTheContinuityAnalysisStopsBeforeTheNextProgressStepAndDoesNotStartAgain() {
+        AppModel app = new AppModel(new FakeEngine(), new FakeDialogs(), AppThreads.direct(), MemoryPreferences.fresh());
+        app.files().open("grid", () -> new SceneDocument(new Scene(BigModels.grid(10_000)), RenderSettings.defaults()));
+        long[] atCancel = {-1};
+        long[] mostDone = {0};
+        String[] firstCount = {null};
+        app.addListener(() -> {
+            Task t = app.status().task();
+            if (t == null || !t.label().equals("analysing continuity") || t.count().isEmpty()) {
+                return;
+            }
+            if (firstCount[0] == null) {
+                firstCount[0] = t.count();
+            }
+            long done = Long.parseLong(t.count().split(" ")[0].replace(",", ""));
+            mostDone[0] = Math.max(mostDone[0], done);
+            if (done >= ContinuityAnalysis.PROGRESS_STEP && atCancel[0] < 0) {
+                atCancel[0] = done;
+                t.cancel();
+            }
+        });
+        app.settings().set(Toggle.CONTINUITY, true);
+        assertEquals("0 / 19,800 borders", firstCount[0], "the bar shows the total from its first report");
+        assertTrue(atCancel[0] > 0, "Cancel was pressed");
+        assertTrue(mostDone[0] - atCancel[0] < ContinuityAnalysis.PROGRESS_STEP, "after Cancel at " + atCancel[0]
+                + " borders the analysis went on to " + mostDone[0]);
+        assertEquals("continuity analysis cancelled", app.status().message());
+        assertNull(app.status().task());
+        assertNull(app.continuity().current());
+        assertFalse(app.continuity().busy(), "a cancelled analysis is not waited for");
+        app.resetView(); // a new picture: the cancelled model is not analysed again
+        assertNull(app.continuity().current());
+        app.settings().set(Toggle.CONTINUITY, false);
+        app.settings().set(Toggle.CONTINUITY, true);
+        assertEquals(19_800, app.continuity().current().result().rows().size(), "switched on again: analysed");
     }
 }
