@@ -21,8 +21,8 @@ import org.beziertracer.app.Toggle;
 /**
  * Frame ms, Mrays/s, pass k of n, samples per pixel, method, BVH speed-up, model size, the last
  * message (for instance the random seed), and — while a model is opened or saved, an image exported
- * or the continuity analysed — a progress bar with its count ({@link Task#text()}) and a Cancel button. Reads the app's status snapshot on every refresh. Fields that do not fit
- * on one row wrap to the next ({@link WrapFlowLayout}); none is ever dropped, and one wider than the
+ * or the continuity analysed — a progress bar with its count ({@link Task#text()}) and a Cancel
+ * button. Reads the app's status snapshot on every refresh. Fields that do not fit on one row wrap to the next ({@link WrapFlowLayout}); none is ever dropped, and one wider than the
  * whole bar is elided with its full text in its tooltip.
  */
 public final class StatusBar extends JPanel {
