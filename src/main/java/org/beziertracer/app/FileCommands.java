@@ -1,5 +1,6 @@
 package org.beziertracer.app;
 
+import java.io.InterruptedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -132,18 +133,36 @@ public final class FileCommands {
         }
     }
 
-    /** Saves the patches atomically as BPT or OBJ (by the extension), then runs {@code then}. */
+    /**
+     * Saves the patches atomically in the format the extension names, then runs {@code then}. The
+     * status bar shows the patches written of all with Cancel; a cancelled save leaves the old file
+     * as it was (and no temporary file).
+     */
     public void saveTo(Path p, Runnable then) {
         Scene scene = app.document().scene();
-        io.submit("saving " + p.getFileName(), () -> {
-            DocumentFiles.saveModel(p, scene);
+        Task task = new Task("saving " + name(p));
+        app.status().task(task);
+        io.submit(task, () -> {
+            DocumentFiles.saveModel(p, scene, (done, total) -> {
+                task.progress(done, total, "patches");
+                if (Thread.currentThread().isInterrupted()) {
+                    throw new InterruptedIOException("the save was cancelled");
+                }
+            });
             return p;
         }, saved -> {
+            app.status().endTask(task);
             app.document().saved(scene, p);
             app.prefs().addRecent(p);
             app.status().message("saved " + p);
             then.run();
-        }, e -> failed("Cannot save " + p.getFileName(), e));
+        }, e -> {
+            app.status().endTask(task);
+            if (e instanceof CancellationException) {
+                app.status().message("saving " + name(p) + " cancelled (the file is as it was)");
+            }
+            failed("Cannot save " + name(p), e);
+        });
     }
 
     /** File → Export Mesh: tessellates the surface and writes a triangle OBJ. */
