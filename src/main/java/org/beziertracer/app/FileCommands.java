@@ -12,6 +12,7 @@ import java.util.function.Supplier;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.FileFormats;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Failures;
@@ -98,7 +99,12 @@ public final class FileCommands {
         if (BuiltIns.find(arg).isPresent()) {
             openBuiltIn(arg);
         } else {
-            open(Path.of(arg));
+            Optional<Path> p = FilePaths.find(arg);
+            if (p.isPresent()) {
+                open(p.get());
+            } else {
+                app.dialogs().error("Cannot open " + arg, arg + ": " + FilePaths.invalidName());
+            }
         }
     }
 
