@@ -118,14 +118,15 @@ public final class ContinuityAnalysis {
 
     /**
      * As {@link #analyze(Scene, Tolerances, Progress)}, stopping with a
-     * {@link CancellationException} once {@code cancelled} says so: it is asked between the phases
-     * and before each border, so a cancelled analysis bounds at most one more border per thread.
+     * {@link CancellationException} once {@code cancelled} says so: it is asked every
+     * {@value WeldIndex#CANCEL_STEP} patches while welding points and finding borders, between the
+     * phases, and before each border, so a cancelled analysis bounds at most one more border per thread.
      */
     public static Result analyze(Scene scene, Tolerances tol, Progress progress, BooleanSupplier cancelled) {
-        WeldIndex welds = WeldIndex.build(scene);
+        WeldIndex welds = WeldIndex.build(scene, cancelled);
         stopIf(cancelled);
         double size = size(scene);
-        SharedBorders.Found found = SharedBorders.find(scene, welds);
+        SharedBorders.Found found = SharedBorders.find(scene, welds, cancelled);
         stopIf(cancelled);
         List<SharedBorders.Border> borders = found.borders();
         int n = borders.size();
@@ -148,7 +149,8 @@ public final class ContinuityAnalysis {
         return new Result(List.copyOf(rows), tol, size, found.arcPairs());
     }
 
-    private static void stopIf(BooleanSupplier cancelled) {
+    /** Throws a {@link CancellationException} when {@code cancelled} says so. */
+    static void stopIf(BooleanSupplier cancelled) {
         if (cancelled.getAsBoolean()) {
             throw new CancellationException("the continuity analysis was cancelled");
         }

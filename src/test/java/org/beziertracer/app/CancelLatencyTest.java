@@ -135,4 +135,16 @@ class CancelLatencyTest {
         app.settings().set(Toggle.CONTINUITY, true);
         assertEquals(19_800, app.continuity().current().result().rows().size(), "switched on again: analysed");
     }
+
+    @Test
+    void aCancelledAnalysisStopsWhileWeldingWithinOneStepOfPatches() {
+        Scene grid = new Scene(BigModels.grid(10_000));
+        int[] asked = {0};
+        java.util.concurrent.CancellationException e = org.junit.jupiter.api.Assertions.assertThrows(
+                java.util.concurrent.CancellationException.class, () -> ContinuityAnalysis.analyze(grid,
+                        ContinuityAnalysis.Tolerances.defaults(grid), (done, total) -> { }, () -> ++asked[0] >= 2));
+        assertEquals(2, asked[0], "asked once a step and stopped at the first yes");
+        assertTrue(java.util.Arrays.stream(e.getStackTrace()).anyMatch(f -> f.getClassName().equals(WeldIndex.class.getName())),
+                "stopped while welding the points, " + WeldIndex.CANCEL_STEP + " patches after Cancel, not after all 10,000");
+    }
 }
