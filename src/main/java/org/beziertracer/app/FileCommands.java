@@ -109,7 +109,7 @@ public final class FileCommands {
     }
 
     private static String name(Path p) {
-        return p.getFileName() == null ? p.toString() : p.getFileName().toString();
+        return FilePaths.name(p);
     }
 
     /** Models menu: a built-in model or scene. */
@@ -176,9 +176,9 @@ public final class FileCommands {
         Path p = app.dialogs().chooseSave("Export tessellated mesh", "obj");
         if (p != null) {
             Scene scene = app.document().scene();
-            io.submit("exporting " + p.getFileName(), () -> DocumentFiles.exportMesh(p, scene),
+            io.submit("exporting " + name(p), () -> DocumentFiles.exportMesh(p, scene),
                     mesh -> app.status().message("exported " + mesh.triangleCount() + " triangles to " + p),
-                    e -> failed("Cannot export " + p.getFileName(), e));
+                    e -> failed("Cannot export " + name(p), e));
         }
     }
 
@@ -195,10 +195,10 @@ public final class FileCommands {
 
     /** Writes {@code content} to {@code p} atomically, off this thread. */
     public void exportTo(Path p, AtomicFiles.BinaryContent content) {
-        io.submit("exporting " + p.getFileName(), () -> {
+        io.submit("exporting " + name(p), () -> {
             AtomicFiles.writeBytes(p, content);
             return p;
-        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + p.getFileName(), e));
+        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + name(p), e));
     }
 
     private void failed(String title, Throwable e) {

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.beziertracer.Main;
+import org.beziertracer.model.io.FilePaths;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -42,8 +43,20 @@ class NonUtf8LocaleTest {
 
     /** {@code beziertracer args} in {@link #dir} with {@code LANG=C}, no {@code LC_*}, headless. */
     private Result langC(String... args) throws Exception {
+        return langC(Main.class, args);
+    }
+
+    /** Prints the code points of {@link FilePaths#name} of the file its argument names (one line, hex). */
+    public static final class NameOf {
+        public static void main(String[] args) {
+            System.out.println(FilePaths.name(FilePaths.of(args[0])).codePoints()
+                    .mapToObj(Integer::toHexString).collect(java.util.stream.Collectors.joining(" ")));
+        }
+    }
+
+    private Result langC(Class<?> main, String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), main.getName()));
         command.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile());
         pb.environment().keySet().removeIf(k -> k.startsWith("LC_") || k.equals("LANG") || k.contains("JAVA_OPTIONS")
@@ -100,6 +113,15 @@ class NonUtf8LocaleTest {
         Result missing = langC("info", "absent-é.bpt");
         assertEquals(1, missing.code(), missing.err());
         assertTrue(missing.err().strip().endsWith(LOCALE_HINT), missing.err());
+    }
+
+    @Test
+    void theNameShownInTheAppIsTheNameOnDiskNotItsAsciiReading() throws Exception {
+        Result r = langC(NameOf.class, "modèles/tépot.bpt");
+        assertEquals(0, r.code(), r.err());
+        String expected = "tépot.bpt".codePoints().mapToObj(Integer::toHexString)
+                .collect(java.util.stream.Collectors.joining(" "));
+        assertEquals(expected, r.out().strip(), "t, é, p, o, t: not t, U+FFFD, U+FFFD, p, o, t");
     }
 
     @Test

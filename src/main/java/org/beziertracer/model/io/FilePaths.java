@@ -116,6 +116,40 @@ public final class FilePaths {
     }
 
     /**
+     * The file name of {@code p} as its owner wrote it, for titles and messages: under a non-UTF-8
+     * locale a listed name reads {@code th\uFFFD\uFFFDi\uFFFD\uFFFDre.bpt}, but the path's URI keeps
+     * the real bytes, so their UTF-8 reading gives back {@code théière.bpt} (bytes that are not
+     * UTF-8 keep the listed name). The whole path when it has no file name.
+     */
+    public static String name(Path p) {
+        Path file = p.getFileName();
+        if (file == null) {
+            return p.toString();
+        }
+        String listed = file.toString();
+        if (listed.indexOf('\uFFFD') < 0) {
+            return listed;
+        }
+        String raw = p.toAbsolutePath().toUri().getRawPath();
+        raw = raw.substring(raw.lastIndexOf('/', raw.length() - 2) + 1).replaceAll("/$", "");
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        for (int k = 0; k < raw.length(); k++) {
+            char c = raw.charAt(k);
+            if (c == '%' && k + 2 < raw.length()) {
+                bytes.write(Integer.parseInt(raw.substring(k + 1, k + 3), 16));
+                k += 2;
+            } else {
+                bytes.write(c);
+            }
+        }
+        try {
+            return StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes.toByteArray())).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return listed;
+        }
+    }
+
+    /**
      * Why a name is no valid path: under a locale whose encoding is not UTF-8 ({@code LANG=C}),
      * Java can neither make nor (except for existing files, see {@link #find}) name a file with
      * other than ASCII letters; that is what to change, not the name.
