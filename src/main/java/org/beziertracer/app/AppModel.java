@@ -78,7 +78,7 @@ public final class AppModel {
             view.repaint();
             notifyListeners();
         }, e -> failed("Difference to clipping failed", e));
-        continuity = new ContinuityModel(threads.difference(), threads.ui(), () -> {
+        continuity = new ContinuityModel(threads.difference(), threads.ui(), status, () -> {
             view.repaint();
             notifyListeners();
         }, e -> failed("Continuity analysis failed", e));

@@ -1,6 +1,5 @@
 package org.beziertracer.app;
 
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -79,11 +78,8 @@ public final class AppPreferences {
         for (int k = 0; k < MAX_RECENT; k++) {
             String v = get(RECENT + k, null);
             if (v != null && !v.isEmpty()) {
-                try {
-                    out.add(Path.of(v));
-                } catch (InvalidPathException e) {
-                    // a value this system cannot read as a path: left out
-                }
+                // a value this system cannot read as a path is left out
+                org.beziertracer.model.io.FilePaths.find(v).ifPresent(out::add);
             }
         }
         return out;

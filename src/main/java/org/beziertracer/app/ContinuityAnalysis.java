@@ -3,6 +3,10 @@ package org.beziertracer.app;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BooleanSupplier;
+import java.util.stream.IntStream;
 
 import org.beziertracer.geometry.BorderContinuity;
 import org.beziertracer.model.Scene;
@@ -103,19 +107,34 @@ public final class ContinuityAnalysis {
     static final int PARALLEL_BORDERS = 64;
 
     /**
-     * As {@link #analyze(Scene, Tolerances)}, telling {@code progress} every
-     * {@value #PROGRESS_STEP} borders and at the end; the borders of a big model are bounded in
-     * parallel, the rows the same on any number of threads (sorted worst first).
+     * As {@link #analyze(Scene, Tolerances)}, telling {@code progress} the total as soon as the
+     * borders are found ({@code (0, total)}), then every {@value #PROGRESS_STEP} borders and at
+     * the end; the borders of a big model are bounded in parallel, the rows the same on any number
+     * of threads (sorted worst first).
      */
     public static Result analyze(Scene scene, Tolerances tol, Progress progress) {
-        WeldIndex welds = WeldIndex.build(scene);
+        return analyze(scene, tol, progress, () -> false);
+    }
+
+    /**
+     * As {@link #analyze(Scene, Tolerances, Progress)}, stopping with a
+     * {@link CancellationException} once {@code cancelled} says so: it is asked every
+     * {@value WeldIndex#CANCEL_STEP} patches while welding points and finding borders, between the
+     * phases, and before each border, so a cancelled analysis bounds at most one more border per thread.
+     */
+    public static Result analyze(Scene scene, Tolerances tol, Progress progress, BooleanSupplier cancelled) {
+        WeldIndex welds = WeldIndex.build(scene, cancelled);
+        stopIf(cancelled);
         double size = size(scene);
-        SharedBorders.Found found = SharedBorders.find(scene, welds);
+        SharedBorders.Found found = SharedBorders.find(scene, welds, cancelled);
+        stopIf(cancelled);
         List<SharedBorders.Border> borders = found.borders();
         int n = borders.size();
-        java.util.concurrent.atomic.AtomicLong done = new java.util.concurrent.atomic.AtomicLong();
-        java.util.stream.IntStream all = java.util.stream.IntStream.range(0, n);
+        progress.progress(0, n);
+        AtomicLong done = new AtomicLong();
+        IntStream all = IntStream.range(0, n);
         List<Row> rows = new ArrayList<>((n >= PARALLEL_BORDERS ? all.parallel() : all).mapToObj(k -> {
+            stopIf(cancelled);
             SharedBorders.Border b = borders.get(k);
             BorderContinuity.Report r = BorderContinuity.analyze(scene.patches().get(b.a()), b.sideA(),
                     scene.patches().get(b.b()), b.sideB(), b.reversed(), size);
@@ -128,6 +147,13 @@ public final class ContinuityAnalysis {
         progress.progress(n, n);
         rows.sort(WORST_FIRST);
         return new Result(List.copyOf(rows), tol, size, found.arcPairs());
+    }
+
+    /** Throws a {@link CancellationException} when {@code cancelled} says so. */
+    static void stopIf(BooleanSupplier cancelled) {
+        if (cancelled.getAsBoolean()) {
+            throw new CancellationException("the continuity analysis was cancelled");
+        }
     }
 
     /** Borders between two progress reports. */

@@ -14,7 +14,12 @@ import org.beziertracer.model.Scene;
  * model and the tolerances to a worker through {@link Coalescing}, which certifies every shared
  * border ({@link ContinuityAnalysis}) and samples each border curve for the marks on the view; the
  * result arrives on the UI thread. A request for the model and tolerances already analysed (a
- * camera move, a new picture) costs nothing.
+ * camera move, a new picture) costs nothing. While it runs the status bar shows the borders done
+ * of all ({@link Task#progress(long, long, String)}) with Cancel; a newer request, View → Continuity
+ * off or Cancel stops it before its next border ({@link ContinuityAnalysis#analyze(Scene,
+ * ContinuityAnalysis.Tolerances, ContinuityAnalysis.Progress, java.util.function.BooleanSupplier)}),
+ * and a cancelled model is not analysed again until it or the tolerances change or the view is
+ * switched on again.
  */
 public final class ContinuityModel {
 
@@ -32,15 +37,21 @@ public final class ContinuityModel {
     private record Request(Scene scene, ContinuityAnalysis.Tolerances tolerances) {}
 
     private final Executor ui;
+    private final StatusModel status;
     private final Runnable onChange;
     private final Coalescing<Request> work;
     // UI thread only
     private Request wanted;
+    /** The analysis the user cancelled: not started again for the same model and tolerances. */
+    private Request dismissed;
     private Shown current;
+    /** The newest request, read by the worker to stop a superseded analysis. */
+    private volatile Request latest;
     private ContinuityAnalysis.Tolerances tolerances;
 
-    ContinuityModel(Executor worker, Executor ui, Runnable onChange, Consumer<Throwable> failed) {
+    ContinuityModel(Executor worker, Executor ui, StatusModel status, Runnable onChange, Consumer<Throwable> failed) {
         this.ui = ui;
+        this.status = status;
         this.onChange = onChange;
         this.work = new Coalescing<>(worker, this::compute, e -> ui.execute(() -> {
             wanted = null;
@@ -64,24 +75,56 @@ public final class ContinuityModel {
     void request(Scene scene) {
         ContinuityAnalysis.Tolerances t = tolerances != null ? tolerances : ContinuityAnalysis.Tolerances.defaults(scene);
         Request r = new Request(scene, t);
-        if (wanted != null && wanted.scene() == scene && wanted.tolerances().equals(t)) {
+        if (same(wanted, r) || same(dismissed, r)) {
             return;
         }
+        dismissed = null;
         wanted = r;
+        latest = r;
         work.submit(r);
     }
 
     /** View → Continuity off: forget the analysis. */
     void clear() {
         wanted = null;
+        latest = null;
+        dismissed = null;
         if (current != null) {
             current = null;
             onChange.run();
         }
     }
 
+    private static boolean same(Request a, Request b) {
+        return a != null && a.scene() == b.scene() && a.tolerances().equals(b.tolerances());
+    }
+
     private void compute(Request r) {
-        ContinuityAnalysis.Result result = ContinuityAnalysis.analyze(r.scene(), r.tolerances());
+        if (latest != r) {
+            return; // superseded before it started
+        }
+        Task task = new Task("analysing continuity");
+        ui.execute(() -> {
+            if (status.task() == null) { // never hides an open's or a save's bar
+                status.task(task);
+            }
+        });
+        ContinuityAnalysis.Result result;
+        try {
+            result = ContinuityAnalysis.analyze(r.scene(), r.tolerances(),
+                    (done, total) -> task.progress(done, total, "borders"), () -> task.isCancelled() || latest != r);
+        } catch (java.util.concurrent.CancellationException e) {
+            ui.execute(() -> {
+                status.endTask(task);
+                if (task.isCancelled() && wanted == r) {
+                    wanted = null;
+                    dismissed = r;
+                    status.message("continuity analysis cancelled");
+                }
+            });
+            return;
+        }
+        ui.execute(() -> status.endTask(task));
         List<double[]> curves = result.rows().stream()
                 .map(row -> curve(r.scene().patches().get(row.border().a()), row.border().sideA())).toList();
         Shown shown = new Shown(result, curves);

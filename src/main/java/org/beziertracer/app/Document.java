@@ -65,6 +65,6 @@ public final class Document {
     void saved(Scene scene, Path target) {
         history.markSaved(scene);
         file = target;
-        name = target.getFileName().toString();
+        name = org.beziertracer.model.io.FilePaths.name(target);
     }
 }

@@ -10,6 +10,7 @@ import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.MeshObjWriter;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.model.io.WriteProgress;
 
 /**
  * File → Save and Export Mesh (the picture's PNG is drawn and encoded by the desktop). Every write
@@ -24,10 +25,15 @@ public final class DocumentFiles {
 
     /** Saves the surfaces of {@code scene} in the model format its extension names ({@link ModelLoader#SAVE_FORMATS}). */
     public static void saveModel(Path file, Scene scene) throws IOException {
+        saveModel(file, scene, WriteProgress.NONE);
+    }
+
+    /** As {@link #saveModel(Path, Scene)}, telling {@code progress} the patches written; when it throws, the old file stays. */
+    public static void saveModel(Path file, Scene scene, WriteProgress progress) throws IOException {
         FileFormat format = ModelLoader.SAVE_FORMATS.stream().filter(f -> f.matches(file.toString())).findFirst()
                 .orElseThrow(() -> new IllegalArgumentException(file + ": save as "
                         + org.beziertracer.model.io.FileFormats.extensionList(ModelLoader.SAVE_FORMATS)));
-        format.write(file, new SceneDocument(scene, RenderSettings.defaults()));
+        format.write(file, new SceneDocument(scene, RenderSettings.defaults()), progress);
     }
 
     /** Tessellates every patch ({@value #MESH_SEGMENTS}² cells each) and writes a triangle OBJ. */

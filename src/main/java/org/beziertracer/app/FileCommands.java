@@ -1,5 +1,6 @@
 package org.beziertracer.app;
 
+import java.io.InterruptedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -11,6 +12,7 @@ import java.util.function.Supplier;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.BuiltIns;
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.FileFormats;
 import org.beziertracer.model.io.SceneDocument;
 import org.beziertracer.render.Failures;
@@ -97,12 +99,17 @@ public final class FileCommands {
         if (BuiltIns.find(arg).isPresent()) {
             openBuiltIn(arg);
         } else {
-            open(Path.of(arg));
+            Optional<Path> p = FilePaths.find(arg);
+            if (p.isPresent()) {
+                open(p.get());
+            } else {
+                app.dialogs().error("Cannot open " + arg, arg + ": " + FilePaths.invalidName());
+            }
         }
     }
 
     private static String name(Path p) {
-        return p.getFileName() == null ? p.toString() : p.getFileName().toString();
+        return FilePaths.name(p);
     }
 
     /** Models menu: a built-in model or scene. */
@@ -132,18 +139,36 @@ public final class FileCommands {
         }
     }
 
-    /** Saves the patches atomically as BPT or OBJ (by the extension), then runs {@code then}. */
+    /**
+     * Saves the patches atomically in the format the extension names, then runs {@code then}. The
+     * status bar shows the patches written of all with Cancel; a cancelled save leaves the old file
+     * as it was (and no temporary file).
+     */
     public void saveTo(Path p, Runnable then) {
         Scene scene = app.document().scene();
-        io.submit("saving " + p.getFileName(), () -> {
-            DocumentFiles.saveModel(p, scene);
+        Task task = new Task("saving " + name(p));
+        app.status().task(task);
+        io.submit(task, () -> {
+            DocumentFiles.saveModel(p, scene, (done, total) -> {
+                task.progress(done, total, "patches");
+                if (Thread.currentThread().isInterrupted()) {
+                    throw new InterruptedIOException("the save was cancelled");
+                }
+            });
             return p;
         }, saved -> {
+            app.status().endTask(task);
             app.document().saved(scene, p);
             app.prefs().addRecent(p);
             app.status().message("saved " + p);
             then.run();
-        }, e -> failed("Cannot save " + p.getFileName(), e));
+        }, e -> {
+            app.status().endTask(task);
+            if (e instanceof CancellationException) {
+                app.status().message("saving " + name(p) + " cancelled (the file is as it was)");
+            }
+            failed("Cannot save " + name(p), e);
+        });
     }
 
     /** File → Export Mesh: tessellates the surface and writes a triangle OBJ. */
@@ -151,9 +176,9 @@ public final class FileCommands {
         Path p = app.dialogs().chooseSave("Export tessellated mesh", "obj");
         if (p != null) {
             Scene scene = app.document().scene();
-            io.submit("exporting " + p.getFileName(), () -> DocumentFiles.exportMesh(p, scene),
+            io.submit("exporting " + name(p), () -> DocumentFiles.exportMesh(p, scene),
                     mesh -> app.status().message("exported " + mesh.triangleCount() + " triangles to " + p),
-                    e -> failed("Cannot export " + p.getFileName(), e));
+                    e -> failed("Cannot export " + name(p), e));
         }
     }
 
@@ -170,10 +195,10 @@ public final class FileCommands {
 
     /** Writes {@code content} to {@code p} atomically, off this thread. */
     public void exportTo(Path p, AtomicFiles.BinaryContent content) {
-        io.submit("exporting " + p.getFileName(), () -> {
+        io.submit("exporting " + name(p), () -> {
             AtomicFiles.writeBytes(p, content);
             return p;
-        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + p.getFileName(), e));
+        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + name(p), e));
     }
 
     private void failed(String title, Throwable e) {

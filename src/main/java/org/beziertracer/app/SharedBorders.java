@@ -49,8 +49,20 @@ public final class SharedBorders {
 
     /** The borders of {@code scene}. */
     public static Found find(Scene scene, WeldIndex welds) {
+        return find(scene, welds, () -> false);
+    }
+
+    /**
+     * As {@link #find(Scene, WeldIndex)}, asking {@code cancelled} every
+     * {@value WeldIndex#CANCEL_STEP} patches and stopping with a
+     * {@link java.util.concurrent.CancellationException} once it says so.
+     */
+    public static Found find(Scene scene, WeldIndex welds, java.util.function.BooleanSupplier cancelled) {
         Map<Long, List<int[]>> byCorners = new LinkedHashMap<>();
         for (int p = 0; p < scene.patchCount(); p++) {
+            if (p % WeldIndex.CANCEL_STEP == 0) {
+                ContinuityAnalysis.stopIf(cancelled);
+            }
             BezierPatch patch = scene.patches().get(p);
             for (int side = 0; side < 4; side++) {
                 int[] ends = corners(patch, welds.patchStart(p), side);

@@ -11,6 +11,7 @@ public final class Task {
     private final String label;
     private volatile boolean cancelled;
     private volatile double progress = -1;
+    private volatile String count = "";
     private volatile Runnable onProgress = () -> {};
     private Thread runner;
 
@@ -30,6 +31,24 @@ public final class Task {
     public void progress(double fraction) {
         progress = Math.max(0, Math.min(1, fraction));
         onProgress.run();
+    }
+
+    /**
+     * Any thread: {@code done} of {@code total} {@code unit}s are done ({@code 40,000 / 100,489
+     * patches}); the bar fills by their ratio and shows the count ({@link #count()}).
+     */
+    public void progress(long done, long total, String unit) {
+        count = String.format(java.util.Locale.ROOT, "%,d / %,d %s", done, total, unit);
+        progress(total > 0 ? (double) done / total : 0);
+    }
+
+    /** The last count reported ({@code 40,000 / 100,489 patches}), or empty when the job reports none. */
+    public String count() { return count; }
+
+    /** The label and, when known, the count: {@code saving big.bpt: 40,000 / 100,489 patches}. */
+    public String text() {
+        String c = count;
+        return c.isEmpty() ? label : label + ": " + c;
     }
 
     /** Where progress reports go (the status bar's refresh; called on the job's thread). */

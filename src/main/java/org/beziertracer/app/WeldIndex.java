@@ -48,6 +48,9 @@ public final class WeldIndex {
         this.weldedPoints = weldedPoints;
     }
 
+    /** Patches between two questions whether a build was cancelled. */
+    static final int CANCEL_STEP = 1024;
+
     /** The coincidence tolerance of {@code scene}: {@link #RELATIVE_TOLERANCE} of its size. */
     public static double tolerance(Scene scene) {
         double size = scene.patchCount() == 0 ? 0 : scene.controlBounds().diagonal();
@@ -56,6 +59,14 @@ public final class WeldIndex {
 
     /** Finds the coincident points of {@code scene} (off the UI thread: it reads every point). */
     public static WeldIndex build(Scene scene) {
+        return build(scene, () -> false);
+    }
+
+    /**
+     * As {@link #build(Scene)}, asking {@code cancelled} every {@value #CANCEL_STEP} patches and
+     * stopping with a {@link java.util.concurrent.CancellationException} once it says so.
+     */
+    public static WeldIndex build(Scene scene, java.util.function.BooleanSupplier cancelled) {
         int patches = scene.patchCount();
         int[] start = new int[patches + 1];
         for (int p = 0; p < patches; p++) {
@@ -68,6 +79,9 @@ public final class WeldIndex {
         CellTable cells = new CellTable(n, tol > 0 ? CELL_PER_TOLERANCE * tol : 1);
         double[] q = new double[3];
         for (int p = 0, g = 0; p < patches; p++) {
+            if (p % CANCEL_STEP == 0) {
+                ContinuityAnalysis.stopIf(cancelled);
+            }
             BezierPatch patch = scene.patches().get(p);
             int n1 = patch.degreeU() + 1;
             for (int k = 0; k < patch.pointCount(); k++, g++) {

@@ -86,9 +86,20 @@ final class AnalyzeCommand implements Callable<Integer> {
         if (columns == 0) {
             result = ContinuityAnalysis.analyze(scene, tol);
         } else {
-            try (ProgressBarDisplay bar = new ProgressBarDisplay(spec.commandLine().getErr(), columns, 1,
-                    0, "analyze", " borders", 1)) {
-                result = ContinuityAnalysis.analyze(scene, tol, (done, total) -> bar.progress(0, done, total));
+            // The bar starts when the borders are found, so its first frame shows their total
+            ProgressBarDisplay[] bar = {null};
+            try {
+                result = ContinuityAnalysis.analyze(scene, tol, (done, total) -> {
+                    if (bar[0] == null) {
+                        bar[0] = new ProgressBarDisplay(spec.commandLine().getErr(), columns, 1, total, "analyze",
+                                " borders", 1);
+                    }
+                    bar[0].progress(0, done, total);
+                });
+            } finally {
+                if (bar[0] != null) {
+                    bar[0].close();
+                }
             }
         }
         double millis = (System.nanoTime() - start) / 1e6;

@@ -3,10 +3,9 @@ package org.beziertracer.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.Path;
 import java.util.function.Consumer;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.BuiltIns;
 import org.beziertracer.model.io.Echo;
 
@@ -82,12 +81,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (BuiltIns.find(arg).isPresent()) {
             return null;
         }
-        try {
-            if (Files.isRegularFile(Path.of(arg))) {
-                return null;
-            }
-        } catch (InvalidPathException e) {
-            // not a path on this system: reported below
+        if (FilePaths.find(arg).filter(Files::isRegularFile).isPresent()) {
+            return null;
         }
         return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render, analyze; "
                 + "built-ins: " + String.join(", ", BuiltIns.names()) + ")";
@@ -134,6 +129,9 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
     static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
         cl.setResourceBundle(new CliText());
+        // File names as FilePaths reads them: an existing non-ASCII name works under LANG=C too
+        cl.registerConverter(java.nio.file.Path.class, name -> FilePaths.find(name).orElseThrow(() ->
+                new CommandLine.TypeConversionException(FilePaths.invalidName())));
         cl.setExecutionExceptionHandler(CliErrors::handle);
         cl.setParameterExceptionHandler(UsageErrors::handle);
         return cl;

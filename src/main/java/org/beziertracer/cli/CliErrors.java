@@ -2,9 +2,9 @@ package org.beziertracer.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.model.io.HeapEstimates;
 import org.beziertracer.render.Failures;
@@ -48,11 +48,9 @@ final class CliErrors {
 
     private static String outOfMemory(String model) {
         long estimate = 0;
-        try {
-            Path file = Path.of(model);
-            estimate = Files.isRegularFile(file) ? HeapEstimates.forFile(file) : 0;
-        } catch (InvalidPathException e) {
-            // a built-in name: no file to measure
+        Path file = FilePaths.find(model).orElse(null);
+        if (file != null && Files.isRegularFile(file)) { // else a built-in name: no file to measure
+            estimate = HeapEstimates.forFile(file);
         }
         return HeapBudget.outOfMemory(estimate);
     }

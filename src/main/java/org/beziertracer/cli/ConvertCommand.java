@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.FileFormats;
@@ -44,8 +45,8 @@ final class ConvertCommand implements Callable<Integer> {
         FileFormat format = FileFormats.find(output).filter(FileFormat::canWrite).orElseThrow(() ->
                 new IllegalArgumentException(output + ": expected a file name ending in "
                         + FileFormats.extensionList(FileFormats.writable()) + " (the format to write)"));
-        Path target = Path.of(output);
-        Path source = Path.of(input);
+        Path target = FilePaths.of(output);
+        Path source = FilePaths.of(input);
         if (Files.exists(source) && Files.exists(target) && Files.isSameFile(source, target)) {
             throw new IllegalArgumentException(output + ": is the input file; write to another name");
         }

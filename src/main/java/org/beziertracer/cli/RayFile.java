@@ -34,7 +34,7 @@ final class RayFile implements RaySource {
             String[] parts = text.split("\\s+");
             if (parts.length != 6) {
                 throw new IllegalArgumentException(name + ":" + lineNumber + ": expected 6 numbers "
-                        + "'ox oy oz dx dy dz', found " + parts.length + " fields");
+                        + "\"ox oy oz dx dy dz\", found " + parts.length + (parts.length == 1 ? " field" : " fields"));
             }
             for (int k = 0; k < 6; k++) {
                 try {

@@ -5,11 +5,11 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.Writer;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Hit;
 import org.beziertracer.geometry.SurfaceCurvature;
@@ -208,11 +208,7 @@ final class TraceCommand implements Callable<Integer> {
         if (BuiltIns.find(model).isPresent()) {
             return null;
         }
-        try {
-            return Path.of(model);
-        } catch (InvalidPathException e) {
-            return null;
-        }
+        return FilePaths.find(model).orElse(null);
     }
 
     /** True when both files exist and are one file (same path, a link, a hard link). */

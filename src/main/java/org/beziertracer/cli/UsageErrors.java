@@ -34,8 +34,10 @@ final class UsageErrors {
     static String message(ParameterException e) {
         ArgSpec arg = e.getArgSpec();
         String value = e.getValue();
-        if (arg != null && value != null && e.getCause() instanceof CommandLine.TypeConversionException) {
-            return label(arg) + ": expected " + expected(arg.type()) + ", found " + Echo.quote(value);
+        if (arg != null && value != null && e.getCause() instanceof CommandLine.TypeConversionException t) {
+            String why = arg.type() == Path.class && t.getMessage() != null && t.getMessage().contains("locale")
+                    ? ": " + t.getMessage() : ""; // FilePaths.invalidName(): what to change
+            return label(arg) + ": expected " + expected(arg.type()) + ", found " + Echo.quote(value) + why;
         }
         String first = String.valueOf(e.getMessage()).lines().findFirst().orElse("").strip();
         return first.isEmpty() ? "invalid command line" : lowerFirst(first.replace("'", "\""));

@@ -1,5 +1,6 @@
 package org.beziertracer.ui;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.render.ShadingMode;
 
 import java.awt.event.ActionEvent;
@@ -326,7 +327,7 @@ public final class AppActions {
         for (int k = 0; k < AppPreferences.MAX_RECENT; k++) {
             Action a = get("recent" + k);
             a.setEnabled(k < recent.size());
-            a.putValue(Action.NAME, k < recent.size() ? (k + 1) + "  " + recent.get(k).getFileName() : " ");
+            a.putValue(Action.NAME, k < recent.size() ? (k + 1) + "  " + FilePaths.name(recent.get(k)) : " ");
             String where = k < recent.size() ? recent.get(k).toString() : "";
             a.putValue(Action.SHORT_DESCRIPTION, "Open " + where + " again (" + keyText((KeyStroke)
                     a.getValue(Action.ACCELERATOR_KEY)) + ")");

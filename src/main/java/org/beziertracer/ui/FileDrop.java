@@ -9,6 +9,7 @@ import java.util.List;
 
 import javax.swing.TransferHandler;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.app.FileCommands;
 
 /**
@@ -36,7 +37,7 @@ final class FileDrop extends TransferHandler {
         }
         try {
             List<?> dropped = (List<?>) support.getTransferable().getTransferData(DataFlavor.javaFileListFlavor);
-            List<Path> paths = dropped.stream().filter(File.class::isInstance).map(f -> ((File) f).toPath()).toList();
+            List<Path> paths = dropped.stream().filter(File.class::isInstance).flatMap(f -> FilePaths.find(((File) f).getPath()).stream()).toList();
             // After the drop completes: the unsaved-edits question must not block the drag source
             javax.swing.SwingUtilities.invokeLater(() -> files.openDropped(paths));
             return !paths.isEmpty();

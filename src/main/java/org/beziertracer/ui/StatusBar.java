@@ -20,9 +20,9 @@ import org.beziertracer.app.Toggle;
 
 /**
  * Frame ms, Mrays/s, pass k of n, samples per pixel, method, BVH speed-up, model size, the last
- * message (for instance the random seed), and — while a model is being opened — a progress bar
- * with a Cancel button. Reads the app's status snapshot on every refresh. Fields that do not fit
- * on one row wrap to the next ({@link WrapFlowLayout}); none is ever dropped, and one wider than the
+ * message (for instance the random seed), and — while a model is opened or saved, an image exported
+ * or the continuity analysed — a progress bar with its count ({@link Task#text()}) and a Cancel
+ * button. Reads the app's status snapshot on every refresh. Fields that do not fit on one row wrap to the next ({@link WrapFlowLayout}); none is ever dropped, and one wider than the
  * whole bar is elided with its full text in its tooltip.
  */
 public final class StatusBar extends JPanel {
@@ -49,9 +49,10 @@ public final class StatusBar extends JPanel {
         this.app = app;
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, getForeground().darker()));
         progress.setName("status.progress");
-        progress.setToolTipText("opening a model (the current one stays until it is read) or exporting an image");
+        progress.setToolTipText("opening or saving a model (the current one stays until it is read), exporting an image "
+                + "or analysing continuity; the count is what is done of all");
         cancel.setName("status.cancel");
-        cancel.setToolTipText("stop: an open keeps the current model, an export writes no file");
+        cancel.setToolTipText("stop: an open keeps the current model, a save or an export leaves the file as it was");
         cancel.addActionListener(e -> cancelTask());
         add(progress);
         add(cancel);
@@ -134,7 +135,7 @@ public final class StatusBar extends JPanel {
         Task task = app.status().task();
         progress.setVisible(task != null);
         cancel.setVisible(task != null);
-        progress.setString(task == null ? "" : task.label());
+        progress.setString(task == null ? "" : task.text());
         progress.setStringPainted(task != null);
         // Animated only while shown and without a fraction: a hidden indeterminate bar still ticks
         // its 15 ms timer, waking the event thread 66 times a second for nothing

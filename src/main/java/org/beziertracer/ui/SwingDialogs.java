@@ -9,6 +9,7 @@ import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.app.ExportOptions;
 import org.beziertracer.app.ModelLoader;
 import org.beziertracer.app.UserDialogs;
@@ -42,7 +43,7 @@ final class SwingDialogs implements UserDialogs {
             return null;
         }
         folder = fc.getCurrentDirectory();
-        return fc.getSelectedFile().toPath();
+        return path(fc.getSelectedFile());
     }
 
     @Override
@@ -71,7 +72,7 @@ final class SwingDialogs implements UserDialogs {
                 JOptionPane.OK_CANCEL_OPTION) != JOptionPane.OK_OPTION) {
             return null;
         }
-        return f.toPath();
+        return path(f);
     }
 
     @Override
@@ -85,6 +86,18 @@ final class SwingDialogs implements UserDialogs {
             case 1 -> Choice.DISCARD;
             default -> Choice.CANCEL;
         };
+    }
+
+    /**
+     * The chosen file as a path ({@link FilePaths}); a name this locale cannot pass on (a new
+     * non-ASCII name under {@code LANG=C}) is a one-line error, and null.
+     */
+    private Path path(File f) {
+        Path p = FilePaths.find(f.getPath()).orElse(null);
+        if (p == null) {
+            error("Cannot use " + f.getName(), f.getPath() + ": " + FilePaths.invalidName());
+        }
+        return p;
     }
 
     @Override

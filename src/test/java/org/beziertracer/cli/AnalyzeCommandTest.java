@@ -145,6 +145,8 @@ class AnalyzeCommandTest {
         String[] lines = bar.err().strip().split("\r");
         String last = lines[lines.length - 1].strip();
         assertTrue(last.startsWith("analyze 100%") && last.contains("52/52 borders"), last);
+        String first = lines[0].strip();
+        assertTrue(first.startsWith("analyze   0%") && first.contains(" 0/52 borders"), "the first frame shows the total: " + first);
         Run quiet = Run.with(cl -> ((AnalyzeCommand) cl.getSubcommands().get("analyze").getCommand()).stderrColumns = () -> 80,
                 "analyze", "teapot", "--quiet");
         assertEquals("", quiet.err());

@@ -3,13 +3,10 @@ package org.beziertracer.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.TimeUnit;
 
-import org.beziertracer.Main;
 import org.beziertracer.UserMessages;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -105,29 +102,5 @@ class CauseMessagesTest {
                 "--eye", "-1e308,0,0", "--target", "1e308,0,0"), 1);
         assertEquals("beziertracer render: camera eye and target are too far apart: their distance overflows"
                 + " (beyond the largest number, about 1.8e308)", line);
-    }
-
-    @Test
-    void underLangCANonAsciiFileNameSaysWhatToChange() throws Exception {
-        Files.writeString(dir.resolve("tépot.bpt"), ONE_PATCH);
-        ProcessBuilder pb = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Main.class.getName(),
-                "info", "tépot.bpt").directory(dir.toFile());
-        pb.environment().keySet().removeIf(k -> k.startsWith("LC_") || k.equals("LANG") || k.contains("JAVA_OPTIONS")
-                || k.equals("JAVA_TOOL_OPTIONS"));
-        pb.environment().put("LANG", "C");
-        pb.redirectError(dir.resolve("err.txt").toFile()).redirectOutput(dir.resolve("out.txt").toFile());
-        Process p = pb.start();
-        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        String err = Files.readString(dir.resolve("err.txt"), StandardCharsets.ISO_8859_1);
-        if (p.exitValue() == 0) { // a JVM that passes the name through (UTF-8 by default) reads the file
-            assertTrue(Files.readString(dir.resolve("out.txt"), StandardCharsets.ISO_8859_1).contains("patches: 1"));
-            return;
-        }
-        assertEquals(1, p.exitValue(), err);
-        List<String> lines = err.lines().toList();
-        assertEquals(1, lines.size(), err);
-        assertTrue(lines.get(0).endsWith("not a valid file name in this locale's encoding (ANSI_X3.4-1968): Java cannot"
-                + " pass on a name with other than ASCII characters; run with a UTF-8 locale, e.g. LC_ALL=C.UTF-8"), err);
     }
 }

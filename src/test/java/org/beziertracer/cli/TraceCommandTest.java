@@ -130,7 +130,9 @@ class TraceCommandTest {
         assertTrue(line.contains("rays.txt:2:") && line.contains("\"abc\""), line);
 
         r = run("trace", "teapot", "-i", rays("1 2 3 4 5\n").toString());
-        assertTrue(UserMessages.checkOneLineOutput(r.err()).contains("rays.txt:1: expected 6 numbers"), r.err());
+        assertTrue(UserMessages.checkOneLineOutput(r.err()).endsWith("rays.txt:1: expected 6 numbers \"ox oy oz dx dy dz\", found 5 fields"), r.err());
+        r = run("trace", "teapot", "-i", rays("bad\n").toString());
+        assertTrue(UserMessages.checkOneLineOutput(r.err()).endsWith("rays.txt:1: expected 6 numbers \"ox oy oz dx dy dz\", found 1 field"), r.err());
         r = run("trace", "teapot", "-i", rays("1 2 3 0 0 0\n").toString());
         assertTrue(UserMessages.checkOneLineOutput(r.err()).contains("direction is zero"), r.err());
         r = run("trace", "teapot", "-i", rays("1 2 3 0 1e-320 0\n").toString());

@@ -270,4 +270,31 @@ class FilesGuiTest extends GuiSession {
         d.waitFor("the dialog to close", () -> !dialog.isShowing());
         assertEquals("patch — Bézier Tracer", title(), "the model stays");
     }
+
+    @Test
+    @Order(7)
+    void aBigSaveCountsThePatchesWrittenAndCancelKeepsTheOldFile() throws Exception {
+        org.beziertracer.model.Scene big = new org.beziertracer.model.Scene(org.beziertracer.app.BigModels.grid(200_000));
+        GuiDriver.onEdt(() -> d.app.files().open("grid", () -> new org.beziertracer.model.io.SceneDocument(big,
+                org.beziertracer.model.RenderSettings.defaults())));
+        d.waitFor("the big model", () -> d.app.document().scene() == big);
+        d.settle();
+        Path obj = Files.writeString(dir.resolve("old.obj"), "# the old file\n");
+        GuiDriver.onEdt(() -> d.app.files().saveTo(obj, () -> { }));
+        javax.swing.JProgressBar bar = d.find("status.progress");
+        d.waitFor("a bar that counts patches", () -> bar.isShowing() && !bar.isIndeterminate()
+                && bar.getString().endsWith(" / 200,000 patches"));
+        String shown = GuiDriver.onEdt(bar::getString);
+        assertTrue(shown.matches("saving old\\.obj: [0-9,]+ / 200,000 patches"), shown);
+        d.click(d.find("status.cancel"));
+        d.waitFor("the progress bar to go", () -> !bar.isShowing());
+        d.settle();
+        assertEquals("saving old.obj cancelled (the file is as it was)", d.status("message"));
+        assertEquals("# the old file\n", Files.readString(obj), "the old file is untouched");
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("old.obj"), files.map(f -> f.getFileName().toString()).toList(), "no temporary file");
+        }
+        d.menu("Models", "model:patch");
+        d.settle();
+    }
 }

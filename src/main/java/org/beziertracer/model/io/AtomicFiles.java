@@ -82,7 +82,9 @@ public final class AtomicFiles {
             absolute = realPath(target, absolute);
             dir = absolute.getParent();
         }
-        String name = absolute.getFileName().toString();
+        // A name that came through a non-UTF-8 locale (FilePaths) holds U+FFFD, which that locale
+        // cannot encode in a new name: the temporary file replaces it
+        String name = absolute.getFileName().toString().replace('\uFFFD', '_');
         Path temp = null;
         boolean moved = false;
         try {

@@ -36,6 +36,11 @@ public final class BptWriter {
      *                                  trimmed (BPT cannot hold weights or trim loops; OBJ can)
      */
     public static void write(Writer out, List<BezierPatch> patches) throws IOException {
+        write(out, patches, WriteProgress.NONE);
+    }
+
+    /** As {@link #write(Writer, List)}, telling {@code progress} the patches written. */
+    public static void write(Writer out, List<BezierPatch> patches, WriteProgress progress) throws IOException {
         for (int k = 0; k < patches.size(); k++) {
             BezierPatch p = patches.get(k);
             if (p.isRational() || p.trim() != null) {
@@ -46,6 +51,7 @@ public final class BptWriter {
         out.write(Integer.toString(patches.size()));
         out.write('\n');
         StringBuilder line = new StringBuilder(64);
+        int done = 0;
         for (BezierPatch patch : patches) {
             out.write(patch.degreeU() + " " + patch.degreeV() + "\n");
             double[] net = patch.copyNet();
@@ -56,6 +62,7 @@ public final class BptWriter {
                         .append(NumberText.format(net[k + 2])).append('\n');
                 out.write(line.toString());
             }
+            progress.patch(++done, patches.size());
         }
         out.flush();
     }

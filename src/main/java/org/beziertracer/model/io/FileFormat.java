@@ -40,10 +40,10 @@ public final class FileFormat {
         SceneDocument read(TextSource text, Path baseDir) throws IOException;
     }
 
-    /** Writes a whole document as text to {@code out} (not closed). */
+    /** Writes a whole document as text to {@code out} (not closed), telling {@code progress} how far it got. */
     @FunctionalInterface
     public interface Writer {
-        void write(java.io.Writer out, SceneDocument doc) throws IOException;
+        void write(java.io.Writer out, SceneDocument doc, WriteProgress progress) throws IOException;
     }
 
     /**
@@ -56,10 +56,10 @@ public final class FileFormat {
         Scene read(TextSource text, Path baseDir, List<String> notes) throws IOException;
     }
 
-    /** A model format's writer: the scene's surfaces only. */
+    /** A model format's writer: the scene's surfaces only, telling {@code progress} the patches done. */
     @FunctionalInterface
     public interface ModelWriter {
-        void write(java.io.Writer out, Scene scene) throws IOException;
+        void write(java.io.Writer out, Scene scene, WriteProgress progress) throws IOException;
     }
 
     private final String name;
@@ -97,7 +97,7 @@ public final class FileFormat {
                     Scene scene = reader.read(text, baseDir, notes);
                     return new SceneDocument(scene, RenderSettings.defaults(), notes);
                 },
-                writer == null ? null : (out, doc) -> writer.write(out, doc.scene()));
+                writer == null ? null : (out, doc, progress) -> writer.write(out, doc.scene(), progress));
     }
 
     public String name() { return name; }
@@ -189,13 +189,22 @@ public final class FileFormat {
 
     /** Saves {@code doc} atomically ({@link AtomicFiles}); errors name {@code file} and the reason. */
     public void write(Path file, SceneDocument doc) throws IOException {
-        AtomicFiles.write(file, out -> requireWriter().write(out, doc));
+        write(file, doc, WriteProgress.NONE);
+    }
+
+    /**
+     * As {@link #write(Path, SceneDocument)}, telling {@code progress} the patches written; when it
+     * throws, the save stops and the old file stays.
+     */
+    public void write(Path file, SceneDocument doc, WriteProgress progress) throws IOException {
+        Writer w = requireWriter();
+        AtomicFiles.write(file, out -> w.write(out, doc, progress));
     }
 
     /** The text a save would write. */
     public String toText(SceneDocument doc) {
         Writer w = requireWriter();
-        return AtomicFiles.toText(out -> w.write(out, doc));
+        return AtomicFiles.toText(out -> w.write(out, doc, WriteProgress.NONE));
     }
 
     private Writer requireWriter() {

@@ -27,7 +27,7 @@ public final class FileFormats {
 
     /** Bézier patch text ({@link BptReader}, {@link BptWriter}). */
     public static final FileFormat BPT = FileFormat.model("BPT", "Bézier patch text", List.of("bpt"),
-            (text, baseDir, notes) -> BptReader.readScene(text), (out, scene) -> {
+            (text, baseDir, notes) -> BptReader.readScene(text), (out, scene, progress) -> {
                 // a BPT file holds Bézier patches only: a mesh would be lost without a word
                 int meshes = scene.meshes().size();
                 if (meshes > 0) {
@@ -35,7 +35,7 @@ public final class FileFormats {
                             + meshes + (meshes == 1 ? " triangle mesh" : " triangle meshes")
                             + "; save the model as .obj");
                 }
-                BptWriter.write(out, scene.patches());
+                BptWriter.write(out, scene.patches(), progress);
             });
 
     /** Wavefront OBJ free-form surfaces and polygon faces ({@link ObjReader}, {@link ObjWriter}). */
@@ -52,7 +52,7 @@ public final class FileFormats {
 
     /** Bézier Tracer scene files, JSON ({@link SceneFiles}; {@code docs/scene-file.md}). */
     public static final FileFormat SCENE = new FileFormat("scene", "Bézier Tracer scene (JSON)", List.of("json"),
-            Holds.SCENE, SceneFiles::read, (out, doc) -> out.write(SceneWriter.toJson(doc)));
+            Holds.SCENE, SceneFiles::read, (out, doc, progress) -> out.write(SceneWriter.toJson(doc)));
 
     /** Every format, in the order shown to users. */
     public static final List<FileFormat> ALL = List.of(BPT, OBJ, IGES, STEP, SCENE);

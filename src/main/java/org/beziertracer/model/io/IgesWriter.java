@@ -40,17 +40,22 @@ public final class IgesWriter {
 
     /** Writes the surfaces of {@code scene}; its meshes are refused (IGES faces would lose them). */
     public static void write(Writer out, Scene scene) throws IOException {
+        write(out, scene, WriteProgress.NONE);
+    }
+
+    /** As {@link #write(Writer, Scene)}, telling {@code progress} the patches made into entities (before the file is written). */
+    public static void write(Writer out, Scene scene, WriteProgress progress) throws IOException {
         if (!scene.meshes().isEmpty()) {
             throw new IllegalArgumentException("the IGES writer saves free-form surfaces only but the model has "
                     + scene.meshes().size() + " triangle mesh(es); save the model as .obj");
         }
         IgesWriter w = new IgesWriter();
-        w.surfaces(scene.patches());
+        w.surfaces(scene.patches(), progress);
         w.emit(out);
     }
 
-    private void surfaces(List<BezierPatch> patches) {
-        eachSurface(patches, (p, q, knotsU, knotsV, countU, countV, points, weights, range, trim) ->
+    private void surfaces(List<BezierPatch> patches, WriteProgress progress) throws IOException {
+        eachSurface(patches, progress, (p, q, knotsU, knotsV, countU, countV, points, weights, range, trim) ->
                 trimmed(bspline(p, q, knotsU, knotsV, countU, countV, points, weights, range), trim));
     }
 
@@ -65,12 +70,13 @@ public final class IgesWriter {
      * pieces are all present, once, with its knots; every other patch as a Bézier B-spline over
      * its parameter box.
      */
-    static void eachSurface(List<BezierPatch> patches, SurfaceSink sink) {
-        eachSurface(patches, k -> { }, sink);
+    static void eachSurface(List<BezierPatch> patches, WriteProgress progress, SurfaceSink sink) throws IOException {
+        eachSurface(patches, k -> { }, progress, sink);
     }
 
     /** {@link #eachSurface}, telling {@code firstPatch} the index of each surface's first patch before the surface. */
-    static void eachSurface(List<BezierPatch> patches, java.util.function.IntConsumer firstPatch, SurfaceSink sink) {
+    static void eachSurface(List<BezierPatch> patches, java.util.function.IntConsumer firstPatch, WriteProgress progress,
+                            SurfaceSink sink) throws IOException {
         Map<FreeFormSurface, BitSet> present = new IdentityHashMap<>();
         for (BezierPatch p : patches) {
             PatchOrigin o = p.origin();
@@ -97,6 +103,7 @@ public final class IgesWriter {
                 sink.surface(n, m, bezierKnots(n, d.u0(), d.u1()), bezierKnots(m, d.v0(), d.v1()), n + 1, m + 1,
                         p.copyNet(), p.weights(), new double[] {d.u0(), d.u1(), d.v0(), d.v1()}, p.trim());
             }
+            progress.patch(k + 1, patches.size());
         }
     }
 

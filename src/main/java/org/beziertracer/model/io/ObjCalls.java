@@ -71,12 +71,9 @@ final class ObjCalls {
             throw new ModelFormatException(caller, line, "expected an .obj file after call, found " + Echo.quote(name)
                     + " (only OBJ text files can be called)");
         }
-        Path dir = open.get(open.size() - 1).dir(), file;
-        try {
-            file = dir == null ? Path.of(name) : dir.resolve(name);
-        } catch (InvalidPathException e) {
-            throw new ModelFormatException(caller, line, "not a valid file name after call: " + Echo.quote(name));
-        }
+        Path dir = open.get(open.size() - 1).dir();
+        Path file = FilePaths.find(dir, name).orElseThrow(() -> new ModelFormatException(caller, line,
+                FilePaths.invalidName() + " after call: " + Echo.quote(name)));
         Path key = file.toAbsolutePath().normalize();
         for (int k = 0; k < open.size(); k++) {
             if (key.equals(open.get(k).key())) {

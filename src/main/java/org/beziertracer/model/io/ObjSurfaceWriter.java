@@ -47,11 +47,11 @@ final class ObjSurfaceWriter {
     }
 
     void write(List<BezierPatch> patches) throws IOException {
-        write(patches, List.of());
+        write(patches, List.of(), WriteProgress.NONE);
     }
 
     /** The patches, then each mesh's vertices and faces ({@link #mesh}). */
-    void write(List<BezierPatch> patches, List<Mesh> meshes) throws IOException {
+    void write(List<BezierPatch> patches, List<Mesh> meshes, WriteProgress progress) throws IOException {
         sb.append("# Bézier Tracer: ").append(patches.size()).append(" Bézier patches");
         if (!meshes.isEmpty()) {
             long triangles = meshes.stream().mapToLong(Mesh::triangleCount).sum();
@@ -78,6 +78,7 @@ final class ObjSurfaceWriter {
             } else {
                 patch(p, number);
             }
+            progress.patch(number, patches.size());
             number++;
         }
         for (int k = 0; k < meshes.size(); k++) {

@@ -51,7 +51,12 @@ public final class ObjWriter {
      * of all the triangles).
      */
     public static void write(Writer out, Scene scene) throws IOException {
-        new ObjSurfaceWriter(out).write(scene.patches(), scene.meshes());
+        write(out, scene, WriteProgress.NONE);
+    }
+
+    /** As {@link #write(Writer, Scene)}, telling {@code progress} the patches written. */
+    public static void write(Writer out, Scene scene, WriteProgress progress) throws IOException {
+        new ObjSurfaceWriter(out).write(scene.patches(), scene.meshes(), progress);
     }
 
     /** Writes the scene's patches and meshes to {@code file} atomically (see {@link AtomicFiles}). */

@@ -2,7 +2,6 @@ package org.beziertracer.model.io;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Optional;
 import java.util.function.Consumer;
@@ -43,27 +42,7 @@ public final class SceneFiles {
             throw new ModelFormatException(nameOrPath, "not a built-in name (" + String.join(", ", BuiltIns.names())
                     + ") and not a " + FileFormats.extensionList(FileFormats.ALL) + " file");
         }
-        Path file;
-        try {
-            file = Path.of(nameOrPath);
-        } catch (InvalidPathException e) {
-            throw new ModelFormatException(nameOrPath, invalidName());
-        }
-        return format.get().read(file);
-    }
-
-    /**
-     * Why a name is no valid path: under a locale whose encoding is not UTF-8 ({@code LANG=C}), Java
-     * can neither receive nor pass on a name with other than ASCII letters ({@code tépot.bpt}
-     * arrives as {@code t\uFFFD\uFFFDpot.bpt}); that is what to fix, not the name.
-     */
-    static String invalidName() {
-        String encoding = System.getProperty("sun.jnu.encoding", "UTF-8");
-        if (!encoding.equalsIgnoreCase("UTF-8") && !encoding.equalsIgnoreCase("UTF8")) {
-            return "not a valid file name in this locale's encoding (" + encoding + "): Java cannot pass on a name"
-                    + " with other than ASCII characters; run with a UTF-8 locale, e.g. LC_ALL=C.UTF-8";
-        }
-        return "not a valid file name";
+        return format.get().read(FilePaths.of(nameOrPath));
     }
 
     /**
@@ -84,7 +63,7 @@ public final class SceneFiles {
             methods.accept(doc.settings().method());
         } catch (IllegalArgumentException e) {
             // Named as the reader names the file (FileFormat.read: the path as given)
-            throw new ModelFormatException(Path.of(nameOrPath).toString(),
+            throw new ModelFormatException(FilePaths.of(nameOrPath).toString(),
                     "render.method: " + Echo.cutQuoted(e.getMessage()));
         }
         return doc;

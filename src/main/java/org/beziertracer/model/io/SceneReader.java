@@ -1,7 +1,6 @@
 package org.beziertracer.model.io;
 
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -221,14 +220,10 @@ final class SceneReader {
             throw f.error("model file " + Echo.quote(name) + " must end in " + FileFormats.extensionList(models)
                     + " (for a built-in model use \"builtin\")");
         }
-        Path file;
-        try {
-            file = baseDir == null ? Path.of(name) : baseDir.resolve(name);
-        } catch (InvalidPathException e) {
-            throw f.error("not a valid file name: " + Echo.quote(name));
-        }
+        Path file = FilePaths.find(baseDir, name).orElseThrow(() ->
+                f.error(FilePaths.invalidName() + ": " + Echo.quote(name)));
         if (!Files.isRegularFile(file)) {
-            throw f.error("no such model file " + Echo.quote(name) + (baseDir == null || Path.of(name).isAbsolute()
+            throw f.error("no such model file " + Echo.quote(name) + (baseDir == null || name.startsWith("/")
                     ? "" : " in " + baseDir));
         }
         // a file listed again is read once and is the same model (split once, Instance)

@@ -50,13 +50,18 @@ public final class StepWriter {
 
     /** Writes the surfaces of {@code scene}; its meshes are refused (a STEP face would lose them). */
     public static void write(Writer out, Scene scene) throws IOException {
+        write(out, scene, WriteProgress.NONE);
+    }
+
+    /** As {@link #write(Writer, Scene)}, telling {@code progress} the patches made into faces (before the file is written). */
+    public static void write(Writer out, Scene scene, WriteProgress progress) throws IOException {
         if (!scene.meshes().isEmpty()) {
             throw new IllegalArgumentException("the STEP writer saves free-form surfaces only but the model has "
                     + scene.meshes().size() + " triangle mesh(es); save the model as .obj");
         }
         StepWriter w = new StepWriter();
         int context3d = w.contexts();
-        IgesWriter.eachSurface(scene.patches(), k -> w.material = scene.materials().get(scene.patchMaterial(k)), w::face);
+        IgesWriter.eachSurface(scene.patches(), k -> w.material = scene.materials().get(scene.patchMaterial(k)), progress, w::face);
         w.product(context3d);
         w.styles(context3d);
         w.emit(out);

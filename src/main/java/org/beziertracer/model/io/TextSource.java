@@ -3,6 +3,7 @@ package org.beziertracer.model.io;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.InterruptedIOException;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
 import java.nio.charset.CharsetDecoder;
@@ -18,6 +19,9 @@ import java.nio.charset.StandardCharsets;
  * {@link ReadLimits}: no line longer than {@link ReadLimits#lineChars()} is held in memory and
  * no file larger than {@link ReadLimits#bytesInMemory()} is read whole. Every problem is a one-line
  * {@link ModelFormatException} naming the file.
+ *
+ * <p>A read whose thread is interrupted (Cancel in the app) ends with an
+ * {@link InterruptedIOException} before the next {@value #BUFFER} bytes are taken from the stream.
  *
  * <p>Read it one way: characters ({@link #read()}), lines ({@link #readLine()}) or all at once
  * ({@link #readAll}). Does not close the stream. Not thread-safe.
@@ -221,6 +225,11 @@ public final class TextSource {
     }
 
     private void readBytes() throws IOException {
+        // A cancelled read (its thread interrupted) stops here, within one buffer, whatever the
+        // stream: a file channel closes on interrupt, but a pipe, a socket or a generator does not
+        if (Thread.currentThread().isInterrupted()) {
+            throw new InterruptedIOException("the read was cancelled");
+        }
         offset += bytes.position();
         bytes.compact();
         int n = in.read(bytes.array(), bytes.position(), bytes.remaining());
