@@ -156,7 +156,11 @@ final class GuiDriver {
         robot.mouseMove(p.x, p.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        if (idleAfterClick) {
+            robot.waitForIdle();
+        } else {
+            robot.delay(50);
+        }
     }
 
     /**
@@ -196,6 +200,23 @@ final class GuiDriver {
     void menu(String title, String id) {
         menuPath(title, id.startsWith("menu.") ? id.substring("menu.".length()) : id);
     }
+
+    /**
+     * As {@link #menu}, without waiting for the event queue to go idle after the click: while a
+     * progressive path-traced render refines, every pass repaints the panel, so the queue is idle
+     * only once the whole render is done.
+     */
+    void menuBusy(String title, String id) {
+        idleAfterClick = false;
+        try {
+            menu(title, id);
+        } finally {
+            idleAfterClick = true;
+        }
+    }
+
+    /** Whether {@link #click} and {@link #menuPath} wait for the event queue to go idle after the click ({@link #menuBusy}). */
+    private boolean idleAfterClick = true;
 
     /**
      * Opens menu {@code title}, then each submenu {@code menu.<id>} of {@code path} in turn, and clicks
@@ -265,7 +286,9 @@ final class GuiDriver {
                 });
                 try {
                     clickUntil(item, name + " chosen", () -> fired.get() || !item.isShowing());
-                    robot.waitForIdle();
+                    if (idleAfterClick) {
+                        robot.waitForIdle();
+                    }
                     return onEdt(fired::get);
                 } finally {
                     onEdt(() -> {

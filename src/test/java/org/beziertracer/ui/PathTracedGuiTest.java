@@ -36,7 +36,9 @@ class PathTracedGuiTest extends GuiSession {
     private static void waitLong(String what, java.util.function.BooleanSupplier condition) {
         long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(120);
         while (!GuiDriver.onEdt(condition::getAsBoolean)) {
-            assertTrue(System.nanoTime() < end, "timed out waiting for " + what);
+            assertTrue(System.nanoTime() < end, () -> "timed out waiting for " + what + "; status: "
+                    + GuiDriver.onEdt(() -> d.frame.statusBar().text("spp") + " | " + d.frame.statusBar().text("pass") + " | "
+                    + d.frame.statusBar().text("frame") + " | " + d.frame.statusBar().text("message")));
             try {
                 Thread.sleep(20);
             } catch (InterruptedException e) {
@@ -49,7 +51,7 @@ class PathTracedGuiTest extends GuiSession {
     @Test
     void thePathTracedPictureRefinesWhileTheSamplesRiseAndAnEditStartsItAgain() {
         BufferedImage whitted = shot();
-        d.menu("Render", "pathTraced");
+        d.menuBusy("Render", "pathTraced");
         waitLong("a first path-traced sample in every pixel", () -> shownSamples() >= 1);
         int early = samples();
         BufferedImage first = d.capturePanel();
@@ -64,7 +66,7 @@ class PathTracedGuiTest extends GuiSession {
                 + GuiDriver.save(whitted, "path-whitted"));
 
         int before = samples();
-        d.menu("Surface", "randomize");
+        d.menuBusy("Surface", "randomize");
         waitLong("the count to start again below " + before, () -> shownSamples() >= 0 && shownSamples() < before);
         d.menu("Render", "pathTraced");
         d.settle();

@@ -31,9 +31,9 @@ class SceneFilesTest {
     }
 
     @Test
-    void theBuiltInNamesAreTheModelsThenTheTeapotRoom() {
+    void theBuiltInNamesAreTheModelsThenTheScenes() {
         assertEquals(List.of("patch", "teapot", "teacup", "teaspoon", "sphere", "torus", "trimmed-plate", "wavy6",
-                "wavy10", "curved", "teapot-room"), BuiltIns.names());
+                "wavy10", "curved", "teapot-room", "studio"), BuiltIns.names());
     }
 
     @Test
