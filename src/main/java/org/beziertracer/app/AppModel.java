@@ -65,6 +65,8 @@ public final class AppModel {
         SceneDocument start = ModelLoader.builtIn("patch");
         document = new Document(start.scene(), "patch");
         settings = new SettingsModel(s -> settingsChanged());
+        settings.replaceQuietly(settings.current().with(Level.EXPOSURE, prefs.exposureTenths()));
+        exposureSent = settings.current().exposure();
         view = new ViewModel(ViewModel.home(start.scene(), start.scene().bounds(), settings.current().fovDegrees()),
                 this::viewMoved, this::viewMoved);
         status = new StatusModel(threads.ui(), this::notifyListeners);
@@ -235,6 +237,7 @@ public final class AppModel {
      * {@link #motionEnded} resumes refining.
      */
     void render() {
+        rendered = settings.current();
         Picture p = view.picture();
         if (p != null && settings.current().on(Toggle.RAY_TRACE)) {
             boolean preview = settings.current().pathTraced() && pointer != null && pointer.inGesture();
@@ -327,7 +330,24 @@ public final class AppModel {
         render();
     }
 
+    /** The settings of the last {@link #render()} (null before it): a change of the exposure alone needs no new render. */
+    private Settings rendered;
+    /** The exposure the engine was last told of (or that the first requests carry). */
+    private double exposureSent;
+
     private void settingsChanged() {
+        Settings now = settings.current();
+        if (now.exposure() != exposureSent) {
+            // the picture is tone mapped again off the UI thread; it keeps its samples
+            exposureSent = now.exposure();
+            engine.exposure(exposureSent);
+            prefs.setExposureTenths(now.level(Level.EXPOSURE));
+        }
+        if (now.sameButExposure(rendered)) {
+            rendered = now;
+            notifyListeners();
+            return;
+        }
         double fov = settings.current().fovDegrees();
         if (view.view().fovDegrees() != fov) {
             view.replace(view.view().withFov(fov));

@@ -6,8 +6,9 @@ import java.util.List;
 import java.util.prefs.Preferences;
 
 /**
- * What the app remembers between runs, in one {@link Preferences} node: the theme and the recent
- * files (File → Open Recent, the last {@value #MAX_RECENT}, newest first). The desktop app uses the user's node {@value #NODE}; tests inject a node of their
+ * What the app remembers between runs, in one {@link Preferences} node: the theme, the exposure of
+ * the path-traced picture (Render → Exposure) and the recent files (File → Open Recent, the last
+ * {@value #MAX_RECENT}, newest first). The desktop app uses the user's node {@value #NODE}; tests inject a node of their
  * own (an in-memory one), so they never write the user's preferences. A node that cannot be read
  * or written (no preferences store) is treated as empty, and a choice then lasts for the run only.
  */
@@ -17,6 +18,7 @@ public final class AppPreferences {
     public static final String NODE = "org/beziertracer/ui";
     static final String THEME = "theme";
     static final String RECENT = "recent.";
+    static final String EXPOSURE = "exposure";
     /** Files File → Open Recent lists. */
     public static final int MAX_RECENT = 8;
 
@@ -70,6 +72,23 @@ public final class AppPreferences {
 
     public void setDarkTheme(boolean dark) {
         put(THEME, dark ? "dark" : "light");
+    }
+
+    /**
+     * The exposure last chosen, in tenths of a stop ({@link Level#EXPOSURE}); 0 when none was, or
+     * when the stored value is not a number in the level's range.
+     */
+    public int exposureTenths() {
+        try {
+            int v = Integer.parseInt(get(EXPOSURE, "0").trim());
+            return v >= Level.EXPOSURE.min() && v <= Level.EXPOSURE.max() ? v : 0;
+        } catch (NumberFormatException e) {
+            return 0;
+        }
+    }
+
+    public void setExposureTenths(int tenths) {
+        put(EXPOSURE, Integer.toString(Level.EXPOSURE.check(tenths)));
     }
 
     /** The files opened or saved last, newest first (at most {@value #MAX_RECENT}). */

@@ -28,7 +28,8 @@ import org.beziertracer.render.ToneMap;
  * the path tracer with an optional time budget), then for the file, and renders the current model
  * as seen now — same view, shading, method and light — off screen, on a background task with a
  * progress bar and Cancel in the status bar; the PNG (path traced: through {@link ToneMap}) or, for
- * a {@code .pfm} file name, the linear image ({@link Pfm}) is written atomically (a cancelled or
+ * a {@code .pfm} file name, the linear image ({@link Pfm}) is written atomically; the PNG of a
+ * path-traced image takes the app's exposure ({@link Settings#exposure()}) (a cancelled or
  * failed export leaves no file). The PNG is encoded by the desktop
  * ({@link ImageEncoder}; this layer has no image library). UI thread only.
  */
@@ -77,7 +78,8 @@ public final class ImageExport {
             if (isPfm(p)) {
                 AtomicFiles.writeBytes(p, out -> out.write(Pfm.encode(r.film(), r.window())));
             } else {
-                int[] argb = o.pathTraced() ? ToneMap.argb(r.film(), 0) : r.argb();
+                // path traced: the app's exposure, so the PNG has the bytes of render --exposure E
+                int[] argb = o.pathTraced() ? ToneMap.argb(r.film(), s.exposure()) : r.argb();
                 AtomicFiles.writeBytes(p, encoder.encode(o.width(), o.height(), argb));
             }
             return p;

@@ -28,7 +28,16 @@ public enum Level {
     /** Control points along u of the grid that Replace with Flat Grid makes. */
     GRID_U("grid points along u", 2, 10, 4),
     /** Control points along v of that grid. */
-    GRID_V("grid points along v", 2, 10, 4);
+    GRID_V("grid points along v", 2, 10, 4),
+    /**
+     * Render → Exposure: tenths of a stop of exposure before the path tracer's tone curve, −5..+5
+     * stops ({@link Settings#exposure()}; the command line's {@code --exposure}). Changing it tone
+     * maps the picture again without restarting it.
+     */
+    EXPOSURE("exposure in tenths of a stop", -50, 50, 0);
+
+    /** Tenths of a stop that Render → Brighter / Darker step. */
+    public static final int EXPOSURE_STEP = 5;
 
     private final String label;
     private final int min;

@@ -25,6 +25,14 @@ public interface PictureEngine extends AutoCloseable {
     /** The job of the picture being shown or made, or null (read from any thread). */
     default org.beziertracer.render.RenderJob lastJob() { return null; }
 
+    /**
+     * The exposure of the path-traced picture is now {@code stops} (UI thread, returns at once): the
+     * picture shown is tone mapped again off the UI thread — the render in progress keeps its samples
+     * and goes on — and later renders show this exposure too. Requests made after this call carry
+     * the same exposure.
+     */
+    default void exposure(double stops) {}
+
     /** True while a render or a pending request is in progress (tests wait on this). */
     boolean busy();
 

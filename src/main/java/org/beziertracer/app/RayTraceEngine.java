@@ -37,6 +37,10 @@ import org.beziertracer.render.RenderSession;
  * <p><b>Sink.</b> Tiles of the newest generation are copied into the request's {@link Picture} on
  * the worker threads; nothing here touches a window.
  *
+ * <p><b>Exposure.</b> {@link #exposure} hands the new exposure to a "picture-tone" thread (coalesced:
+ * the newest value only), which has the session tone map the picture again from its film
+ * ({@link RenderSession#setExposure}): the render is not restarted and the UI thread never encodes.
+ *
  * <p><b>BVH speed-up.</b> The last full-frame time is kept per BVH switch for the same picture
  * (scene, camera, other settings); when both are known the status reports off/on.
  */
@@ -48,6 +52,16 @@ public final class RayTraceEngine implements PictureEngine {
         t.setDaemon(true);
         return t;
     });
+    private final ExecutorService tone = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "picture-tone");
+        t.setDaemon(true);
+        return t;
+    });
+    /** The newest exposure asked for; a retone is queued while {@link #tonePending} is set. */
+    private volatile double shownExposure;
+    private final java.util.concurrent.atomic.AtomicBoolean tonePending = new java.util.concurrent.atomic.AtomicBoolean();
+    /** Exposure changes asked for, and the newest of them shown (busy until equal). */
+    private final AtomicLong toneAsked = new AtomicLong(), toneShown = new AtomicLong();
     private final Coalescing<Numbered> requests = new Coalescing<>(prep, this::start, this::fail);
     private final SnapshotCache snapshots = new SnapshotCache();
     private volatile Consumer<RenderStatus> listener = s -> {};
@@ -96,14 +110,36 @@ public final class RayTraceEngine implements PictureEngine {
         requests.submit(new Numbered(submitted.incrementAndGet(), request));
     }
 
+    @Override
+    public void exposure(double stops) {
+        shownExposure = stops;
+        toneAsked.incrementAndGet();
+        if (tonePending.compareAndSet(false, true)) {
+            tone.execute(this::retone);
+        }
+    }
+
+    /** On the tone thread: the newest exposure asked for, applied to the picture shown. */
+    private void retone() {
+        tonePending.set(false);
+        long asked = toneAsked.get();
+        try {
+            session.setExposure(shownExposure);
+        } catch (RuntimeException | Error e) {
+            fail(e);
+        } finally {
+            toneShown.accumulateAndGet(asked, Math::max);
+        }
+    }
+
     /**
-     * True until the newest request's frame is done or has failed. Requests are numbered, so a late
+     * True until the newest request's frame is done or has failed, or an exposure change is not shown yet. Requests are numbered, so a late
      * outcome of an older one (its last pass, or its failure, arriving after a newer one started)
      * cannot make the engine look idle.
      */
     @Override
     public boolean busy() {
-        return settled.get() < submitted.get();
+        return settled.get() < submitted.get() || toneShown.get() < toneAsked.get();
     }
 
     private void start(Numbered n) {
@@ -192,6 +228,7 @@ public final class RayTraceEngine implements PictureEngine {
     @Override
     public void close() {
         prep.shutdownNow();
+        tone.shutdownNow();
         session.close();
         try {
             prep.awaitTermination(5, TimeUnit.SECONDS);

@@ -57,12 +57,13 @@ public final class RenderChoices {
 
     /**
      * The integrator: Whitted, or when {@link Settings#pathTraced()} the path tracer with its
-     * defaults (depth 16, no clamp, exposure 0, as {@code render --integrator path}) and the
-     * {@link Level#PATH_SECONDS} budget.
+     * defaults (depth 16, no clamp, as {@code render --integrator path}), the {@link Level#PATH_SECONDS}
+     * budget and the {@link Settings#exposure()} of its tone map.
      */
     public static PathOptions pathOptions(Settings s) {
         PathOptions p = PathOptions.defaults();
-        return s.pathTraced() ? p.withIntegrator(Integrator.PATH).withBudgetMillis(1000L * s.level(Level.PATH_SECONDS)) : p;
+        return s.pathTraced() ? p.withIntegrator(Integrator.PATH).withBudgetMillis(1000L * s.level(Level.PATH_SECONDS))
+                .withExposure(s.exposure()) : p;
     }
 
     /**

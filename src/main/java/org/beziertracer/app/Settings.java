@@ -154,6 +154,19 @@ public final class Settings {
         return on(Toggle.PATH_TRACED) && analysis == null;
     }
 
+    /**
+     * The exposure of the path-traced picture in stops ({@link Level#EXPOSURE} tenths ÷ 10: the same
+     * double as {@code render --exposure} given that decimal).
+     */
+    public double exposure() {
+        return level(Level.EXPOSURE) / 10.0;
+    }
+
+    /** True when the settings differ at most in their {@link Level#EXPOSURE} (a change that needs no new render). */
+    public boolean sameButExposure(Settings other) {
+        return other != null && with(Level.EXPOSURE, 0).equals(other.with(Level.EXPOSURE, 0));
+    }
+
     /** True when control points are shown and can be picked (their toggle decides, in both views). */
     public boolean pointsShown() {
         return on(Toggle.CONTROL_POINTS);

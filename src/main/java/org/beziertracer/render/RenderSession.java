@@ -36,6 +36,10 @@ public final class RenderSession implements AutoCloseable {
     private final AtomicInteger activeWorkers = new AtomicInteger();
     private final AtomicInteger runningRenders = new AtomicInteger();
     private volatile CompletableFuture<RenderResult> current = CompletableFuture.completedFuture(null);
+    /** The state of the render started last (running or finished), for {@link #setExposure}; null before the first. */
+    private volatile RenderState latest;
+    /** The exposure {@link #setExposure} chose, in stops, or NaN: each job's own. */
+    private volatile double shownExposure = Double.NaN;
 
     /** A session with {@code threads} workers (1..{@value RenderOptions#MAX_THREADS}) sending output to {@code sink}. */
     public RenderSession(int threads, FrameSink sink) {
@@ -125,6 +129,28 @@ public final class RenderSession implements AutoCloseable {
         generation.incrementAndGet();
     }
 
+    /**
+     * The exposure, in stops, of the path-traced tiles this session shows from now on, in place of the
+     * jobs' {@link PathOptions#exposure}: the render started last — running or finished — is tone
+     * mapped again from its film at once (its samples are kept and it goes on refining), and later
+     * renders show it too. Blocks while the film is encoded again (about one frame's tone map);
+     * call it off the UI thread. The film, and so a PNG or a {@code .pfm} made from it, does not
+     * change. A Whitted render has no tone map and is left alone.
+     *
+     * @throws IllegalArgumentException one line, for an exposure that is not finite or beyond ±64 stops
+     */
+    public void setExposure(double stops) {
+        if (!(Math.abs(stops) <= PathOptions.MAX_EXPOSURE)) {
+            throw new IllegalArgumentException("exposure must be -64..64 stops, got " + stops);
+        }
+        shownExposure = stops;
+        // run() publishes its state before it reads shownExposure: either it sees the new value, or we see its state
+        RenderState st = latest;
+        if (st != null) {
+            st.retone(Math.pow(2, stops));
+        }
+    }
+
     /** The newest generation number handed out (or bumped by {@link #cancel()}). */
     public int generation() { return generation.get(); }
 
@@ -181,6 +207,11 @@ public final class RenderSession implements AutoCloseable {
         List<PassPlan.Pass> passes = PassPlan.of(progressive, job.sampler(), job.settings().spp(),
                 onePerPass(job.options().progressive(), path));
         RenderState st = new RenderState(gen, job, sink, generation, new ProgressCounter(progress, gen, passes, tiles));
+        latest = st;
+        double shown = shownExposure;
+        if (!Double.isNaN(shown) && st.path != null) {
+            st.toneScale = Math.pow(2, shown);
+        }
         int workers = Math.min(job.options().threads(), poolSize);
         int perFrame = path.traced() ? 1 : job.options().passesPerFrame();
         for (int p = 0; p < passes.size(); p++) {
@@ -200,6 +231,7 @@ public final class RenderSession implements AutoCloseable {
                 done.completeExceptionally(new CancellationException("superseded"));
                 return;
             }
+            st.shownBlock = pass.firstSample() ? pass.block() : 1;
             if (overBudget(path, st, pass) && p < passes.size() - 1) {
                 // The time budget is spent: this pass is the last one
                 sink.passDone(gen, p, p + 1, st.stats());

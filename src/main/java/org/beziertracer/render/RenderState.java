@@ -12,8 +12,23 @@ final class RenderState {
     final ShadingScene shading;
     /** The path tracer's data when the job asks for it ({@link Integrator#PATH}), else null. */
     final PathScene path;
-    /** {@code 2^exposure} of the path tracer's tone map for the tiles shown; 0 for Whitted (no tone map). */
-    final double toneScale;
+    /**
+     * {@code 2^exposure} of the path tracer's tone map for the tiles shown; 0 for Whitted (no tone map).
+     * Changed while the render runs by {@link #retone} (the app's exposure control); read under
+     * {@link #displayLock}.
+     */
+    volatile double toneScale;
+    /**
+     * Held while a tile of the film is encoded and handed to the sink, by a worker or by {@link #retone}:
+     * the two never interleave on a tile, so the last tile a sink hears is the newest film data at the
+     * newest exposure.
+     */
+    final Object displayLock = new Object();
+    /**
+     * The block of the pass last shown in full ({@link Film#writeArgb}: pixels without a sample yet show
+     * their anchor on this grid); 1 once every pixel has a sample. Set by the coordinator between passes.
+     */
+    volatile int shownBlock = PassPlan.COARSEST;
     final Film film;
     final PixelSampler sampler;
     final FrameSink sink;
@@ -51,6 +66,31 @@ final class RenderState {
                 job.sampler() == SamplerKind.ADAPTIVE && job.settings().spp() > 1);
         this.sampler = new PixelSampler(job.sampler(), job.options().filter(), job.settings().spp(),
                 job.options().seed(), path != null);
+    }
+
+    /**
+     * Tone maps the whole film again with {@code scale} ({@code 2^exposure}) and hands every tile to the
+     * sink, without touching the samples: the render (running or finished) goes on with the new
+     * exposure. Path-traced renders only (a Whitted render has no tone map: nothing happens). Any
+     * thread; tile by tile under {@link #displayLock}, so a worker's newer tile is never overwritten
+     * by an older one. Allocates one tile of pixels.
+     */
+    void retone(double scale) {
+        if (path == null || !(scale > 0) || !sink.wantsTiles()) {
+            return;
+        }
+        toneScale = scale;
+        int size = job.options().tileSize();
+        int[] argb = new int[size * size];
+        for (int[] t : RenderSession.tiles(job.filmWindow(), size)) {
+            if (isStale()) {
+                return;
+            }
+            synchronized (displayLock) {
+                film.writeArgb(t[0], t[1], t[2], t[3], shownBlock, argb, t[2], toneScale);
+                sink.tileDone(generation, t[0], t[1], t[2], t[3], argb, t[2]);
+            }
+        }
     }
 
     /** True once a newer render started or this one was cancelled (or failed). */

@@ -114,8 +114,11 @@ final class RenderWorker {
             if (argb.length < w * h) {
                 argb = new int[st.job.options().tileSize() * st.job.options().tileSize()];
             }
-            film.writeArgb(x0, y0, w, h, pass.firstSample() ? block : 1, argb, w, st.toneScale);
-            st.sink.tileDone(st.generation, x0, y0, w, h, argb, w);
+            synchronized (st.displayLock) {
+                // one tile under the lock that a new exposure's retone takes (RenderState.retone)
+                film.writeArgb(x0, y0, w, h, pass.firstSample() ? block : 1, argb, w, st.toneScale);
+                st.sink.tileDone(st.generation, x0, y0, w, h, argb, w);
+            }
         }
         return true;
     }

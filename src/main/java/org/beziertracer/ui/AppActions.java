@@ -251,7 +251,17 @@ public final class AppActions {
                 + "(16, 64, 256, 1024)", null, () -> s.cycle(Level.PATH_SAMPLES));
         add("pathSeconds", "Next Path-Traced Time Limit", "Cycle the time the path-traced picture may refine "
                 + "(no limit, 10, 30, 60, 300 s)", null, () -> s.cycle(Level.PATH_SECONDS));
+        add("brighter", "Brighter Exposure (+½ stop)", "Path traced: half a stop more exposure before the tone curve "
+                + "(up to +5); the picture keeps refining", key(KeyEvent.VK_EQUALS, CTRL | ALT),
+                () -> s.step(Level.EXPOSURE, Level.EXPOSURE_STEP));
+        add("darker", "Darker Exposure (−½ stop)", "Path traced: half a stop less exposure before the tone curve "
+                + "(down to −5); the picture keeps refining", key(KeyEvent.VK_MINUS, CTRL | ALT),
+                () -> s.step(Level.EXPOSURE, -Level.EXPOSURE_STEP));
+        add("resetExposure", "Reset Exposure", "Path traced: back to 0 stops of exposure (as render --exposure 0)",
+                key(KeyEvent.VK_0, CTRL | ALT), () -> s.set(Level.EXPOSURE, 0));
         syncs.add(() -> {
+            get("resetExposure").putValue(Action.NAME, "Reset Exposure (now "
+                    + exposureText(app.settings().current().level(Level.EXPOSURE)) + ")");
             get("pathSamples").putValue(Action.NAME, "Next Path-Traced Samples (now "
                     + app.settings().current().level(Level.PATH_SAMPLES) + ")");
             int sec = app.settings().current().level(Level.PATH_SECONDS);
@@ -264,6 +274,13 @@ public final class AppActions {
                 key(KeyEvent.VK_PERIOD, CTRL), () -> s.step(Level.INTERACTIVITY, 1));
         add("lessInteractive", "Fewer Passes per Frame", "Show the picture after fewer progressive passes",
                 key(KeyEvent.VK_COMMA, CTRL), () -> s.step(Level.INTERACTIVITY, -1));
+    }
+
+    /** An exposure of {@code tenths} tenths of a stop as the menus show it: {@code 0 EV}, {@code +1.5 EV}, {@code −0.5 EV}. */
+    static String exposureText(int tenths) {
+        String v = tenths % 10 == 0 ? Integer.toString(Math.abs(tenths) / 10)
+                : Math.abs(tenths) / 10 + "." + Math.abs(tenths) % 10;
+        return (tenths > 0 ? "+" : tenths < 0 ? "\u2212" : "") + v + " EV";
     }
 
     private static KeyStroke key(int code, int modifiers) {

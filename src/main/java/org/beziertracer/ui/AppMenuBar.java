@@ -56,7 +56,7 @@ public final class AppMenuBar extends JMenuBar {
         view.insert(analysis, 5);
         JMenu surface = menu("Surface", 'S', "revertPoints", "resetPoints", "randomize", null, "gridU", "gridV");
         JMenu render = menu("Render", 'R', "phong", "texture", "normals", "shadows", "reflections", "light", "showLight", null,
-                "superSampling", "spp", "moreInteractive", "lessInteractive", null, "pathTraced", "pathSamples", "pathSeconds", null, "method", "bvh", "tessellated", "tessellation");
+                "superSampling", "spp", "moreInteractive", "lessInteractive", null, "pathTraced", "pathSamples", "pathSeconds", "brighter", "darker", "resetExposure", null, "method", "bvh", "tessellated", "tessellation");
         JMenu help = new JMenu("Help");
         help.setMnemonic('H');
         help.setName("menu.help");

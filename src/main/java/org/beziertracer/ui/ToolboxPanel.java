@@ -41,6 +41,7 @@ public final class ToolboxPanel extends JPanel {
     private final JSlider subdivision;
     private final JSlider interactivity;
     private final JSlider perspective;
+    private final JSlider exposure;
     private final JSpinner gridU;
     private final JSpinner gridV;
     private final JComboBox<Integer> spp = new JComboBox<>(boxed(Level.SAMPLES_PER_PIXEL.choices()));
@@ -57,6 +58,8 @@ public final class ToolboxPanel extends JPanel {
                 + "displayed frame (left: responsive, right: fewer redraws)", "moreInteractive", "lessInteractive");
         perspective = slider(0, 100, "perspective", "Perspective: from parallel rays "
                 + "(orthographic) to strong divergence", "morePerspective", "lessPerspective");
+        exposure = slider(Level.EXPOSURE.min(), Level.EXPOSURE.max(), "exposure", "Exposure of the path-traced "
+                + "picture, −5..+5 stops (tone mapped again at once; the picture keeps refining)", "brighter", "darker");
         gridU = spinner("gridU", "Control points along u of a new patch (Reset)");
         gridV = spinner("gridV", "Control points along v of a new patch (Reset)");
         setLayout(new BoxLayout(this, BoxLayout.Y_AXIS));
@@ -109,6 +112,8 @@ public final class ToolboxPanel extends JPanel {
         shading.add(check("reflections"));
         shading.add(labelled("Light", combo(light, "light", "Light position")));
         shading.add(check("showLight"));
+        shading.add(labelled("Exposure", exposure));
+        exposure.addChangeListener(e -> onInt(v -> s.set(Level.EXPOSURE, v), exposure.getValue()));
         light.addActionListener(e -> onInt(v -> s.set(LightPlacement.values()[v]), light.getSelectedIndex()));
         return shading;
     }
@@ -149,6 +154,8 @@ public final class ToolboxPanel extends JPanel {
             subdivision.setValue(t.level(Level.WIREFRAME_SUBDIVISION));
             interactivity.setValue(t.level(Level.INTERACTIVITY));
             perspective.setValue(t.level(Level.PERSPECTIVE));
+            exposure.setValue(t.level(Level.EXPOSURE));
+            exposure.setEnabled(t.pathTraced());
             gridU.setValue(t.level(Level.GRID_U));
             gridV.setValue(t.level(Level.GRID_V));
             spp.setSelectedItem(t.level(Level.SAMPLES_PER_PIXEL));
