@@ -100,6 +100,34 @@ class ImageExportTest {
     }
 
     @Test
+    void aPathTracedExportTakesTheAppsExposure() throws Exception {
+        FakeDialogs dialogs = new FakeDialogs();
+        AppModel app = teapotApp(dialogs);
+        app.settings().replace(app.settings().current().with(Toggle.PATH_TRACED, true).with(Level.EXPOSURE, 15));
+        ExportOptions o = new ExportOptions(48, 32, 4, SamplerKind.JITTERED, true, 0);
+        app.export().exportTo(dir.resolve("bright.png"), o, RAW);
+        app.export().exportTo(dir.resolve("bright.pfm"), o, RAW);
+        int[] png = pixels(Files.readAllBytes(dir.resolve("bright.png")));
+        byte[] pfm = Files.readAllBytes(dir.resolve("bright.pfm"));
+        int header = "PF\n48 32\n-1.0\n".length();
+        ByteBuffer floats = ByteBuffer.wrap(pfm, header, 12 * 48 * 32).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        double scale = Math.pow(2, Double.parseDouble("1.5")); // render --exposure 1.5
+        int differ = 0, brighter = 0, lit = 0;
+        for (int y = 31; y >= 0; y--) { // rows bottom-up
+            for (int x = 0; x < 48; x++) {
+                float r = floats.getFloat(), g = floats.getFloat(), b = floats.getFloat();
+                differ += org.beziertracer.render.ToneMap.argb(r, g, b, scale) == png[y * 48 + x] ? 0 : 1;
+                int atZero = org.beziertracer.render.ToneMap.argb(r, g, b, 1) & 0xFF;
+                lit += r + g + b > 0.01f ? 1 : 0;
+                brighter += atZero < (png[y * 48 + x] & 0xFF) ? 1 : 0;
+            }
+        }
+        assertEquals(0, differ, "the PNG is the .pfm through the tone map at +1.5 EV");
+        assertTrue(lit > 100 && brighter > lit / 2, "brighter than at 0 EV: " + brighter + " of the " + lit + " lit pixels");
+        assertEquals(java.util.List.of(), dialogs.errors);
+    }
+
+    @Test
     void aPathTracedExportIsToneMappedAndItsPfmHoldsTheSameLinearPicture() throws Exception {
         FakeDialogs dialogs = new FakeDialogs();
         AppModel app = teapotApp(dialogs);

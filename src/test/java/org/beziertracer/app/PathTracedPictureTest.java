@@ -43,11 +43,19 @@ class PathTracedPictureTest {
 
     /** The one-shot render of the request's job, as the command line renders it, tone mapped as its PNG. */
     private static int[] oneShot(RenderRequest r) throws InterruptedException {
+        return oneShot(r, 0);
+    }
+
+    /**
+     * As {@link #oneShot(RenderRequest)} with {@code exposure} stops: {@code render --exposure E} writes
+     * {@code ToneMap.argb(film, window, E)} (RenderCommand), this function.
+     */
+    private static int[] oneShot(RenderRequest r, double exposure) throws InterruptedException {
         RenderJob job = r.job(SceneIntersector.build(r.scene(), r.intersect()));
         job = job.withOptions(job.options().withProgressive(false).withThreads(1));
         try (RenderSession session = new RenderSession(1, null)) {
             RenderResult result = session.render(job);
-            return ToneMap.argb(result.film(), 0);
+            return ToneMap.argb(result.film(), exposure);
         }
     }
 
@@ -108,6 +116,97 @@ class PathTracedPictureTest {
                 .toList(), "one sample a pixel a pass after the first");
         assertTrue(last.samplesText().startsWith(SPP + " of " + SPP + " spp, "), last.samplesText());
         assertSamePicture(oneShot(r), p, "after " + SPP + " passes");
+    }
+
+    @Test
+    void aNewExposureTonesTheFinishedFilmAgainWithoutRenderingAndGivesTheCommandLinesBytes() throws InterruptedException {
+        Picture p = new Picture(W, H, () -> {});
+        List<RenderStatus> seen = new CopyOnWriteArrayList<>();
+        RenderRequest r = request(scene(), pathTraced(SPP), p);
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.onStatus(seen::add);
+            engine.submit(r);
+            waitIdle(engine);
+            int passes = seen.size();
+            int[] atZero = p.pixels().clone();
+            engine.exposure(1.5);
+            waitIdle(engine);
+            assertEquals(passes, seen.size(), "no pass rendered again: the film was tone mapped, not restarted");
+            assertSamePicture(oneShot(r, 1.5), p, "+1.5 EV, as render --exposure 1.5");
+            int brighter = 0;
+            for (int k = 0; k < atZero.length; k++) {
+                brighter += (atZero[k] & 0xFF) < (p.pixels()[k] & 0xFF) ? 1 : 0;
+            }
+            assertTrue(brighter > atZero.length / 2, "brighter: " + brighter + " of " + atZero.length + " pixels");
+            engine.exposure(-3);
+            engine.exposure(0);
+            waitIdle(engine);
+            assertEquals(passes, seen.size(), "still no pass rendered again");
+            assertSamePicture(oneShot(r, 0), p, "back at 0 EV");
+        }
+    }
+
+    @Test
+    void aNewExposureWhileTheSamplesAccumulateKeepsThemAndEndsOnTheCommandLinesBytes() throws InterruptedException {
+        int spp = 48;
+        Picture p = new Picture(W, H, () -> {});
+        List<RenderStatus> seen = new CopyOnWriteArrayList<>();
+        RenderRequest r = request(scene(), pathTraced(spp), p);
+        int changedAt;
+        try (RayTraceEngine engine = new RayTraceEngine()) {
+            engine.onStatus(seen::add);
+            engine.submit(r);
+            long end = System.nanoTime() + 60_000_000_000L;
+            while (seen.isEmpty() || seen.get(seen.size() - 1).samplesDone() < 2) {
+                assertTrue(System.nanoTime() < end, "the picture refines");
+                Thread.sleep(1);
+            }
+            changedAt = seen.get(seen.size() - 1).samplesDone();
+            engine.exposure(-1.2);
+            waitIdle(engine);
+        }
+        int[] spps = seen.stream().mapToInt(RenderStatus::samplesDone).toArray();
+        for (int k = 1; k < spps.length; k++) {
+            assertTrue(spps[k] >= spps[k - 1], "the samples never start again: " + java.util.Arrays.toString(spps));
+        }
+        assertTrue(changedAt < spp, "changed while refining (at " + changedAt + " spp)");
+        assertEquals(spp, seen.get(seen.size() - 1).samplesDone(), "it refined on to the target");
+        assertEquals(4 + spp - 1, seen.size(), "every pass once: nothing rendered twice");
+        assertSamePicture(oneShot(r, -1.2), p, "-1.2 EV, as render --exposure -1.2");
+    }
+
+    @Test
+    void anExposureChangeAloneIsNoNewRequestAndIsRemembered() {
+        FakeEngine engine = new FakeEngine();
+        AppPreferences prefs = MemoryPreferences.fresh();
+        AppModel app = new AppModel(engine, new FakeDialogs(), AppThreads.direct(), prefs);
+        app.view().resize(W, H, 1);
+        app.settings().replace(pathTraced(64));
+        int requests = engine.requests.size();
+        assertEquals(0, last(engine).options().path().exposure(), "0 EV at first");
+        app.settings().step(Level.EXPOSURE, Level.EXPOSURE_STEP);
+        app.settings().step(Level.EXPOSURE, Level.EXPOSURE_STEP);
+        app.settings().step(Level.EXPOSURE, 5);
+        assertEquals(requests, engine.requests.size(), "no new render: the picture is tone mapped again");
+        assertEquals(List.of(0.5, 1.0, 1.5), engine.exposures, "the engine hears each exposure");
+        assertEquals(15, prefs.exposureTenths(), "remembered");
+        app.settings().toggle(Toggle.SHADOWS);
+        assertEquals(requests + 1, engine.requests.size(), "another change renders again");
+        assertEquals(1.5, last(engine).options().path().exposure(), "with the exposure");
+        app.settings().step(Level.EXPOSURE, 100);
+        assertEquals(5.0, app.settings().current().exposure(), "at most +5 stops");
+        app.settings().set(Level.EXPOSURE, 0);
+        assertEquals(requests + 1, engine.requests.size());
+        app.settings().set(Level.EXPOSURE, -35);
+        app.close();
+
+        FakeEngine next = new FakeEngine();
+        AppModel again = new AppModel(next, new FakeDialogs(), AppThreads.direct(), prefs);
+        again.view().resize(W, H, 1);
+        again.settings().set(Toggle.PATH_TRACED, true);
+        assertEquals(-3.5, again.settings().current().exposure(), "the next run starts at the exposure last chosen");
+        assertEquals(-3.5, last(next).options().path().exposure(), "and renders with it");
+        again.close();
     }
 
     @Test

@@ -43,6 +43,22 @@ class SettingsTest {
     }
 
     @Test
+    void theExposureIsTheDoubleTheCommandLineReadsForTheSameDecimal() {
+        for (int tenths = Level.EXPOSURE.min(); tenths <= Level.EXPOSURE.max(); tenths++) {
+            String decimal = (tenths < 0 ? "-" : "") + Math.abs(tenths) / 10 + "." + Math.abs(tenths) % 10;
+            assertEquals(Double.parseDouble(decimal), Settings.defaults().with(Level.EXPOSURE, tenths).exposure(),
+                    "render --exposure " + decimal);
+        }
+        assertEquals(0, Settings.defaults().exposure(), "0 EV in a fresh app");
+        assertEquals("exposure in tenths of a stop must be -50..50, got 51",
+                UserMessages.of(IllegalArgumentException.class, () -> Settings.defaults().with(Level.EXPOSURE, 51)));
+        Settings a = Settings.defaults().with(Toggle.PATH_TRACED, true);
+        assertTrue(a.sameButExposure(a.with(Level.EXPOSURE, 12)));
+        assertFalse(a.sameButExposure(a.with(Level.EXPOSURE, 12).with(Toggle.SHADOWS, false)));
+        assertFalse(a.sameButExposure(null));
+    }
+
+    @Test
     void levelsStepWithinTheirRangeAndCycleThroughTheirChoices() {
         assertEquals(64, Level.WIREFRAME_SUBDIVISION.step(63, 5));
         assertEquals(1, Level.WIREFRAME_SUBDIVISION.step(1, -1));
