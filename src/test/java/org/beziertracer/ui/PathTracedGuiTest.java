@@ -11,7 +11,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Render → Path Traced through the real menus ({@link java.awt.Robot}): the samples a pixel in
- * the status bar rise while the picture changes (it refines), and an edit starts it again.
+ * the status bar rise while the picture changes (it refines), and an edit starts it again; Render →
+ * Brighter Exposure brightens the picture while it goes on refining (no restart) and moves the
+ * toolbox's exposure slider.
  */
 @Tag("gui")
 class PathTracedGuiTest extends GuiSession {
@@ -46,6 +48,46 @@ class PathTracedGuiTest extends GuiSession {
                 throw new AssertionError(what, e);
             }
         }
+    }
+
+    /** Mean of the three channels over the panel, 0..255. */
+    private static double brightness(BufferedImage img) {
+        double[] m = GuiDriver.mean(img, new java.awt.Rectangle(0, 0, img.getWidth(), img.getHeight()));
+        return (m[0] + m[1] + m[2]) / 3;
+    }
+
+    private static int exposureSlider() {
+        return GuiDriver.onEdt(() -> ((javax.swing.JSlider) GuiDriver.find(d.frame, "tool.exposure")).getValue());
+    }
+
+    @Test
+    void aBrighterExposureBrightensThePictureWhileItKeepsRefining() {
+        d.menuBusy("Render", "pathTraced");
+        waitLong("two path-traced samples in every pixel", () -> shownSamples() >= 2);
+        d.mouseAway();
+        double before = brightness(d.capturePanel());
+        int samplesBefore = samples();
+        d.menuBusy("Render", "brighter");
+        d.menuBusy("Render", "brighter");
+        // the film is tone mapped again at once, whatever pass is in progress
+        long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(60);
+        double after = brightness(d.capturePanel());
+        while (after < before + 4 && System.nanoTime() < end) {
+            after = brightness(d.capturePanel());
+        }
+        int samplesAfter = samples();
+        assertTrue(after >= before + 4, "one stop brighter: mean " + before + " → " + after);
+        assertTrue(samplesAfter >= samplesBefore, "the samples went on, not from the start: " + samplesBefore + " → "
+                + samplesAfter + " spp");
+        assertTrue(d.status("spp").contains(" of 256 spp"), d.status("spp"));
+        assertTrue(exposureSlider() == 10, "the toolbox shows +1 EV: " + exposureSlider());
+        assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().exposure()) == 1.0);
+        waitLong("more samples at the new exposure", () -> shownSamples() >= samplesAfter + 1);
+        d.menuBusy("Render", "resetExposure");
+        assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().exposure()) == 0, "reset to 0 EV");
+        waitLong("the slider back at 0", () -> ((javax.swing.JSlider) GuiDriver.find(d.frame, "tool.exposure")).getValue() == 0);
+        d.menu("Render", "pathTraced");
+        d.settle();
     }
 
     @Test
