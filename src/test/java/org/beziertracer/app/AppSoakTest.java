@@ -16,9 +16,10 @@ import org.junit.jupiter.api.Test;
 /**
  * The soak without a display: the app layer with its real threads and the real render engine, a
  * single-thread executor standing in for the event thread, and a few thousand seeded random
- * commands (see {@link SoakActions}) issued in bursts faster than frames complete. Then: nothing
+ * commands (see {@link SoakActions}) issued in bursts faster than frames complete, every other round
+ * with the path tracer on throughout (edits, view and exposure changes while samples accumulate). Then: nothing
  * escaped on any thread and no error reached the dialogs; once idle, the picture equals a fresh
- * render of the final state pixel for pixel; the heap is within 2× of what it was after the first
+ * render of the final state pixel for pixel (path traced: through the tone map at the final exposure); the heap is within 2× of what it was after the first
  * model load. The GUI soak ({@code AppSoakGuiTest}) does the same through the window.
  */
 class AppSoakTest {
@@ -59,10 +60,24 @@ class AppSoakTest {
                 SoakActions actions = new SoakActions(app, seed, () -> {}, true);
                 Random pace = new Random(seed ^ 0x5DEECE66DL);
                 SoakChecks.Final last = null;
+                int refining = 0;
                 for (int round = 1; round <= ROUNDS; round++) {
+                    // even rounds are path traced throughout: the commands land while samples accumulate
+                    boolean path = round % 2 == 0;
+                    onUi.call(() -> {
+                        actions.pathTraced(path);
+                        return null;
+                    });
+                    int before = onUi.call(actions::duringAccumulation);
                     actions.issue(uiThread, COMMANDS / ROUNDS, pace);
                     last = SoakChecks.idleState(onUi, app, actions, 40_000);
-                    String where = " (round " + round + " of " + ROUNDS + ", seed " + seed + ")";
+                    String where = " (round " + round + " of " + ROUNDS + (path ? ", path traced" : "") + ", seed " + seed + ")";
+                    if (path) {
+                        int during = onUi.call(actions::duringAccumulation) - before;
+                        refining += during;
+                        assertTrue(last.settings().pathTraced(), "the round ends path traced" + where);
+                        assertTrue(during > 0, "commands landed while the picture refined" + where);
+                    }
                     assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread" + where);
                     assertEquals(List.of(), dialogs.errors(), "no error reached the dialogs (render, prep, edit, load)" + where);
                     assertNull(last.mismatch(last.freshRender()), "the picture is a fresh render of the state" + where);
@@ -75,9 +90,10 @@ class AppSoakTest {
                 });
                 assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads again");
                 long heapAfterRun = SoakChecks.settledHeap();
-                System.out.printf("AppSoakTest: %d commands (%s) and %d checkpoints in %.1f s; %d discards; heap %.1f MB "
-                                + "after the first load, %.1f MB after the run; total %.1f s; last state %s%n",
-                        actions.total(), onUi.call(actions::summary), ROUNDS, (checked - t0) / 1e9, dialogs.prompts,
+                System.out.printf("AppSoakTest: %d commands (%s; %d while a path-traced picture refined) and %d checkpoints "
+                                + "in %.1f s; %d discards; heap %.1f MB after the first load, %.1f MB after the run; total %.1f s; "
+                                + "last state %s%n",
+                        actions.total(), onUi.call(actions::summary), refining, ROUNDS, (checked - t0) / 1e9, dialogs.prompts,
                         heapAfterLoad / 1e6, heapAfterRun / 1e6, (System.nanoTime() - t0) / 1e9, last.describe());
                 assertTrue(heapAfterRun <= 2 * heapAfterLoad, "heap " + heapAfterRun + " after the run, "
                         + heapAfterLoad + " after the first load (seed " + seed + ")");

@@ -15,7 +15,8 @@ import org.beziertracer.model.io.BuiltIns;
  * drag, release, hover, wheel), undo and redo, every {@link Toggle}, the methods, the levels, the
  * light, the built-in models, Randomize, Replace with Flat Grid and Reset View. A drag is a gesture
  * spread over several steps, and other commands may land between its steps (a key pressed while
- * the mouse is down).
+ * the mouse is down). In path-traced rounds ({@link #pathTraced(boolean)}) Render → Path Traced stays on,
+ * so the commands are edits, view and setting changes made while the picture accumulates samples.
  *
  * <p>Every step draws the same count of random numbers whatever the app's state, so a seed replays
  * the same command sequence (the threads' timing is not replayed: which frames complete and where
@@ -25,7 +26,7 @@ public final class SoakActions {
 
     /** What a step did. */
     public enum Kind { PRESS, DRAG, RELEASE, HOVER, WHEEL, UNDO, REDO, TOGGLE, METHOD, LEVEL, LIGHT, MODEL, CANCEL_LOAD,
-        RANDOMIZE, RESET_POINTS, RESET_VIEW, RESIZE }
+        RANDOMIZE, RESET_POINTS, RESET_VIEW, RESIZE, EXPOSURE }
 
     /** Relative frequency of each command a step starts (a gesture in progress continues more often than not). */
     private static final Map<Kind, Integer> WEIGHTS = weights();
@@ -37,6 +38,10 @@ public final class SoakActions {
     private final List<String> models = BuiltIns.names();
     private final Map<Kind, Integer> counts = new EnumMap<>(Kind.class);
     private boolean pressed;
+    /** Path-traced rounds: Render → Path Traced stays on (a toggle of it is taken back at once). */
+    private boolean pathTraced;
+    /** Commands issued while a path-traced picture was refining (past its first sample, before its last). */
+    private int duringAccumulation;
     private double x, y, dx, dy;
     private int stepsLeft;
 
@@ -72,6 +77,7 @@ public final class SoakActions {
         w.put(Kind.RESET_POINTS, 1);
         w.put(Kind.RESET_VIEW, 2);
         w.put(Kind.RESIZE, 1);
+        w.put(Kind.EXPOSURE, 3);
         return w;
     }
 
@@ -79,6 +85,10 @@ public final class SoakActions {
     public Kind step() {
         double r = random.nextDouble(), a = random.nextDouble(), b = random.nextDouble(), c = random.nextDouble();
         Kind kind = pressed && r < 0.6 ? Kind.DRAG : pick(r);
+        org.beziertracer.app.RenderStatus shown = app.status().render();
+        if (shown != null && shown.pathTraced() && shown.samplesDone() >= 1 && shown.pass() < shown.passCount()) {
+            duringAccumulation++;
+        }
         if (kind == Kind.PRESS && pressed) {
             kind = Kind.RELEASE;
         }
@@ -106,6 +116,7 @@ public final class SoakActions {
             case RANDOMIZE -> app.edits().randomize((long) (a * 1_000_000));
             case RESET_POINTS -> app.edits().replaceWithFlatGrid();
             case RESET_VIEW -> app.resetView();
+            case EXPOSURE -> exposure(a, b);
             case RESIZE -> {
                 if (resizes) {
                     app.view().resize(120 + (int) (80 * a), 90 + (int) (60 * b), c < 0.8 ? 1 : 2);
@@ -177,10 +188,45 @@ public final class SoakActions {
             app.settings().set(Level.PATH_SAMPLES, SOAK_PATH_SAMPLES); // path traced, the picture goes idle soon
         }
         app.settings().toggle(t);
+        if (pathTraced && !app.settings().current().on(Toggle.PATH_TRACED)) {
+            app.settings().set(Toggle.PATH_TRACED, true); // a path-traced round stays path traced
+        }
     }
+
+    /** Render → Brighter / Darker Exposure (half a stop, within ±5), now and then Reset, or a slider's value. */
+    private void exposure(double a, double b) {
+        SettingsModel s = app.settings();
+        if (a < 0.4) {
+            s.step(Level.EXPOSURE, Level.EXPOSURE_STEP);
+        } else if (a < 0.8) {
+            s.step(Level.EXPOSURE, -Level.EXPOSURE_STEP);
+        } else if (a < 0.9) {
+            s.set(Level.EXPOSURE, 0);
+        } else {
+            s.set(Level.EXPOSURE, Level.EXPOSURE.min() + (int) (b * (Level.EXPOSURE.max() - Level.EXPOSURE.min() + 1)));
+        }
+    }
+
+    /**
+     * From now on Render → Path Traced is on (UI thread): turned on here, with
+     * {@value #SOAK_PATH_ROUND_SAMPLES} samples a pixel so that commands land while the picture refines,
+     * and kept on by the toggles; or, with false, left to the random toggles again.
+     */
+    public void pathTraced(boolean on) {
+        pathTraced = on;
+        if (on) {
+            app.settings().set(Level.PATH_SAMPLES, SOAK_PATH_ROUND_SAMPLES);
+            app.settings().set(Toggle.PATH_TRACED, true);
+        }
+    }
+
+    /** Commands issued while a path-traced picture was refining (read on the UI thread). */
+    public int duringAccumulation() { return duringAccumulation; }
 
     /** Samples a pixel a path-traced picture of the soak refines to (the default 256 would keep it busy). */
     static final int SOAK_PATH_SAMPLES = 4;
+    /** Samples a pixel of the path-traced rounds ({@link #pathTraced(boolean)}): enough passes for edits to land between. */
+    static final int SOAK_PATH_ROUND_SAMPLES = 16;
 
     private void method(double a, double b) {
         if (b < 0.3) {
@@ -220,6 +266,9 @@ public final class SoakActions {
         }
         if (app.settings().current().on(Toggle.TESSELLATED) && !app.settings().current().on(Toggle.BVH)) {
             app.settings().set(Toggle.BVH, true);
+        }
+        if (pathTraced && !app.settings().current().on(Toggle.PATH_TRACED)) {
+            app.settings().set(Toggle.PATH_TRACED, true);
         }
     }
 
