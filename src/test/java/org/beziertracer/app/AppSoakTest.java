@@ -33,6 +33,51 @@ class AppSoakTest {
     /** Picture size in device pixels. */
     static final int WIDTH = 160, HEIGHT = 120;
 
+    /** Commands of a path-traced round issued between two waits for the picture to refine. */
+    static final int PATH_CHUNK = 50;
+
+    /**
+     * What the engine reports, pass by pass (on its coordinator thread, one pass after another): the
+     * passes of a path-traced picture past its first sample, and the pictures a change restarted
+     * while they were there (a report of a new render's first pass after such a pass).
+     */
+    static final class Accumulation {
+        final java.util.concurrent.atomic.AtomicInteger refiningPasses = new java.util.concurrent.atomic.AtomicInteger();
+        final java.util.concurrent.atomic.AtomicInteger interrupted = new java.util.concurrent.atomic.AtomicInteger();
+        private RenderStatus previous;
+
+        void heard(RenderStatus s) {
+            boolean refining = s.pathTraced() && s.samplesDone() >= 1 && s.pass() < s.passCount();
+            if (refining) {
+                refiningPasses.incrementAndGet();
+            }
+            RenderStatus p = previous;
+            if (p != null && s.pass() <= p.pass() && p.pathTraced() && p.samplesDone() >= 1 && p.pass() < p.passCount()) {
+                interrupted.incrementAndGet(); // a new render began while the last one refined
+            }
+            previous = s;
+        }
+    }
+
+    /**
+     * Ends the gesture in progress, brings the ray trace back ({@link SoakActions#finish}) and renders
+     * the picture again, then waits (up to 10 s) until it refines past its first sample, so that the
+     * next burst of commands lands on accumulating samples.
+     */
+    private static void refine(SoakChecks.OnUi onUi, AppModel app, SoakActions actions, Accumulation accumulation)
+            throws Exception {
+        int before = accumulation.refiningPasses.get();
+        onUi.call(() -> {
+            actions.finish();
+            app.render();
+            return null;
+        });
+        long end = System.nanoTime() + 10_000_000_000L;
+        while (System.nanoTime() < end && accumulation.refiningPasses.get() == before) {
+            Thread.sleep(2);
+        }
+    }
+
     @Test
     void thousandsOfRandomCommandsEndOnFreshRendersWithNoErrorAndABoundedHeap() throws Exception {
         long seed = SoakChecks.seed("AppSoakTest");
@@ -48,8 +93,14 @@ class AppSoakTest {
         FakeDialogs dialogs = new FakeDialogs();
         dialogs.discard = UserDialogs.Choice.DISCARD;
         try (SoakChecks.Uncaught uncaught = SoakChecks.Uncaught.install()) {
+            RayTraceEngine engine = new RayTraceEngine();
+            Accumulation accumulation = new Accumulation();
             AppModel app = onUi.call(() -> {
-                AppModel a = new AppModel(new RayTraceEngine(), dialogs, AppThreads.start(uiThread), MemoryPreferences.fresh());
+                AppModel a = new AppModel(engine, dialogs, AppThreads.start(uiThread), MemoryPreferences.fresh());
+                engine.onStatus(s -> {
+                    accumulation.heard(s);
+                    a.status().report(s);
+                });
                 a.view().resize(WIDTH, HEIGHT, 1);
                 a.files().openBuiltIn(FIRST_MODEL);
                 return a;
@@ -68,15 +119,24 @@ class AppSoakTest {
                         actions.pathTraced(path);
                         return null;
                     });
-                    int before = onUi.call(actions::duringAccumulation);
-                    actions.issue(uiThread, COMMANDS / ROUNDS, pace);
+                    int before = accumulation.interrupted.get();
+                    if (path) {
+                        // in chunks, each after the picture has refined past its first sample: the next
+                        // burst's edits then land on samples that accumulate
+                        for (int issued = 0; issued < COMMANDS / ROUNDS; issued += PATH_CHUNK) {
+                            refine(onUi, app, actions, accumulation);
+                            actions.issue(uiThread, Math.min(PATH_CHUNK, COMMANDS / ROUNDS - issued), pace);
+                        }
+                    } else {
+                        actions.issue(uiThread, COMMANDS / ROUNDS, pace);
+                    }
                     last = SoakChecks.idleState(onUi, app, actions, 40_000);
                     String where = " (round " + round + " of " + ROUNDS + (path ? ", path traced" : "") + ", seed " + seed + ")";
                     if (path) {
-                        int during = onUi.call(actions::duringAccumulation) - before;
+                        int during = accumulation.interrupted.get() - before;
                         refining += during;
                         assertTrue(last.settings().pathTraced(), "the round ends path traced" + where);
-                        assertTrue(during > 0, "commands landed while the picture refined" + where);
+                        assertTrue(during > 0, "changes landed while a path-traced picture refined" + where);
                     }
                     assertEquals(List.of(), uncaught.seen(), "no exception escaped on any thread" + where);
                     assertEquals(List.of(), dialogs.errors(), "no error reached the dialogs (render, prep, edit, load)" + where);
@@ -90,7 +150,7 @@ class AppSoakTest {
                 });
                 assertTrue(SoakChecks.awaitIdle(onUi, app::busy, 30_000), "the first model loads again");
                 long heapAfterRun = SoakChecks.settledHeap();
-                System.out.printf("AppSoakTest: %d commands (%s; %d while a path-traced picture refined) and %d checkpoints "
+                System.out.printf("AppSoakTest: %d commands (%s; %d path-traced pictures restarted past their first sample) and %d checkpoints "
                                 + "in %.1f s; %d discards; heap %.1f MB after the first load, %.1f MB after the run; total %.1f s; "
                                 + "last state %s%n",
                         actions.total(), onUi.call(actions::summary), refining, ROUNDS, (checked - t0) / 1e9, dialogs.prompts,

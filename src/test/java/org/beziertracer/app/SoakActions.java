@@ -40,8 +40,6 @@ public final class SoakActions {
     private boolean pressed;
     /** Path-traced rounds: Render → Path Traced stays on (a toggle of it is taken back at once). */
     private boolean pathTraced;
-    /** Commands issued while a path-traced picture was refining (past its first sample, before its last). */
-    private int duringAccumulation;
     private double x, y, dx, dy;
     private int stepsLeft;
 
@@ -85,10 +83,6 @@ public final class SoakActions {
     public Kind step() {
         double r = random.nextDouble(), a = random.nextDouble(), b = random.nextDouble(), c = random.nextDouble();
         Kind kind = pressed && r < 0.6 ? Kind.DRAG : pick(r);
-        org.beziertracer.app.RenderStatus shown = app.status().render();
-        if (shown != null && shown.pathTraced() && shown.samplesDone() >= 1 && shown.pass() < shown.passCount()) {
-            duringAccumulation++;
-        }
         if (kind == Kind.PRESS && pressed) {
             kind = Kind.RELEASE;
         }
@@ -219,9 +213,6 @@ public final class SoakActions {
             app.settings().set(Toggle.PATH_TRACED, true);
         }
     }
-
-    /** Commands issued while a path-traced picture was refining (read on the UI thread). */
-    public int duringAccumulation() { return duringAccumulation; }
 
     /** Samples a pixel a path-traced picture of the soak refines to (the default 256 would keep it busy). */
     static final int SOAK_PATH_SAMPLES = 4;
