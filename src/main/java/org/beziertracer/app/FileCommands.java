@@ -154,7 +154,7 @@ public final class FileCommands {
         }, saved -> {
             app.document().saved(scene, p);
             app.prefs().addRecent(p);
-            app.status().message("saved " + p);
+            app.status().message("saved " + FilePaths.text(p));
             then.run();
         });
     }
@@ -174,7 +174,7 @@ public final class FileCommands {
     public void exportMeshTo(Path p) {
         Scene scene = app.document().scene();
         writeCounting("exporting", "Cannot export ", p, progress -> DocumentFiles.exportMesh(p, scene, progress),
-                triangles -> app.status().message("exported " + triangles + " triangles to " + p));
+                triangles -> app.status().message("exported " + triangles + " triangles to " + FilePaths.text(p)));
     }
 
     /** A file write that reports the patches written ({@link WriteProgress}) and stops when cancelled. */
@@ -226,7 +226,7 @@ public final class FileCommands {
         io.submit("exporting " + name(p), () -> {
             AtomicFiles.writeBytes(p, content);
             return p;
-        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + name(p), e));
+        }, done -> app.status().message("exported " + FilePaths.text(p)), e -> failed("Cannot export " + name(p), e));
     }
 
     private void failed(String title, Throwable e) {
