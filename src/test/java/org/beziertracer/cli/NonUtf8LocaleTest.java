@@ -55,8 +55,13 @@ class NonUtf8LocaleTest {
     }
 
     private Result langC(Class<?> main, String... args) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), main.getName()));
+        return langC(List.of(), main, args);
+    }
+
+    private Result langC(List<String> jvmOptions, Class<?> main, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), main.getName()));
         command.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile());
         pb.environment().keySet().removeIf(k -> k.startsWith("LC_") || k.equals("LANG") || k.contains("JAVA_OPTIONS")
@@ -177,5 +182,44 @@ class NonUtf8LocaleTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(utf8("out: tépot.bpt\n"), r.out());
         assertEquals(utf8("err: tépot.bpt\n"), r.err());
+    }
+
+    /** Prints {@code tépot.bpt} through Java's own {@code System.out} and {@code System.err}, as a library would. */
+    public static final class PrintsThroughJava {
+        public static void main(String[] args) {
+            System.out.println("out: tépot.bpt");
+            System.err.println("err: tépot.bpt");
+        }
+    }
+
+    /** The JVM options between {@code java} and {@code -jar} in the README's launch command. */
+    private static List<String> readmeLaunchOptions() throws Exception {
+        String line = Files.readAllLines(Path.of("README.md")).stream()
+                .filter(l -> l.startsWith("    ./mvnw -B -q package -DskipTests && java ")).findFirst().orElseThrow();
+        String options = line.substring(line.indexOf("&& java ") + "&& java ".length(), line.indexOf(" -jar "));
+        return List.of(options.trim().split("\\s+"));
+    }
+
+    /** The {@code --java-options} jpackage gives the packaged launcher ({@code -Pdist} in pom.xml). */
+    private static List<String> packagedLauncherOptions() throws Exception {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile(
+                "<argument>--java-options</argument><argument>([^<]*)</argument>").matcher(Files.readString(Path.of("pom.xml")));
+        List<String> options = new ArrayList<>();
+        while (m.find()) {
+            options.add(m.group(1));
+        }
+        return options;
+    }
+
+    @Test
+    void theReadmeCommandAndThePackagedLauncherStartJavaWritingUtf8() throws Exception {
+        for (List<String> options : List.of(readmeLaunchOptions(), packagedLauncherOptions())) {
+            Result r = langC(options, PrintsThroughJava.class);
+            assertEquals(0, r.code(), options + ": " + r.err());
+            assertEquals(utf8("out: tépot.bpt\n"), r.out(), options.toString());
+            assertTrue(r.err().endsWith(utf8("err: tépot.bpt\n")), options + ": " + r.err());
+        }
+        Result plain = langC(List.of(), PrintsThroughJava.class);
+        assertEquals("out: t?pot.bpt\n", plain.out(), "without the options Java 17 writes ASCII (else this test proves nothing)");
     }
 }
