@@ -1,6 +1,8 @@
 package org.beziertracer;
 
 import org.beziertracer.cli.BezierTracerCommand;
+import org.beziertracer.cli.CommandArguments;
+import org.beziertracer.cli.ConsoleEncoding;
 import org.beziertracer.ui.BezierTracerApp;
 
 /**
@@ -14,7 +16,9 @@ public final class Main {
     private Main() {}
 
     public static void main(String[] args) {
-        int code = BezierTracerCommand.run(args, BezierTracerApp::launch);
+        // Names intact under LANG=C: messages in UTF-8 where Java chose ASCII, arguments as typed
+        ConsoleEncoding.install();
+        int code = BezierTracerCommand.run(CommandArguments.asTyped(args), BezierTracerApp::launch);
         if (code != BezierTracerCommand.APP_RUNNING) {
             System.exit(code);
         }

@@ -2,11 +2,14 @@ package org.beziertracer.app;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.RenderSettings;
+import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.FileFormat;
 import org.beziertracer.model.io.MeshObjWriter;
 import org.beziertracer.model.io.SceneDocument;
@@ -36,10 +39,38 @@ public final class DocumentFiles {
         format.write(file, new SceneDocument(scene, RenderSettings.defaults()), progress);
     }
 
-    /** Tessellates every patch ({@value #MESH_SEGMENTS}² cells each) and writes a triangle OBJ. */
-    public static Mesh exportMesh(Path file, Scene scene) throws IOException {
-        Mesh mesh = Tessellator.tessellate(scene.patches(), MESH_SEGMENTS);
-        MeshObjWriter.write(file, mesh.positions(), mesh.normals(), mesh.uvs(), mesh.triangles());
-        return mesh;
+    /** Patches between two progress reports of a mesh export (each is {@value #MESH_SEGMENTS}² cells). */
+    public static final int MESH_STEP = 64;
+
+    /** As {@link #exportMesh(Path, Scene, WriteProgress)} without reports. */
+    public static long exportMesh(Path file, Scene scene) throws IOException {
+        return exportMesh(file, scene, WriteProgress.NONE);
+    }
+
+    /**
+     * Tessellates every patch ({@value #MESH_SEGMENTS}² cells each, {@link Tessellator}) and writes
+     * a triangle OBJ atomically, one patch at a time (only one patch's triangles are in memory),
+     * telling {@code progress} the patches written every {@value #MESH_STEP}; when it throws, the
+     * old file stays. Returns the number of triangles written.
+     *
+     * @throws IllegalArgumentException when the model has no patches
+     */
+    public static long exportMesh(Path file, Scene scene, WriteProgress progress) throws IOException {
+        List<BezierPatch> patches = scene.patches();
+        if (patches.isEmpty()) {
+            throw new IllegalArgumentException("nothing to export as a mesh: the model has no patches");
+        }
+        int total = patches.size();
+        long vertices = (long) (MESH_SEGMENTS + 1) * (MESH_SEGMENTS + 1), triangles = 2L * MESH_SEGMENTS * MESH_SEGMENTS;
+        AtomicFiles.write(file, out -> {
+            MeshObjWriter.header(out, total * vertices, total * triangles);
+            for (int p = 0; p < total; p++) {
+                Mesh piece = Tessellator.tessellate(patches.get(p), MESH_SEGMENTS);
+                MeshObjWriter.writePiece(out, piece.positions(), piece.normals(), piece.uvs(), piece.triangles(),
+                        p * vertices);
+                progress.patch(p + 1, total, MESH_STEP);
+            }
+        });
+        return total * triangles;
     }
 }

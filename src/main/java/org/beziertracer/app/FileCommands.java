@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 import org.beziertracer.model.Scene;
@@ -15,6 +16,7 @@ import org.beziertracer.model.io.BuiltIns;
 import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.FileFormats;
 import org.beziertracer.model.io.SceneDocument;
+import org.beziertracer.model.io.WriteProgress;
 import org.beziertracer.render.Failures;
 
 /**
@@ -146,40 +148,66 @@ public final class FileCommands {
      */
     public void saveTo(Path p, Runnable then) {
         Scene scene = app.document().scene();
-        Task task = new Task("saving " + name(p));
-        app.status().task(task);
-        io.submit(task, () -> {
-            DocumentFiles.saveModel(p, scene, (done, total) -> {
-                task.progress(done, total, "patches");
-                if (Thread.currentThread().isInterrupted()) {
-                    throw new InterruptedIOException("the save was cancelled");
-                }
-            });
+        writeCounting("saving", "Cannot save ", p, progress -> {
+            DocumentFiles.saveModel(p, scene, progress);
             return p;
         }, saved -> {
-            app.status().endTask(task);
             app.document().saved(scene, p);
             app.prefs().addRecent(p);
-            app.status().message("saved " + p);
+            app.status().message("saved " + FilePaths.text(p));
             then.run();
-        }, e -> {
-            app.status().endTask(task);
-            if (e instanceof CancellationException) {
-                app.status().message("saving " + name(p) + " cancelled (the file is as it was)");
-            }
-            failed("Cannot save " + name(p), e);
         });
     }
 
-    /** File → Export Mesh: tessellates the surface and writes a triangle OBJ. */
+    /** File → Export Mesh: asks for a file, then {@link #exportMeshTo}. */
     public void exportMesh() {
         Path p = app.dialogs().chooseSave("Export tessellated mesh", "obj");
         if (p != null) {
-            Scene scene = app.document().scene();
-            io.submit("exporting " + name(p), () -> DocumentFiles.exportMesh(p, scene),
-                    mesh -> app.status().message("exported " + mesh.triangleCount() + " triangles to " + p),
-                    e -> failed("Cannot export " + name(p), e));
+            exportMeshTo(p);
         }
+    }
+
+    /**
+     * Tessellates the surface and writes a triangle OBJ atomically, as a save: the status bar shows
+     * the patches written of all with Cancel, and a cancelled export leaves the old file as it was.
+     */
+    public void exportMeshTo(Path p) {
+        Scene scene = app.document().scene();
+        writeCounting("exporting", "Cannot export ", p, progress -> DocumentFiles.exportMesh(p, scene, progress),
+                triangles -> app.status().message("exported " + triangles + " triangles to " + FilePaths.text(p)));
+    }
+
+    /** A file write that reports the patches written ({@link WriteProgress}) and stops when cancelled. */
+    @FunctionalInterface
+    private interface CountedWrite<T> {
+        T write(WriteProgress progress) throws Exception;
+    }
+
+    /**
+     * Runs {@code write} off the UI thread as a task labelled {@code verb name}: the status bar
+     * shows {@code verb name: N / M patches} with Cancel, and Cancel stops the write at its next
+     * report (the atomic write then leaves the old file and no temporary file). Afterwards, on the
+     * UI thread: {@code done} with the result; a cancel says so in the status bar; a failure is a
+     * one-line dialog titled {@code failTitle name}.
+     */
+    private <T> void writeCounting(String verb, String failTitle, Path p, CountedWrite<T> write, Consumer<T> done) {
+        Task task = new Task(verb + " " + name(p));
+        app.status().task(task);
+        io.submit(task, () -> write.write((written, total) -> {
+            task.progress(written, total, "patches");
+            if (Thread.currentThread().isInterrupted()) {
+                throw new InterruptedIOException(verb + " " + name(p) + " was cancelled");
+            }
+        }), result -> {
+            app.status().endTask(task);
+            done.accept(result);
+        }, e -> {
+            app.status().endTask(task);
+            if (e instanceof CancellationException) {
+                app.status().message(verb + " " + name(p) + " cancelled (the file is as it was)");
+            }
+            failed(failTitle + name(p), e);
+        });
     }
 
     /**
@@ -198,7 +226,7 @@ public final class FileCommands {
         io.submit("exporting " + name(p), () -> {
             AtomicFiles.writeBytes(p, content);
             return p;
-        }, done -> app.status().message("exported " + p), e -> failed("Cannot export " + name(p), e));
+        }, done -> app.status().message("exported " + FilePaths.text(p)), e -> failed("Cannot export " + name(p), e));
     }
 
     private void failed(String title, Throwable e) {

@@ -64,6 +64,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         }
         CommandLine cl = commandLine();
         cl.setOut(StandardOutput.system());
+        // picocli's own writer would encode in Java's choice, ASCII under LANG=C: names would print as ?
+        cl.setErr(new PrintWriter(new java.io.OutputStreamWriter(System.err, ConsoleEncoding.stderr()), true));
         if (args.length == 1 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             String problem = modelProblem(args[0]);
             if (problem != null) {

@@ -101,7 +101,7 @@ final class JobRender {
             }
         }
         if (cmd.output != null && !cmd.output.toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new IllegalArgumentException(cmd.output + ": the output must be a .png file");
+            throw new IllegalArgumentException(org.beziertracer.model.io.FilePaths.text(cmd.output) + ": the output must be a .png file");
         }
         if (cmd.method != null) {
             Method.parse(cmd.method);

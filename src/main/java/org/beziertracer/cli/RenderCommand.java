@@ -23,6 +23,7 @@ import org.beziertracer.model.PointLight;
 import org.beziertracer.render.DefaultLight;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.JobFiles;
 import org.beziertracer.model.io.JobTracer;
 import org.beziertracer.render.JobFrames;
@@ -326,11 +327,11 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("-o: the file name is empty; -o needs a .png file name");
         }
         if (output != null && (output.getFileName() == null || Files.isDirectory(output))) {
-            throw new IllegalArgumentException(output + ": is a folder; -o needs a .png file name");
+            throw new IllegalArgumentException(FilePaths.text(output) + ": is a folder; -o needs a .png file name");
         }
         if (output != null && !output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")
                 && !isPfm(output) && !isHdr(output)) {
-            throw new IllegalArgumentException(output + ": the output must be a .png (or .hdr or .pfm) file");
+            throw new IllegalArgumentException(FilePaths.text(output) + ": the output must be a .png (or .hdr or .pfm) file");
         }
         tracer();
         if (pixel != null && pathTraced()) {

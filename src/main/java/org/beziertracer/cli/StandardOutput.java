@@ -28,16 +28,9 @@ final class StandardOutput extends PrintWriter {
         this.recorder = recorder;
     }
 
-    /** Standard output of this process, in the encoding {@code System.out} uses. */
+    /** Standard output of this process, in the encoding {@link ConsoleEncoding#stdout()} chooses. */
     static StandardOutput system() {
-        String name = System.getProperty("sun.stdout.encoding");
-        Charset charset;
-        try {
-            charset = name == null ? Charset.defaultCharset() : Charset.forName(name);
-        } catch (IllegalArgumentException e) {
-            charset = Charset.defaultCharset();
-        }
-        return over(new FileOutputStream(FileDescriptor.out), charset);
+        return over(new FileOutputStream(FileDescriptor.out), ConsoleEncoding.stdout());
     }
 
     /** A writer over {@code out} (for tests: a stream that fails). */

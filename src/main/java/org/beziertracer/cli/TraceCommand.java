@@ -193,12 +193,12 @@ final class TraceCommand implements Callable<Integer> {
             return;
         }
         if (input != null && sameFile(input, output)) {
-            throw new IllegalArgumentException("-o " + output + " is the ray file -i " + input
+            throw new IllegalArgumentException("-o " + FilePaths.text(output) + " is the ray file -i " + FilePaths.text(input)
                     + ": the hits would replace the rays; choose another output file");
         }
         Path modelFile = modelPath();
         if (modelFile != null && sameFile(modelFile, output)) {
-            throw new IllegalArgumentException("-o " + output + " is the model " + model
+            throw new IllegalArgumentException("-o " + FilePaths.text(output) + " is the model " + model
                     + ": the hits would replace it; choose another output file");
         }
     }
@@ -267,15 +267,15 @@ final class TraceCommand implements Callable<Integer> {
             return System.in;
         }
         if (Files.isDirectory(input)) {
-            throw new IOException(input + ": is a folder, not a ray file");
+            throw new IOException(FilePaths.text(input) + ": is a folder, not a ray file");
         }
         if (!Files.exists(input)) {
-            throw new IOException(input + ": no such ray file");
+            throw new IOException(FilePaths.text(input) + ": no such ray file");
         }
         try { // a file, or a device or pipe (/dev/stdin, <(…)): read as it comes
             return Files.newInputStream(input);
         } catch (IOException e) {
-            throw new IOException(input + ": cannot read: " + IoReasons.of(e));
+            throw new IOException(FilePaths.text(input) + ": cannot read: " + IoReasons.of(e));
         }
     }
 

@@ -15,6 +15,11 @@ public final class Kernels {
 
     private static final String VECTOR_MODULE = "jdk.incubator.vector";
     private static final LaneKernel VECTOR = loadVector();
+    /** How long {@link WarmingKernel} may measure before it keeps the scalar kernel. */
+    private static final long WARM_UP_LIMIT_NANOS = 10_000_000_000L;
+    private static final LaneKernel AUTO = VECTOR != null
+            ? new WarmingKernel(VECTOR, ScalarKernel.INSTANCE, WARM_UP_LIMIT_NANOS)
+            : ScalarKernel.INSTANCE;
     private static final LaneKernel BEST = choose(System.getProperty("beziertracer.kernel"));
 
     /** The kernel chosen at start. */
@@ -33,7 +38,10 @@ public final class Kernels {
     }
 
     /**
-     * {@code "scalar"}, {@code "simd"} or {@code "auto"} (any case).
+     * {@code "scalar"}, {@code "simd"} or {@code "auto"} (any case). {@code "auto"} is the SIMD
+     * kernel when the module is there, answered by the scalar kernel until the JIT has compiled
+     * the SIMD one ({@link WarmingKernel}: its first calls, uncompiled, cost a thousand times the
+     * compiled ones); {@code "simd"} is the SIMD kernel from the first call.
      *
      * @throws IllegalArgumentException when the name is unknown, or "simd" without the module (a
      *                                  one-line message saying how to start Java)
@@ -41,7 +49,7 @@ public final class Kernels {
     public static LaneKernel named(String name) {
         switch (name.toLowerCase(Locale.ROOT)) {
             case "auto":
-                return VECTOR != null ? VECTOR : ScalarKernel.INSTANCE;
+                return AUTO;
             case "scalar":
                 return ScalarKernel.INSTANCE;
             case "simd":

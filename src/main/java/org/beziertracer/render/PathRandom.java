@@ -1,32 +1,53 @@
 package org.beziertracer.render;
 
 /**
- * The random numbers of one path: a SplitMix64 stream (G. L. Steele, D. Lea, C. H. Flood, "Fast
- * splittable pseudorandom number generators", OOPSLA 2014) started from a hash of the seed, the
- * pixel and the sample index, so a path's numbers depend on nothing else: the same picture for
- * any thread count, tile size or order of work. Mutable, one per worker; allocation-free.
+ * The random numbers of one path, by dimension: the {@code d}-th number a path asks for is
+ * dimension {@code d} of a low-discrepancy sequence over the pixel's samples, so the first
+ * {@code 2^k} samples of a pixel spread each bounce's light sample, BSDF sample and choices evenly
+ * instead of clumping as independent random numbers do. A pair ({@link #next2}) is a 2-D point of
+ * the Owen-scrambled Sobol sequence ({@link OwenSobol}), a single number its first coordinate;
+ * each dimension has its own scramble and shuffle of the sample index, hashed from the seed, the
+ * pixel and the dimension ("padding", as pbrt-v4's {@code PaddedSobolSampler}; M. Pharr, W. Jakob,
+ * G. Humphreys, <i>Physically Based Rendering</i>, 4th ed., 2023, §8.7), so dimensions and pixels
+ * are decorrelated. A path's numbers depend on the seed, the pixel, the sample index and the
+ * dimension only: the same picture for any thread count, tile size, pass split or order of work.
+ * Mutable, one per worker; allocation-free.
  */
 final class PathRandom {
-    private static final long GOLDEN = 0x9E3779B97F4A7C15L;
-    private long state;
+    private int pixelSeed;
+    private int index;
+    private int dimension;
+    private double second;
 
-    /** Starts the stream of sample {@code s} of pixel {@code (x, y)}. */
+    /** Starts the numbers of sample {@code s} of pixel {@code (x, y)}. */
     void start(long seed, int x, int y, int s) {
-        long z = mix(seed ^ 0x5DEECE66DL);
-        z = mix(z + GOLDEN * (x + 1L));
-        z = mix(z + GOLDEN * (y + 1L));
-        state = mix(z + GOLDEN * (s + 1L));
+        int h = OwenSobol.hash((int) seed ^ (int) (seed >>> 32), 0x5DEECE66);
+        h = OwenSobol.hash(h, x);
+        pixelSeed = OwenSobol.hash(h, y);
+        index = s;
+        dimension = 0;
     }
 
-    /** The next uniform double in [0, 1). */
+    /** The next number, in [0, 1): one dimension. */
     double next() {
-        state += GOLDEN;
-        return (mix(state) >>> 11) * 0x1.0p-53;
+        int seed = OwenSobol.hash(pixelSeed, dimension++);
+        return OwenSobol.sample(index, 0, seed);
     }
 
-    private static long mix(long z) {
-        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
-        return z ^ (z >>> 31);
+    /** The next 2-D point's first coordinate, in [0, 1); {@link #second()} is its other. One dimension. */
+    double next2() {
+        int seed = OwenSobol.hash(pixelSeed, dimension++);
+        second = OwenSobol.sample(index, 1, seed);
+        return OwenSobol.sample(index, 0, seed);
+    }
+
+    /** The second coordinate of the last {@link #next2} point. */
+    double second() {
+        return second;
+    }
+
+    /** Passes over {@code k} dimensions unused, so later numbers keep their dimension. */
+    void skip(int k) {
+        dimension += k;
     }
 }

@@ -27,7 +27,9 @@ import org.beziertracer.render.light.LightSample;
  *
  * <p>Frames: z along the unit normal, turned toward the outgoing direction for opaque surfaces
  * (two-sided), kept as the surface's own for glass (so {@code wo.z > 0} is outside). The random
- * numbers of a path come from {@link PathRandom} seeded by pixel and sample.
+ * numbers of a path come from {@link PathRandom} by pixel, sample and dimension: per bounce the
+ * light choice, the light's 2-D sample, the BSDF's lobe choice, its 2-D direction sample and the
+ * roulette, five dimensions whether used or not.
  *
  * <p>Not thread-safe: one per worker, with flat scratch; nothing is allocated per path.
  */
@@ -38,7 +40,8 @@ final class PathTracer {
     private final BsdfSample bs = new BsdfSample();
     private final LightSample ls = new LightSample();
     private final PathRandom rnd = new PathRandom();
-    private final double[] base = new double[3], f = new double[3], le = new double[3], radiance = new double[3];
+    private final double[] base = new double[3], f = new double[3], le = new double[3], radiance = new double[3],
+            blocked = new double[3];
     private Hit[] hits = new Hit[0];
     private SurfacePoint[] points = new SurfacePoint[0];
     private boolean[] found = new boolean[0];
@@ -167,13 +170,13 @@ final class PathTracer {
                     woz = -(dx * nx + dy * ny + dz * nz);
             // Next-event estimation: one light, chosen uniformly
             if (!bsdf.isDelta() && lightCount > 0) {
-                double u0 = rnd.next(), u1 = rnd.next(), u2 = rnd.next();
+                double u0 = rnd.next(), u1 = rnd.next2(), u2 = rnd.second();
                 Light light = p.lights[Math.min(lightCount - 1, (int) (u0 * lightCount))];
                 if (light.sample(hx, hy, hz, u1, u2, ls) && ls.pdf > 0 && ls.r + ls.g + ls.b > 0) {
                     double wix = ls.wx * tx + ls.wy * ty + ls.wz * tz, wiy = ls.wx * bx + ls.wy * by + ls.wz * bz,
                             wiz = ls.wx * nx + ls.wy * ny + ls.wz * nz;
                     double pdfB = bsdf.eval(wox, woy, woz, wix, wiy, wiz, base, f);
-                    if (f[0] + f[1] + f[2] > 0 && !shadowed(hx, hy, hz, wiz, ls)) {
+                    if (f[0] + f[1] + f[2] > 0 && !shadowed(hx, hy, hz, wiz, light, ls)) {
                         double lightPdf = pickPdf * ls.pdf;
                         // at the last bounce no BSDF sample follows to take its share: the light sample counts whole
                         boolean last = depth + 1 >= opt.maxDepth();
@@ -183,13 +186,14 @@ final class PathTracer {
                     }
                 }
             } else if (lightCount > 0) {
-                rnd.next(); rnd.next(); rnd.next(); // keep the stream's layout the same at every bounce
+                rnd.skip(2); // keep the dimensions' layout the same at every bounce
             }
             if (depth + 1 >= opt.maxDepth()) {
                 break;
             }
             // The BSDF sample: the next direction
-            if (!bsdf.sample(wox, woy, woz, rnd.next(), rnd.next(), rnd.next(), base, bs) || !(bs.pdf > 0)) {
+            double uc = rnd.next(), v1 = rnd.next2(), v2 = rnd.second();
+            if (!bsdf.sample(wox, woy, woz, uc, v1, v2, base, bs) || !(bs.pdf > 0)) {
                 break;
             }
             double k = Math.abs(bs.wz) / bs.pdf;
@@ -226,13 +230,26 @@ final class PathTracer {
     }
 
     /** True when something blocks the light sample {@code ls} (local {@code wi.z} tells the side) from the hit. */
-    private boolean shadowed(double hx, double hy, double hz, double wiz, LightSample l) {
+    /**
+     * True when something stands between the hit and the light sample {@code l} of {@code light}:
+     * the scene's surfaces, or the emitting side of another area light. A path that meets an area
+     * light's front stops there ({@link #path}), so the light hides what is behind it from light
+     * samples too: the environment behind a rect light, one light behind another. Without that, a
+     * light sample counted radiance a BSDF sample in the same direction could never see, and the
+     * estimate with MIS differed from the one without.
+     */
+    private boolean shadowed(double hx, double hy, double hz, double wiz, Light light, LightSample l) {
         double sign = wiz >= 0 ? 1 : -1;
         double snx = sign * nx, sny = sign * ny, snz = sign * nz;
         double ox = hx + s.eps * snx, oy = hy + s.eps * sny, oz = hz + s.eps * snz;
         double tMax = l.distance < Double.POSITIVE_INFINITY ? l.distance * (1 - 1e-7) - s.eps : Double.POSITIVE_INFINITY;
         if (!(tMax > 0)) {
             return false;
+        }
+        for (Light a : p.areaLights) {
+            if (a != light && a.hit(ox, oy, oz, l.wx, l.wy, l.wz, blocked) < tMax) {
+                return true;
+            }
         }
         shadowRays++;
         return si.occludedLeaving(ctx, hit, sp, snx, sny, snz, ox, oy, oz, l.wx, l.wy, l.wz, 0, tMax);

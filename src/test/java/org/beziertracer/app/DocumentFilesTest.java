@@ -1,6 +1,7 @@
 package org.beziertracer.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -8,6 +9,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.beziertracer.UserMessages;
+import org.beziertracer.geometry.Tessellator;
+import org.beziertracer.model.Mesh;
 import org.beziertracer.model.Scene;
 import org.beziertracer.model.io.Models;
 import org.junit.jupiter.api.Test;
@@ -33,11 +36,34 @@ class DocumentFilesTest {
     }
 
     @Test
-    void meshExportsAreComplete() throws IOException {
+    void meshExportsAreCompleteAndReadBackAsTheTessellation() throws IOException {
         Path obj = dir.resolve("m.obj");
-        var mesh = DocumentFiles.exportMesh(obj, Models.teapot());
-        assertEquals(32 * 2 * DocumentFiles.MESH_SEGMENTS * DocumentFiles.MESH_SEGMENTS, mesh.triangleCount());
+        Scene teapot = Models.teapot();
+        long triangles = DocumentFiles.exportMesh(obj, teapot);
+        assertEquals(32 * 2 * DocumentFiles.MESH_SEGMENTS * DocumentFiles.MESH_SEGMENTS, triangles);
         long faces = Files.readAllLines(obj).stream().filter(l -> l.startsWith("f ")).count();
-        assertEquals(mesh.triangleCount(), faces);
+        assertEquals(triangles, faces);
+        // Written a patch at a time, the file reads back as the whole model's tessellation, corner for corner
+        Mesh expected = Tessellator.tessellate(teapot.patches(), DocumentFiles.MESH_SEGMENTS);
+        Mesh read = Models.load(obj.toString()).meshes().get(0);
+        assertEquals(expected.triangleCount(), read.triangleCount());
+        for (int t = 0; t < expected.triangleCount(); t++) {
+            for (int c = 0; c < 3; c++) {
+                int e = expected.triangleVertex(t, c), r = read.triangleVertex(t, c);
+                for (int k = 0; k < 3; k++) {
+                    assertEquals(expected.position(e, k), read.position(r, k), "triangle " + t + " corner " + c);
+                }
+                assertEquals(expected.uv(e, 0), read.uv(r, 0), "triangle " + t + " corner " + c);
+                assertEquals(expected.uv(e, 1), read.uv(r, 1), "triangle " + t + " corner " + c);
+            }
+        }
+    }
+
+    @Test
+    void aModelWithoutPatchesIsNoMeshAndLeavesNoFile() {
+        Scene spheres = Scene.builder().addSphere(new org.beziertracer.model.Sphere(org.beziertracer.math.Vec3.ZERO, 1))
+                .build();
+        UserMessages.of(IllegalArgumentException.class, () -> DocumentFiles.exportMesh(dir.resolve("none.obj"), spheres));
+        assertFalse(Files.exists(dir.resolve("none.obj")));
     }
 }

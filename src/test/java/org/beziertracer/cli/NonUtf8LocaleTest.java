@@ -55,8 +55,13 @@ class NonUtf8LocaleTest {
     }
 
     private Result langC(Class<?> main, String... args) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), main.getName()));
+        return langC(List.of(), main, args);
+    }
+
+    private Result langC(List<String> jvmOptions, Class<?> main, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), main.getName()));
         command.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile());
         pb.environment().keySet().removeIf(k -> k.startsWith("LC_") || k.equals("LANG") || k.contains("JAVA_OPTIONS")
@@ -129,5 +134,92 @@ class NonUtf8LocaleTest {
         Result app = langC("théière.bpt");
         assertFalse(app.err().contains("is not a command"), app.err());
         assertTrue(app.err().contains("display"), "it goes on to look for a display: " + app.err());
+    }
+
+    /** Prints {@code tépot.bpt} on standard output and standard error after {@link ConsoleEncoding#install()}, as {@code Main} does. */
+    public static final class PrintsAName {
+        public static void main(String[] args) {
+            ConsoleEncoding.install();
+            System.out.println("out: tépot.bpt");
+            System.err.println("err: tépot.bpt");
+        }
+    }
+
+    /** {@code text} as the child's output is read back here: its UTF-8 bytes, a char per byte. */
+    private static String utf8(String text) {
+        return new String(text.getBytes(StandardCharsets.UTF_8), StandardCharsets.ISO_8859_1);
+    }
+
+    @Test
+    void messagesNameNonAsciiFilesWithTheirBytesOnDiskNotQuestionMarks() throws Exception {
+        Result info = langC("info", "modèles/tépot.bpt");
+        assertEquals(0, info.code(), info.err());
+        assertTrue(info.out().startsWith(utf8("model: modèles/tépot.bpt\n")), info.out());
+        Files.writeString(dir.resolve("modèles").resolve("bâd.bpt"), "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 x\n");
+        Result bad = langC("info", "modèles/bâd.bpt");
+        assertEquals(1, bad.code(), bad.err());
+        assertEquals(utf8("beziertracer info: modèles/bâd.bpt:6: expected a number for the z coordinate of point 4"
+                + " of patch 1 (of 1 announced), found \"x\"\n"), bad.err(), "the reader names the file as typed");
+        Result output = langC("render", "théière.bpt", "-o", "théière.bpt", "-q");
+        assertEquals(1, output.code(), output.err());
+        assertEquals(utf8("beziertracer render: théière.bpt: the output must be a .png (or .hdr or .pfm) file\n"),
+                output.err(), "a path from -o as typed");
+        Result rays = langC("trace", "patch", "-i", "théière.bpt", "-o", "théière.bpt");
+        assertEquals(1, rays.code(), rays.err());
+        assertEquals(utf8("beziertracer trace: -o théière.bpt is the ray file -i théière.bpt: the hits would replace"
+                + " the rays; choose another output file\n"), rays.err());
+        Result missing = langC("info", "absent-é.bpt");
+        assertEquals(utf8("beziertracer info: absent-é.bpt: " + LOCALE_HINT + "\n"), missing.err(),
+                "a name Java could not decode is echoed as typed");
+        Result notACommand = langC("rendré");
+        assertEquals(2, notACommand.code(), notACommand.err());
+        assertTrue(notACommand.err().startsWith(utf8("beziertracer: \"rendré\" is not a command")), notACommand.err());
+    }
+
+    @Test
+    void theAppsStandardStreamsWriteUtf8WhereJavaChoseAscii() throws Exception {
+        Result r = langC(PrintsAName.class);
+        assertEquals(0, r.code(), r.err());
+        assertEquals(utf8("out: tépot.bpt\n"), r.out());
+        assertEquals(utf8("err: tépot.bpt\n"), r.err());
+    }
+
+    /** Prints {@code tépot.bpt} through Java's own {@code System.out} and {@code System.err}, as a library would. */
+    public static final class PrintsThroughJava {
+        public static void main(String[] args) {
+            System.out.println("out: tépot.bpt");
+            System.err.println("err: tépot.bpt");
+        }
+    }
+
+    /** The JVM options between {@code java} and {@code -jar} in the README's launch command. */
+    private static List<String> readmeLaunchOptions() throws Exception {
+        String line = Files.readAllLines(Path.of("README.md")).stream()
+                .filter(l -> l.startsWith("    ./mvnw -B -q package -DskipTests && java ")).findFirst().orElseThrow();
+        String options = line.substring(line.indexOf("&& java ") + "&& java ".length(), line.indexOf(" -jar "));
+        return List.of(options.trim().split("\\s+"));
+    }
+
+    /** The {@code --java-options} jpackage gives the packaged launcher ({@code -Pdist} in pom.xml). */
+    private static List<String> packagedLauncherOptions() throws Exception {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile(
+                "<argument>--java-options</argument><argument>([^<]*)</argument>").matcher(Files.readString(Path.of("pom.xml")));
+        List<String> options = new ArrayList<>();
+        while (m.find()) {
+            options.add(m.group(1));
+        }
+        return options;
+    }
+
+    @Test
+    void theReadmeCommandAndThePackagedLauncherStartJavaWritingUtf8() throws Exception {
+        for (List<String> options : List.of(readmeLaunchOptions(), packagedLauncherOptions())) {
+            Result r = langC(options, PrintsThroughJava.class);
+            assertEquals(0, r.code(), options + ": " + r.err());
+            assertEquals(utf8("out: tépot.bpt\n"), r.out(), options.toString());
+            assertTrue(r.err().endsWith(utf8("err: tépot.bpt\n")), options + ": " + r.err());
+        }
+        Result plain = langC(List.of(), PrintsThroughJava.class);
+        assertEquals("out: t?pot.bpt\n", plain.out(), "without the options Java 17 writes ASCII (else this test proves nothing)");
     }
 }

@@ -24,7 +24,11 @@ class LaneKernelTest {
         assertTrue(Kernels.vectorModulePresent(), "surefire must start the tests with the Vector API module");
         LaneKernel simd = Kernels.named("simd");
         assertNotSame(Kernels.scalar(), simd);
-        assertSame(simd, Kernels.named("auto"));
+        LaneKernel auto = Kernels.named("auto");
+        assertTrue(auto instanceof WarmingKernel, "auto is the SIMD kernel behind its warm-up: " + auto);
+        assertSame(auto, Kernels.named("AUTO"));
+        assertEquals(simd.description(), auto.description());
+        assertEquals(simd.lanes(), auto.lanes());
         assertTrue(simd.description().startsWith("SIMD, " + simd.lanes() + " double lanes"), simd.description());
         assertTrue(Kernels.scalar().description().startsWith("scalar"));
     }

@@ -192,6 +192,30 @@ class PathTracerTest {
     }
 
     @Test
+    void anAreaLightHidesTheEnvironmentBehindItFromLightSamples() {
+        // A diffuse plane under a 4 x 4 rect light (radiance 0.5, facing down) at height 2, in a white
+        // environment of radiance 1. Below the rect's centre its cosine-weighted share of the sky is the
+        // form factor F (four corner rectangles, A = B = 1); a path that meets the rect's front stops
+        // there, so the plane sees L = albedo · (0.5 F + 1 · (1 − F)), not the whole sky behind the rect.
+        Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addPlane(new Plane(Vec3.ZERO, Vec3.Z, 0, 1))
+                .surface(0, Surface.diffuse(0.8, 0.8, 0.8))
+                .addAreaLight(AreaLight.rect(new Vec3(-2, -2, 2), new Vec3(0, 4, 0), new Vec3(4, 0, 0), 0.5, 0.5, 0.5,
+                        Double.NaN))
+                .environment(Environment.color(1, 1, 1)).build();
+        double a = 1 / Math.sqrt(2);
+        double formFactor = 4 / (2 * Math.PI) * 2 * a * Math.atan(a);
+        double expected = 0.8 * (0.5 * formFactor + (1 - formFactor));
+        Camera foot = Camera.lookAt(new Vec3(0.5, 0, 1), Vec3.ZERO, Vec3.Z, 0.5);
+        for (int depth : new int[] {1, 3}) { // past one bounce nothing is added: the plane faces no surface
+            for (boolean mis : new boolean[] {true, false}) {
+                double mean = stats(Renderer.renderOnce(job(scene, 8, 8, 512, path(depth).withMis(mis), foot, 2, 8))
+                        .film().linearRgb())[0];
+                assertEquals(expected, mean, PERCENT * expected, "depth " + depth + ", MIS " + mis);
+            }
+        }
+    }
+
+    @Test
     void theErrorFallsAsOneOverTheSquareRootOfTheSamples() {
         // RMSE against a reference of 16 × the larger count: 4 × the samples halves the error
         Scene scene = Scene.builder().addMaterial(Material.DEFAULT).addMaterial(Material.DEFAULT)

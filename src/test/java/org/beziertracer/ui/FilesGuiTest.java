@@ -38,7 +38,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * GUI tests of getting models in and pictures out: File → Open Recent, a file dragged onto the
- * window, File → Export Image… with its progress bar and Cancel, and the app opened on a model from
+ * window, File → Export Image… with its progress bar and Cancel, a big save and a big mesh export with
+ * their counts and Cancel, and the app opened on a model from
  * the command line. Checks are on the window's title and pixels and on the files written.
  */
 @Tag("gui")
@@ -293,6 +294,34 @@ class FilesGuiTest extends GuiSession {
         assertEquals("# the old file\n", Files.readString(obj), "the old file is untouched");
         try (var files = Files.list(dir)) {
             assertEquals(List.of("old.obj"), files.map(f -> f.getFileName().toString()).toList(), "no temporary file");
+        }
+        d.menu("Models", "model:patch");
+        d.settle();
+    }
+
+    @Test
+    @Order(8)
+    void aBigMeshExportCountsThePatchesWrittenAndCancelKeepsTheOldFile() throws Exception {
+        org.beziertracer.model.Scene big = new org.beziertracer.model.Scene(org.beziertracer.app.BigModels.grid(20_000));
+        GuiDriver.onEdt(() -> d.app.files().open("grid", () -> new org.beziertracer.model.io.SceneDocument(big,
+                org.beziertracer.model.RenderSettings.defaults())));
+        d.waitFor("the big model", () -> d.app.document().scene() == big);
+        d.settle();
+        Path obj = Files.writeString(dir.resolve("old-mesh.obj"), "# the old mesh\n");
+        GuiDriver.onEdt(() -> d.app.files().exportMeshTo(obj));
+        javax.swing.JProgressBar bar = d.find("status.progress");
+        d.waitFor("a bar that counts patches", () -> bar.isShowing() && !bar.isIndeterminate()
+                && bar.getString().endsWith(" / 20,000 patches"));
+        String shown = GuiDriver.onEdt(bar::getString);
+        assertTrue(shown.matches("exporting old-mesh\\.obj: [0-9,]+ / 20,000 patches"), shown);
+        d.click(d.find("status.cancel"));
+        d.waitFor("the progress bar to go", () -> !bar.isShowing());
+        d.settle();
+        assertEquals("exporting old-mesh.obj cancelled (the file is as it was)", d.status("message"));
+        assertEquals("# the old mesh\n", Files.readString(obj), "the old file is untouched");
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("old-mesh.obj"), files.map(f -> f.getFileName().toString())
+                    .filter(f -> f.contains("old-mesh")).toList(), "no temporary file");
         }
         d.menu("Models", "model:patch");
         d.settle();

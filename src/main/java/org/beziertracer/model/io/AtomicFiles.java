@@ -131,7 +131,7 @@ public final class AtomicFiles {
 
     /** {@code target: cannot write: reason}. */
     private static IOException cannotWrite(Path target, String reason) {
-        return new IOException(target + ": cannot write: " + reason);
+        return new IOException(FilePaths.text(target) + ": cannot write: " + reason);
     }
 
     /** Deletes {@code .NAME.DIGITS.tmp} files in {@code dir}: what a killed save of NAME left. */

@@ -128,13 +128,13 @@ public final class FileFormat {
     }
 
     /**
-     * Reads a file; errors name it as given ({@code file.toString()}), and relative references
+     * Reads a file; errors name it as given ({@link FilePaths#text}), and relative references
      * resolve against its folder.
      *
      * @throws ModelFormatException one line naming the file, for any problem
      */
     public SceneDocument read(Path file) {
-        String fileName = file.toString();
+        String fileName = FilePaths.text(file);
         if (Files.isDirectory(file)) {
             throw new ModelFormatException(fileName, "is a folder, not a file");
         }

@@ -150,6 +150,27 @@ public final class FilePaths {
     }
 
     /**
+     * The whole path {@code p} as its owner wrote it, for messages: {@link Path#toString()} where
+     * that holds no U+FFFD, else each part read back as {@link #name} reads a file name, so that
+     * under a non-UTF-8 locale a message says {@code modèles/tépot.bpt}, not
+     * {@code mod\uFFFD\uFFFDles/t\uFFFD\uFFFDpot.bpt}.
+     */
+    public static String text(Path p) {
+        String listed = p.toString();
+        if (listed.indexOf('\uFFFD') < 0) {
+            return listed;
+        }
+        StringBuilder sb = new StringBuilder(p.getRoot() == null ? "" : p.getRoot().toString());
+        for (int k = 0; k < p.getNameCount(); k++) {
+            if (k > 0) {
+                sb.append(p.getFileSystem().getSeparator());
+            }
+            sb.append(name(p.getName(k)));
+        }
+        return sb.toString();
+    }
+
+    /**
      * Why a name is no valid path: under a locale whose encoding is not UTF-8 ({@code LANG=C}),
      * Java can neither make nor (except for existing files, see {@link #find}) name a file with
      * other than ASCII letters; that is what to change, not the name.

@@ -8,7 +8,9 @@ import java.nio.file.Path;
  * Writes a triangle mesh (for example a tessellated Bézier scene) as a plain Wavefront OBJ
  * polygon file that any 3D tool can import: {@code v x y z}, {@code vt u v}, {@code vn x y z}
  * per vertex, then {@code f a/a/a b/b/b c/c/c} per triangle with 1-based indices (the same index
- * for position, texture coordinate and normal, as the arrays are per vertex).
+ * for position, texture coordinate and normal, as the arrays are per vertex). A big mesh can be
+ * streamed in pieces ({@link #header}, then {@link #writePiece} per piece): each piece's vertices
+ * then come just before its faces.
  *
  * <h2>Array layout</h2>
  * <ul>
@@ -37,9 +39,37 @@ public final class MeshObjWriter {
     public static void write(Writer out, double[] positions, double[] normals, double[] uvs, int[] triangles)
             throws IOException {
         checkLayout(positions, normals, uvs, triangles);
+        header(out, positions.length / 3, triangles.length / 3);
+        piece(out, positions, normals, uvs, triangles, 0);
+        out.flush();
+    }
+
+    /**
+     * The first line of a mesh written piece by piece ({@link #writePiece}): how many vertices and
+     * triangles all the pieces hold.
+     */
+    public static void header(Writer out, long vertexCount, long triangleCount) throws IOException {
+        out.write("# Bézier Tracer mesh: " + vertexCount + " vertices, " + triangleCount + " triangles\n");
+    }
+
+    /**
+     * Writes one piece of a mesh streamed piece by piece (a patch's tessellation): its {@code v},
+     * {@code vt} and {@code vn} lines, then its faces, whose indices follow the {@code firstVertex}
+     * vertices the pieces before it wrote. OBJ indices count every vertex written so far, so the
+     * pieces together read as one mesh; only one piece need be in memory.
+     *
+     * @throws IllegalArgumentException when the array lengths disagree or an index is out of range
+     */
+    public static void writePiece(Writer out, double[] positions, double[] normals, double[] uvs, int[] triangles,
+                                  long firstVertex) throws IOException {
+        checkLayout(positions, normals, uvs, triangles);
+        piece(out, positions, normals, uvs, triangles, firstVertex);
+    }
+
+    private static void piece(Writer out, double[] positions, double[] normals, double[] uvs, int[] triangles,
+                              long firstVertex) throws IOException {
         int vertexCount = positions.length / 3;
         StringBuilder sb = new StringBuilder(128);
-        out.write("# Bézier Tracer mesh: " + vertexCount + " vertices, " + triangles.length / 3 + " triangles\n");
         for (int v = 0; v < vertexCount; v++) {
             sb.setLength(0);
             triple(sb.append("v "), positions, 3 * v);
@@ -60,8 +90,7 @@ public final class MeshObjWriter {
                 out.write(sb.toString());
             }
         }
-        writeFaces(out, sb, triangles, uvs != null, normals != null);
-        out.flush();
+        writeFaces(out, sb, triangles, firstVertex, uvs != null, normals != null);
     }
 
     /** Checks the arrays' layout before anything is written. */
@@ -92,13 +121,13 @@ public final class MeshObjWriter {
     }
 
     /** The faces, {@code f a/a/a b/b/b c/c/c} with the texture and normal indices that exist. */
-    private static void writeFaces(Writer out, StringBuilder sb, int[] triangles, boolean uvs, boolean normals)
-            throws IOException {
+    private static void writeFaces(Writer out, StringBuilder sb, int[] triangles, long firstVertex, boolean uvs,
+                                   boolean normals) throws IOException {
         for (int t = 0; t < triangles.length; t += 3) {
             sb.setLength(0);
             sb.append('f');
             for (int c = 0; c < 3; c++) {
-                int index = triangles[t + c] + 1;
+                long index = firstVertex + triangles[t + c] + 1;
                 sb.append(' ').append(index);
                 if (uvs || normals) {
                     sb.append('/');

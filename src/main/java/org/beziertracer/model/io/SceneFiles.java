@@ -63,7 +63,7 @@ public final class SceneFiles {
             methods.accept(doc.settings().method());
         } catch (IllegalArgumentException e) {
             // Named as the reader names the file (FileFormat.read: the path as given)
-            throw new ModelFormatException(FilePaths.of(nameOrPath).toString(),
+            throw new ModelFormatException(FilePaths.text(FilePaths.of(nameOrPath)),
                     "render.method: " + Echo.cutQuoted(e.getMessage()));
         }
         return doc;

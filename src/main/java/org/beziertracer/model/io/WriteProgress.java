@@ -3,8 +3,8 @@ package org.beziertracer.model.io;
 import java.io.IOException;
 
 /**
- * How far a model save got, in patches: a writer calls it on its own thread every
- * {@value #STEP} patches and once at the end. It may throw (an {@link java.io.InterruptedIOException}
+ * How far a model save or a mesh export got, in patches: a writer calls it on its own thread every
+ * {@value #STEP} patches (or a step of its own) and once at the end. It may throw (an {@link java.io.InterruptedIOException}
  * when the save is cancelled) to stop the save; an atomic save then leaves the old file as it was
  * ({@link AtomicFiles}).
  */
@@ -22,7 +22,15 @@ public interface WriteProgress {
 
     /** Reports {@code done} when it is a multiple of {@link #STEP} or the last. */
     default void patch(int done, int total) throws IOException {
-        if (done % STEP == 0 || done == total) {
+        patch(done, total, STEP);
+    }
+
+    /**
+     * Reports {@code done} when it is a multiple of {@code step} or the last: for writers whose
+     * patches are each much bigger than a model's (a tessellated patch is some 1,400 lines).
+     */
+    default void patch(int done, int total, int step) throws IOException {
+        if (done % step == 0 || done == total) {
             patches(done, total);
         }
     }

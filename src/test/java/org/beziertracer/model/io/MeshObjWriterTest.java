@@ -53,6 +53,29 @@ class MeshObjWriterTest {
     }
 
     @Test
+    void aSecondPieceCountsTheVerticesOfTheFirst() throws IOException {
+        StringWriter out = new StringWriter();
+        MeshObjWriter.header(out, 8, 4);
+        MeshObjWriter.writePiece(out, POSITIONS, null, null, TRIANGLES, 0);
+        MeshObjWriter.writePiece(out, POSITIONS, null, null, TRIANGLES, 4);
+        String text = out.toString();
+        assertTrue(text.startsWith("# Bézier Tracer mesh: 8 vertices, 4 triangles\n"), text);
+        assertTrue(text.endsWith("""
+                v 0 1 0
+                f 1 2 3
+                f 1 3 4
+                v 0 0 0
+                v 1 0 0
+                v 1 1 0
+                v 0 1 0
+                f 5 6 7
+                f 5 7 8
+                """), text);
+        UserMessages.of(IllegalArgumentException.class,
+                () -> MeshObjWriter.writePiece(out, POSITIONS, null, null, new int[] {0, 1, 4}, 4));
+    }
+
+    @Test
     void missingNormalsOrUvsChangeTheFaceForm() throws IOException {
         assertTrue(write(null, UVS).contains("f 1/1 2/2 3/3\n"));
         assertTrue(write(NORMALS, null).contains("f 1//1 2//2 3//3\n"));
