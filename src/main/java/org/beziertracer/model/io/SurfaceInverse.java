@@ -16,7 +16,8 @@ import org.beziertracer.model.TrimPiece;
  *
  * <p>An angle (and a periodic v) is taken by whole turns nearest the previous sample, so a curve
  * round the axis has a continuous image; the projection samples in parameters scaled to lengths
- * (u by the radius, v by the surface's speed along v), so its tolerance is one in model space. A
+ * (u by about the radius, v by about the surface's speed along v, each a power of two so the
+ * scaling is exact), so its tolerance is one in model space. A
  * parallel or a meridian comes out as its exact iso-parameter line. Immutable.
  */
 final class SurfaceInverse {
@@ -159,7 +160,8 @@ final class SurfaceInverse {
             sv = Math.max(sv, norm(sub(point(uv[0], uv[1] + h), point(uv[0], uv[1] - h))) / (2 * h));
         }
         double size = Math.max(extent, Math.max(su, sv));
-        double scaleU = Math.max(su, 1e-6 * size), scaleV = Math.max(sv, 1e-6 * size);
+        // powers of two, so scaling and unscaling give the parameters back to the bit
+        double scaleU = powerOfTwo(Math.max(su, 1e-6 * size)), scaleV = powerOfTwo(Math.max(sv, 1e-6 * size));
         double[] from = ref;
         EdgeProjection projection = new EdgeProjection((p, guess) -> {
             double[] at = guess == null ? from : new double[] {guess[0] / scaleU, guess[1] / scaleV};
@@ -174,6 +176,10 @@ final class SurfaceInverse {
         }
         TrimCurve t = piece.curve();
         return new TrimPiece(new TrimCurve(t.basis(), t.degree(), t.parm(), pts, t.weights()), piece.from(), piece.to());
+    }
+
+    private static double powerOfTwo(double x) {
+        return x > 0 && Double.isFinite(x) ? Math.scalb(1.0, Math.getExponent(x)) : 1;
     }
 
     /** Revolution: the angle turned from the curve and the curve's parameter at {@code p}'s distance from the axis and height. */
