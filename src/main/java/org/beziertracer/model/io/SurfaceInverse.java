@@ -50,8 +50,8 @@ final class SurfaceInverse {
             case REVOLUTION -> {
                 return revolution(s);
             }
-            default -> throw new IgesEntities.Skip("trimmed by model-space curves only on a "
-                    + s.kind.name().toLowerCase(java.util.Locale.ROOT)
+            default -> throw new IgesEntities.Skip("trimmed by model-space curves only on "
+                    + (s.kind == StepSurface.Kind.EXTRUSION ? "an extrusion" : "a " + s.kind.name().toLowerCase(java.util.Locale.ROOT))
                     + " surface (projected onto B-spline, plane, analytic and revolution surfaces)");
         }
     }
@@ -167,7 +167,7 @@ final class SurfaceInverse {
             double[] at = guess == null ? from : new double[] {guess[0] / scaleU, guess[1] / scaleV};
             double[] uv = uv(p, at);
             return new double[] {uv[0] * scaleU, uv[1] * scaleV, norm(sub(p, point(uv[0], uv[1])))};
-        }, new double[] {0, Math.max(extent, Double.MIN_NORMAL), 0, 0}, size);
+        }, new double[] {0, Math.max(extent, 1e-6 * size), 0, 0}, size); // a point-like edge: no tolerance below rounding
         TrimPiece piece = projection.project(c::at, c.ta(), c.tb());
         double[] pts = piece.curve().points().clone();
         for (int k = 0; k < pts.length; k += 2) {
