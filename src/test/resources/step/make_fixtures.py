@@ -13,7 +13,7 @@ ISO 10303-42 as AP214 uses them. Faces:
   inches.stp   - a unit square plane face in inches
   assembly.stp - a part (one plane face) placed twice in an assembly and once by a mapped item
   analytic3d.stp - faces whose edges carry 3-D curves only (no pcurve): a whole cylinder between two
-                 parallels with a window hole of two parallel arcs and two meridian lines, a sphere
+                 parallels with two window holes of two parallel arcs and two meridian lines, a sphere
                  patch between parallels and meridians with a hole of a tilted circle, a whole turn
                  of a surface of revolution (a B-spline profile) between two parallels, and two faces
                  left out with their reasons: an extrusion, a sphere cap bounded by one parallel only
@@ -324,13 +324,16 @@ def analytic3d():
     outer = band(s, cyl, circle3d(s, (0, 0, 0), (0, 0, 1), (1, 0, 0), 2), circle3d(s, (0, 0, 3), (0, 0, 1), (1, 0, 0), 2),
                  line3d(s, (2, 0, 0), (0, 0, 1)), (2, 0, 0), (2, 0, 3))
     cp = lambda th, z: (2 * math.cos(th), 2 * math.sin(th), z)
-    p11, p21, p22, p12 = (vertex(s, cp(t, z)) for t, z in ((2, 1), (3, 1), (3, 2), (2, 2)))
-    low = edge3d(s, p11, p21, circle3d(s, (0, 0, 1), (0, 0, 1), (1, 0, 0), 2))
-    high = edge3d(s, p12, p22, circle3d(s, (0, 0, 2), (0, 0, 1), (1, 0, 0), 2))
-    up1 = edge3d(s, p11, p12, line3d(s, cp(2, 1), (0, 0, 1)))
-    up2 = edge3d(s, p21, p22, line3d(s, cp(3, 1), (0, 0, 1)))
-    window = loop(s, [oriented(s, up1), oriented(s, high), oriented(s, up2, False), oriented(s, low, False)])
-    faces.append(face(s, cyl, outer, [window]))
+
+    def window(t1, t2, z1, z2):
+        p11, p21, p22, p12 = (vertex(s, cp(t, z)) for t, z in ((t1, z1), (t2, z1), (t2, z2), (t1, z2)))
+        low = edge3d(s, p11, p21, circle3d(s, (0, 0, z1), (0, 0, 1), (1, 0, 0), 2))
+        high = edge3d(s, p12, p22, circle3d(s, (0, 0, z2), (0, 0, 1), (1, 0, 0), 2))
+        up1 = edge3d(s, p11, p12, line3d(s, cp(t1, z1), (0, 0, 1)))
+        up2 = edge3d(s, p21, p22, line3d(s, cp(t2, z1), (0, 0, 1)))
+        return loop(s, [oriented(s, up1), oriented(s, high), oriented(s, up2, False), oriented(s, low, False)])
+    # a second window past half a turn (theta in [4, 4.5], z in [1.2, 1.8]): its angles come out negative first
+    faces.append(face(s, cyl, outer, [window(2, 3, 1, 2), window(4, 4.5, 1.2, 1.8)]))
     # the sphere of radius 2 about (10, 0, 0): u in [-1, 1.2], latitude in [-0.6, 0.9]; a hole of angular
     # radius 0.3 about the direction of (u, lat) = (0.1, 0.15)
     c = (10, 0, 0)

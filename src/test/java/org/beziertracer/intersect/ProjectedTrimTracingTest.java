@@ -45,23 +45,30 @@ class ProjectedTrimTracingTest {
     }
 
     @Test
-    void aCylinderBetweenTwoParallelsHasTheWindowOfItsArcsAndMeridians() throws Exception {
+    void aCylinderBetweenTwoParallelsHasTheWindowsOfItsArcsAndMeridians() throws Exception {
         SceneIntersector cylinder = traced(step().surfaces().get(0));
         TraceContext ctx = cylinder.newContext();
         Hit hit = new Hit();
         Random rnd = new Random(3501);
-        int through = 0;
+        int through = 0, throughSecond = 0;
         for (int k = 0; k < RAYS; k++) {
             double th = 2 * Math.PI * rnd.nextDouble(), z = 0.01 + 2.98 * rnd.nextDouble();
-            // the window θ ∈ (2, 3), z ∈ (1, 2) seen from the axis; asked more often than its share
+            // the windows θ ∈ (2, 3), z ∈ (1, 2) and θ ∈ (4, 4.5), z ∈ (1.2, 1.8) seen from the axis; asked
+            // more often than their share
             if (k % 3 == 0) {
                 th = 1.9 + 1.2 * rnd.nextDouble();
                 z = 0.9 + 1.2 * rnd.nextDouble();
+            } else if (k % 3 == 1) {
+                th = 3.9 + 0.7 * rnd.nextDouble();
+                z = 1.1 + 0.8 * rnd.nextDouble();
             }
-            if (near(th, 2) || near(th, 3) || near(z, 1) || near(z, 2)) {
+            if (near(th, 2) || near(th, 3) || near(z, 1) || near(z, 2) || near(th, 4) || near(th, 4.5)
+                    || near(z, 1.2) || near(z, 1.8)) {
                 continue;
             }
-            boolean inWindow = th > 2 && th < 3 && z > 1 && z < 2;
+            boolean second = th > 4 && th < 4.5 && z > 1.2 && z < 1.8;
+            boolean inWindow = th > 2 && th < 3 && z > 1 && z < 2 || second;
+            throughSecond += second ? 1 : 0;
             boolean met = cylinder.closestHit(ctx, 0, 0, z, Math.cos(th), Math.sin(th), 0, 0, 100, hit);
             assertEquals(!inWindow, met, "ray at θ " + th + ", z " + z);
             if (met) {
@@ -69,7 +76,8 @@ class ProjectedTrimTracingTest {
             }
             through += inWindow ? 1 : 0;
         }
-        assertTrue(through > 40, "rays through the window: " + through);
+        assertTrue(through > 80 && throughSecond > 40, "rays through the windows: " + through + ", the second "
+                + throughSecond);
     }
 
     @Test

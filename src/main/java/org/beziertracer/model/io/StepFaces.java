@@ -81,6 +81,7 @@ final class StepFaces {
         if (outer.isEmpty() && !holes.isEmpty()) {
             pickOuter(outer, holes);
         }
+        alignTurns(outer, holes, s);
         double[] box;
         IgesSurface surface;
         if (s.kind == StepSurface.Kind.BSPLINE) {
@@ -122,6 +123,39 @@ final class StepFaces {
         }
         TrimRegion trim = outerLoops.isEmpty() && holeLoops.isEmpty() ? null : new TrimRegion(outerLoops, holeLoops);
         return new IgesSurface.Trimmed(sameSense ? surface : transposed(surface), trim);
+    }
+
+    /**
+     * Loops with projected pieces moved by whole turns of a periodic parameter to lie nearest the
+     * first outer loop: a projected loop's first angle is taken in (−π, π], so a hole at 250° of a
+     * face that runs from 0° to 360° would otherwise sit at −110°, outside the face's box. Exact:
+     * the surface repeats by the period.
+     */
+    private static void alignTurns(List<List<Raw>> outer, List<List<Raw>> holes, StepSurface s) {
+        double pu = s.periodU(), pv = s.periodV();
+        if (outer.isEmpty() || (pu == 0 && pv == 0)) {
+            return;
+        }
+        double[] ref = box(List.of(outer.get(0)), List.of());
+        for (List<List<Raw>> loops : List.of(outer, holes)) {
+            for (int k = loops == outer ? 1 : 0; k < loops.size(); k++) {
+                List<Raw> loop = loops.get(k);
+                if (loop.stream().noneMatch(Raw::projected)) {
+                    continue;
+                }
+                double[] b = box(List.of(loop), List.of());
+                double du = turns(ref[0] + ref[1], b[0] + b[1], pu), dv = turns(ref[2] + ref[3], b[2] + b[3], pv);
+                if (du != 0 || dv != 0) {
+                    loops.set(k, loop.stream().map(r -> new Raw(StepTrims.moved(r.piece(), du, dv), r.line(), r.projected()))
+                            .toList());
+                }
+            }
+        }
+    }
+
+    /** The whole periods that move the middle {@code twiceMid / 2} nearest {@code twiceRef / 2} (0 when not periodic). */
+    private static double turns(double twiceRef, double twiceMid, double period) {
+        return period > 0 ? period * Math.rint((twiceRef - twiceMid) / (2 * period)) : 0;
     }
 
     /** Without an outer bound: the loop whose box holds every other is outer; else all are. */

@@ -181,6 +181,17 @@ final class StepTrims {
         return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), out, c.weights()), p.from(), p.to());
     }
 
+    /** {@code p} moved by {@code (du, dv)} in the parameters. */
+    static TrimPiece moved(TrimPiece p, double du, double dv) {
+        TrimCurve c = p.curve();
+        double[] pts = c.points().clone();
+        for (int k = 0; k < pts.length; k += 2) {
+            pts[k] += du;
+            pts[k + 1] += dv;
+        }
+        return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), pts, c.weights()), p.from(), p.to());
+    }
+
     static boolean monotone(double[] pts, int axis) {
         boolean up = true, down = true;
         for (int k = 2 + axis; k < pts.length; k += 2) {
