@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the IGES test fixtures of IgesReaderTest, independently of the Java writer.
+"""Writes the IGES test fixtures of IgesReaderTest (and revolved3d.igs of ProjectedTrimTracingTest),
+independently of the Java writer.
 
 Run from this folder: python3 make_fixtures.py. Each entity is (type, form, status, params);
 directory pointers are 2*index+1. The layout follows IGES 5.3 section 2 (80 columns, S/G/D/P/T).
@@ -120,3 +121,30 @@ edges3d = [
     (144, 0, IND, [144, 1, 1, 1, 13, 17]),                                                                  # D19
 ]
 write("edges3d.igs", edges3d)
+
+# a whole turn of a cone (a 120 of the line (1,0,0)-(2,0,2) about z: rho = 1 + z/2) trimmed by a 144
+# whose only boundary is a window hole of model-space curves (a 142 with BPTR = 0): the parallel arc
+# z = 0.5 from theta 2 to 3 (100), the meridian theta = 3 up (110), the parallel z = 1.5 back from
+# theta 3 to 2 (126, a rational quadratic run clockwise), the meridian theta = 2 down (110)
+def cone_point(theta, z):
+    rho = 1 + z / 2
+    return (rho * math.cos(theta), rho * math.sin(theta), z)
+
+T1, T2, Z1, Z2 = 2.0, 3.0, 0.5, 1.5
+R2, HALF = 1 + Z2 / 2, (T2 - T1) / 2
+revolved3d = [
+    (110, 0, DEP, [110, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]),                                                     # D1
+    (110, 0, DEP, [110, 1.0, 0.0, 0.0, 2.0, 0.0, 2.0]),                                                     # D3
+    (120, 0, DEP, [120, 1, 3, 0.0, 2 * math.pi]),                                                           # D5
+    (100, 0, DEP, [100, Z1, 0.0, 0.0] + list(cone_point(T1, Z1)[:2]) + list(cone_point(T2, Z1)[:2])),       # D7
+    (110, 0, DEP, [110] + list(cone_point(T2, Z1)) + list(cone_point(T2, Z2))),                             # D9
+    (126, 0, DEP, [126, 2, 2, 1, 0, 0, 0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, math.cos(HALF), 1.0]           # D11
+     + list(cone_point(T2, Z2))
+     + [R2 / math.cos(HALF) * math.cos(T1 + HALF), R2 / math.cos(HALF) * math.sin(T1 + HALF), Z2]
+     + list(cone_point(T1, Z2)) + [0.0, 1.0, 0.0, 0.0, 1.0]),
+    (110, 0, DEP, [110] + list(cone_point(T1, Z2)) + list(cone_point(T1, Z1))),                             # D13
+    (102, 0, DEP, [102, 4, 7, 9, 11, 13]),                                                                  # D15
+    (142, 0, DEP, [142, 0, 5, 0, 15, 2]),                                                                   # D17
+    (144, 0, IND, [144, 5, 0, 1, 0, 17]),                                                                   # D19
+]
+write("revolved3d.igs", revolved3d)

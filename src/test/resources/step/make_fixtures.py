@@ -12,6 +12,11 @@ ISO 10303-42 as AP214 uses them. Faces:
                  a plane bounded by a 3-D line there and back (skipped: no area)
   inches.stp   - a unit square plane face in inches
   assembly.stp - a part (one plane face) placed twice in an assembly and once by a mapped item
+  analytic3d.stp - faces whose edges carry 3-D curves only (no pcurve): a whole cylinder between two
+                 parallels with two window holes of two parallel arcs and two meridian lines, a sphere
+                 patch between parallels and meridians with a hole of a tilted circle, a whole turn
+                 of a surface of revolution (a B-spline profile) between two parallels, and two faces
+                 left out with their reasons: an extrusion, a sphere cap bounded by one parallel only
 """
 import math
 
@@ -291,6 +296,91 @@ def assembly():
     s.write("assembly.stp")
 
 
+def edge3d(s, v0, v1, curve, same=True):
+    return s.add("EDGE_CURVE('',%s,%s,%s,%s)" % (v0, v1, curve, ".T." if same else ".F."))
+
+
+def circle3d(s, c, z, x, radius):
+    return s.add("CIRCLE('',%s,%s)" % (axis3(s, c, z, x), r(radius)))
+
+
+def line3d(s, p, d):
+    return s.add("LINE('',%s,%s)" % (pt(s, *p), s.add("VECTOR('',%s,1.)" % dirn(s, *d))))
+
+
+def band(s, surface, bottom, top, seam, a, b):
+    """A whole turn between the closed curves bottom (through vertex a) and top (through b), the seam from a to b."""
+    va, vb = vertex(s, a), vertex(s, b)
+    e0, e1, e2 = edge3d(s, va, va, bottom), edge3d(s, va, vb, seam), edge3d(s, vb, vb, top)
+    return loop(s, [oriented(s, e0), oriented(s, e1), oriented(s, e2, False), oriented(s, e1, False)])
+
+
+def analytic3d():
+    s = Step()
+    ctx = units(s)
+    faces = []
+    # the cylinder of radius 2 about the z axis, z in [0, 3]; the window theta in [2, 3], z in [1, 2]
+    cyl = s.add("CYLINDRICAL_SURFACE('',%s,2.)" % axis3(s, (0, 0, 0), (0, 0, 1), (1, 0, 0)))
+    outer = band(s, cyl, circle3d(s, (0, 0, 0), (0, 0, 1), (1, 0, 0), 2), circle3d(s, (0, 0, 3), (0, 0, 1), (1, 0, 0), 2),
+                 line3d(s, (2, 0, 0), (0, 0, 1)), (2, 0, 0), (2, 0, 3))
+    cp = lambda th, z: (2 * math.cos(th), 2 * math.sin(th), z)
+
+    def window(t1, t2, z1, z2):
+        p11, p21, p22, p12 = (vertex(s, cp(t, z)) for t, z in ((t1, z1), (t2, z1), (t2, z2), (t1, z2)))
+        low = edge3d(s, p11, p21, circle3d(s, (0, 0, z1), (0, 0, 1), (1, 0, 0), 2))
+        high = edge3d(s, p12, p22, circle3d(s, (0, 0, z2), (0, 0, 1), (1, 0, 0), 2))
+        up1 = edge3d(s, p11, p12, line3d(s, cp(t1, z1), (0, 0, 1)))
+        up2 = edge3d(s, p21, p22, line3d(s, cp(t2, z1), (0, 0, 1)))
+        return loop(s, [oriented(s, up1), oriented(s, high), oriented(s, up2, False), oriented(s, low, False)])
+    # a second window past half a turn (theta in [4, 4.5], z in [1.2, 1.8]): its angles come out negative first
+    faces.append(face(s, cyl, outer, [window(2, 3, 1, 2), window(4, 4.5, 1.2, 1.8)]))
+    # the sphere of radius 2 about (10, 0, 0): u in [-1, 1.2], latitude in [-0.6, 0.9]; a hole of angular
+    # radius 0.3 about the direction of (u, lat) = (0.1, 0.15)
+    c = (10, 0, 0)
+    sph = s.add("SPHERICAL_SURFACE('',%s,2.)" % axis3(s, c, (0, 0, 1), (1, 0, 0)))
+    sp = lambda u, la: (c[0] + 2 * math.cos(la) * math.cos(u), 2 * math.cos(la) * math.sin(u), 2 * math.sin(la))
+    corners = [vertex(s, sp(u, la)) for u, la in ((-1, -0.6), (1.2, -0.6), (1.2, 0.9), (-1, 0.9))]
+    par = lambda la: circle3d(s, (c[0], 0, 2 * math.sin(la)), (0, 0, 1), (1, 0, 0), 2 * math.cos(la))
+    mer = lambda u: circle3d(s, c, (math.sin(u), -math.cos(u), 0), (math.cos(u), math.sin(u), 0), 2)
+    e_low = edge3d(s, corners[0], corners[1], par(-0.6))
+    e_east = edge3d(s, corners[1], corners[2], mer(1.2))
+    e_high = edge3d(s, corners[3], corners[2], par(0.9))
+    e_west = edge3d(s, corners[0], corners[3], mer(-1))
+    patch = loop(s, [oriented(s, e_low), oriented(s, e_east), oriented(s, e_high, False), oriented(s, e_west, False)])
+    n = (math.cos(0.15) * math.cos(0.1), math.cos(0.15) * math.sin(0.1), math.sin(0.15))
+    x = (-n[1], n[0], 0)
+    xl = math.hypot(x[0], x[1])
+    x = (x[0] / xl, x[1] / xl, 0)
+    beta = 0.3
+    centre = tuple(c[k] + 2 * math.cos(beta) * n[k] for k in range(3))
+    vh = vertex(s, tuple(centre[k] + 2 * math.sin(beta) * x[k] for k in range(3)))
+    hole = loop(s, [oriented(s, edge3d(s, vh, vh, circle3d(s, centre, n, x, 2 * math.sin(beta))), False)])
+    faces.append(face(s, sph, patch, [hole]))
+    # a surface of revolution about the z axis of the quadratic (1,0,0), (2.5,0,1), (1.5,0,2):
+    # rho(z) = 1 + 1.5 z - 0.625 z^2; the whole turn between the parallels z = 0.5 and z = 1.5
+    prof = bspline_curve2d(s, 2, [0, 0, 0, 1, 1, 1], [(1, 0, 0), (2.5, 0, 1), (1.5, 0, 2)])
+    rev = s.add("SURFACE_OF_REVOLUTION('',%s,%s)" % (prof, s.add("AXIS1_PLACEMENT('',%s,%s)" % (pt(s, 0, 0, 0),
+                                                                                             dirn(s, 0, 0, 1)))))
+    rho = lambda z: 1 + 1.5 * z - 0.625 * z * z
+    outer = band(s, rev, circle3d(s, (0, 0, 0.5), (0, 0, 1), (1, 0, 0), rho(0.5)),
+                 circle3d(s, (0, 0, 1.5), (0, 0, 1), (1, 0, 0), rho(1.5)), prof, (rho(0.5), 0, 0.5), (rho(1.5), 0, 1.5))
+    faces.append(face(s, rev, outer))
+    # left out: an extrusion bounded by 3-D lines, and a sphere cap bounded by one parallel (no area in (u, v))
+    ext = s.add("SURFACE_OF_LINEAR_EXTRUSION('',%s,%s)" % (line3d(s, (0, 0, 0), (1, 0, 0)),
+                                                          s.add("VECTOR('',%s,1.)" % dirn(s, 0, 0, 1))))
+    q = [vertex(s, p) for p in ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1))]
+    es = [edge3d(s, q[k], q[(k + 1) % 4], line3d(s, p, d)) for k, (p, d) in
+          enumerate((((0, 0, 0), (1, 0, 0)), ((1, 0, 0), (0, 0, 1)), ((1, 0, 1), (-1, 0, 0)), ((0, 0, 1), (0, 0, -1))))]
+    faces.append(face(s, ext, loop(s, [oriented(s, e) for e in es])))
+    cap = s.add("SPHERICAL_SURFACE('',%s,1.)" % axis3(s, (0, 0, 20), (0, 0, 1), (1, 0, 0)))
+    vc = vertex(s, (math.cos(0.5), 0, 20 + math.sin(0.5)))
+    ring = edge3d(s, vc, vc, circle3d(s, (0, 0, 20 + math.sin(0.5)), (0, 0, 1), (1, 0, 0), math.cos(0.5)))
+    faces.append(face(s, cap, loop(s, [oriented(s, ring)])))
+    shape(s, ctx, faces)
+    s.write("analytic3d.stp")
+
+
 sampler()
 inches()
 assembly()
+analytic3d()

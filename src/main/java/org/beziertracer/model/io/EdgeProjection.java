@@ -23,12 +23,17 @@ import org.beziertracer.model.TrimPiece;
  * differences. The curve is sampled adaptively: a parameter span is halved (at least 3 times,
  * at most 16) until the parameters of the surface point at its middle lie within
  * {@link #TOLERANCE} of the middle of its chord in (u, v). The piece is the polyline (a degree-1
- * B-spline) through the samples, in loop order. Not thread-safe (one per face).
+ * B-spline) through the samples, in loop order; samples on one iso-parameter line (a parallel or a
+ * meridian of a surface of revolution, a line along a parameter) give that line exactly, from
+ * the first sample to the last. Not thread-safe (one per face).
  */
 final class EdgeProjection {
 
     /** Largest distance in (u, v) between the projected curve and its polyline, relative to the range's larger side. */
     static final double TOLERANCE = 1e-6;
+
+    /** Largest spread of the samples' u (or v), relative to the range's larger side, for an iso-parameter line. */
+    static final double ISO = 1e-9;
 
     /** Largest distance of an edge curve from its surface, relative to the surface's size. */
     static final double ON_SURFACE = 1e-6;
@@ -42,11 +47,12 @@ final class EdgeProjection {
     }
 
     private final Inverse inverse;
-    private final double tolUv, tolXyz;
+    private final double tolUv, tolIso, tolXyz;
 
     EdgeProjection(Inverse inverse, double[] range, double size) {
         this.inverse = inverse;
         this.tolUv = TOLERANCE * Math.max(range[1] - range[0], range[3] - range[2]);
+        this.tolIso = ISO * Math.max(range[1] - range[0], range[3] - range[2]);
         this.tolXyz = ON_SURFACE * Math.max(size, Double.MIN_NORMAL);
     }
 
@@ -62,10 +68,27 @@ final class EdgeProjection {
      * @throws IgesEntities.Skip when the curve leaves the surface or its image jumps (a seam)
      */
     TrimPiece project(DoubleFunction<double[]> curve, double ta, double tb) {
+        return project(curve, ta, tb, null);
+    }
+
+    /**
+     * {@link #project(DoubleFunction, double, double)}, the first sample's inversion started at
+     * {@code start} (the previous piece's end in a loop: on a closed surface, the seam's side it
+     * continues from), or anywhere when null.
+     */
+    TrimPiece project(DoubleFunction<double[]> curve, double ta, double tb, double[] start) {
         List<double[]> uv = new ArrayList<>();
-        double[] a = at(curve, ta, null), b = at(curve, tb, a);
+        double[] a = at(curve, ta, start);
         uv.add(a);
-        refine(curve, ta, tb, a, b, 0, uv);
+        // the first 2^MIN_DEPTH spans in order, each sample guessed from the one before (an angle's turn follows)
+        int spans = 1 << MIN_DEPTH;
+        for (int k = 1; k <= spans; k++) {
+            double t0 = ta + (tb - ta) * (k - 1) / spans, t1 = k == spans ? tb : ta + (tb - ta) * k / spans;
+            double[] b = at(curve, t1, a);
+            refine(curve, t0, t1, a, b, MIN_DEPTH, uv);
+            a = b;
+        }
+        isoLine(uv);
         int n = uv.size();
         double[] pts = new double[2 * n], knots = new double[n + 2];
         for (int k = 0; k < n; k++) {
@@ -75,6 +98,29 @@ final class EdgeProjection {
         }
         knots[n + 1] = n - 1;
         return new TrimPiece(new TrimCurve(SplineBasis.BSPLINE, 1, knots, pts, null), 0, n - 1);
+    }
+
+    /**
+     * The exact image where there is one: samples that all share their u (a meridian of a surface
+     * of revolution, a line along v) or their v (a parallel) to within {@link #ISO} of the range
+     * are that iso-parameter line, two points at the first sample's u (v), instead of a polyline.
+     */
+    private void isoLine(List<double[]> uv) {
+        for (int axis = 0; axis < 2; axis++) {
+            double first = uv.get(0)[axis];
+            boolean iso = true;
+            for (int k = 1; k < uv.size() && iso; k++) {
+                iso = Math.abs(uv.get(k)[axis] - first) <= tolIso;
+            }
+            if (iso) {
+                double[] a = uv.get(0), b = uv.get(uv.size() - 1).clone();
+                b[axis] = first;
+                uv.clear();
+                uv.add(a);
+                uv.add(b);
+                return;
+            }
+        }
     }
 
     private void refine(DoubleFunction<double[]> curve, double t0, double t1, double[] a, double[] b, int depth,

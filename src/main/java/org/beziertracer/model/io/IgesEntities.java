@@ -236,8 +236,12 @@ final class IgesEntities {
     TrimLoop loopOf142(IgesSections.Entry e, IgesSurface base) {
         IgesParams p = file.params(e);
         p.require(6, "CRTN SPTR BPTR CPTR PREF");
-        if (p.pointer(3) == 0) {
-            return projectedLoop(p, base);
+        if (p.pointer(3) == 0 || (!base.trimmable() && p.pointer(4) != 0)) {
+            return projectedLoop(p, base); // on a surface of revolution the model-space curve maps exactly, its angle's curve does not
+        }
+        if (!base.trimmable()) {
+            throw new Skip("a trimmed surface of revolution without model-space trim curves (its angle has no exact"
+                    + " rational parameter)");
         }
         IgesSections.Entry b = entry(p.pointer(3), p, "its parameter-space curve", 100, 102, 110, 126);
         List<TrimPiece> pieces = new ArrayList<>();
@@ -263,10 +267,16 @@ final class IgesEntities {
         IgesSections.Entry c = entry(p.pointer(4), p, "its model-space curve", 100, 102, 110, 126);
         EdgeProjection projection = EdgeProjection.onto(SplinePoint.of(base), base.range());
         List<TrimPiece> pieces = new ArrayList<>();
+        double[] end = null;
         for (IgesCurve piece : curve(c, 0)) {
-            pieces.add(projection.project(t -> EdgeProjection.point(piece, t), piece.t0(), piece.t1()));
+            TrimPiece t = projection.project(x -> EdgeProjection.point(piece, x), piece.t0(), piece.t1(), end);
+            pieces.add(t);
+            double[] ends = TrimLoop.ends(t);
+            end = new double[] {ends[2], ends[3]};
         }
-        return loop(pieces, base, p);
+        // a projected loop that does not close went round a closed surface (a parallel of a whole turn): skipped
+        return closedLoop(pieces, base.range(), detail -> new Skip("trimmed by model-space curves whose image does not"
+                + " close in its parameters (" + detail + ")"));
     }
 
     /** A loop of {@code pieces}, small gaps closed by straight pieces; a large gap is an error. */
@@ -306,9 +316,6 @@ final class IgesEntities {
         int n1 = p.integer(2), n2 = p.integer(3);
         if (n2 < 0 || n2 > p.size() - 5) {
             throw p.error("expected N2 inner boundaries and as many pointers, found N2 = " + n2);
-        }
-        if (!base.trimmable()) {
-            throw new Skip("a trimmed surface of revolution (its angle has no exact rational parameter)");
         }
         List<TrimLoop> outer = new ArrayList<>(), holes = new ArrayList<>();
         if (n1 != 0) {

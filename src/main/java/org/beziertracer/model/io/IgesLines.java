@@ -33,10 +33,12 @@ final class IgesLines {
         }
     }
 
-    void directory(int type, int paramStart, String status, int paramLines, int form, String label) throws IOException {
+    /** A directory entry; {@code colour} is field 13 (0, a colour number 1..8, or a negated pointer to a 314). */
+    void directory(int type, int paramStart, String status, int colour, int paramLines, int form, String label)
+            throws IOException {
         line(String.format(Locale.ROOT, "%8d%8d%8d%8d%8d%8s%8s%8s%8s", type, paramStart, 0, 0, 0, "", "", "", status),
                 'D', ++directory);
-        line(String.format(Locale.ROOT, "%8d%8d%8d%8d%8d%8s%8s%8s%8d", type, 0, 0, paramLines, form, "", "", label, 0),
+        line(String.format(Locale.ROOT, "%8d%8d%8d%8d%8d%8s%8s%8s%8d", type, 0, colour, paramLines, form, "", "", label, 0),
                 'D', ++directory);
     }
 

@@ -204,6 +204,20 @@ final class IgesParams {
         return real(k, 0);
     }
 
+    /**
+     * Field {@code k}, a percentage, as a fraction: its decimal text divided by 100 and rounded
+     * once (not the rounded number divided again), so the text {@code IgesWriter.percent} makes of
+     * any {@code double} in [0, 1] gives that {@code double} back.
+     */
+    double fraction(int k) {
+        double v = real(k);
+        try {
+            return new java.math.BigDecimal(field(k).replace('D', 'E').replace('d', 'e')).movePointLeft(2).doubleValue();
+        } catch (NumberFormatException | ArithmeticException e) {
+            return v / 100; // a form BigDecimal refuses: the rounded quotient
+        }
+    }
+
     /** Field {@code k} as a string (a Hollerith string, or the bare text); empty when absent. */
     String string(int k) {
         return k < size ? text.substring(from[k], to[k]) : "";

@@ -212,7 +212,7 @@ public final class IgesReader {
                 }
                 IgesParams p = file.params(def);
                 p.require(4, "CC1 CC2 CC3");
-                rgb = new double[] {p.real(1) / 100, p.real(2) / 100, p.real(3) / 100};
+                rgb = new double[] {p.fraction(1), p.fraction(2), p.fraction(3)};
                 for (double v : rgb) {
                     if (!(v >= 0 && v <= 1)) {
                         throw p.error("expected colour percentages 0..100, found " + v * 100);

@@ -11,6 +11,7 @@ import java.util.Map;
 
 import org.beziertracer.model.BezierPatch;
 import org.beziertracer.model.FreeFormSurface;
+import org.beziertracer.model.Material;
 import org.beziertracer.model.PatchDomain;
 import org.beziertracer.model.PatchOrigin;
 import org.beziertracer.model.Scene;
@@ -28,13 +29,28 @@ import org.beziertracer.model.TrimRegion;
  * written in the shortest form that reads back to the same {@code double}, so reading the file
  * with {@link IgesReader} gives the same knots, points, weights and trim curves. A region of
  * several outer loops becomes one 144 an outer loop, each with every hole. A curve run backwards
- * is written as the same curve of the reversed parameter {@code −t}.
+ * is written as the same curve of the reversed parameter {@code −t}. A surface whose material is
+ * not the default points its 128 and 144 directory colour fields at a colour definition (314) of
+ * its diffuse colour, one 314 a colour, which {@link IgesReader} turns back into the same diffuse
+ * material.
  */
 public final class IgesWriter {
 
-    private record Entity(int type, int form, String status, String label, List<String> params) { }
+    private record Entity(int type, int form, String status, String label, int colour, List<String> params) {
+        Entity(int type, int form, String status, String label, List<String> params) {
+            this(type, form, status, label, 0, params);
+        }
+
+        Entity coloured(int colourField) {
+            return new Entity(type, form, status, label, colourField, params);
+        }
+    }
 
     private final List<Entity> entities = new ArrayList<>();
+    /** The material of the surface being written (its first patch's). */
+    private Material material = Material.DEFAULT;
+    /** The 314 written for each diffuse colour, by its channels. */
+    private final Map<List<Double>, Integer> colourOf = new java.util.HashMap<>();
 
     private IgesWriter() {}
 
@@ -50,13 +66,45 @@ public final class IgesWriter {
                     + scene.meshes().size() + " triangle mesh(es); save the model as .obj");
         }
         IgesWriter w = new IgesWriter();
-        w.surfaces(scene.patches(), progress);
+        w.surfaces(scene, progress);
         w.emit(out);
     }
 
-    private void surfaces(List<BezierPatch> patches, WriteProgress progress) throws IOException {
-        eachSurface(patches, progress, (p, q, knotsU, knotsV, countU, countV, points, weights, range, trim) ->
-                trimmed(bspline(p, q, knotsU, knotsV, countU, countV, points, weights, range), trim));
+    private void surfaces(Scene scene, WriteProgress progress) throws IOException {
+        eachSurface(scene.patches(), k -> material = scene.materials().get(scene.patchMaterial(k)), progress,
+                (p, q, knotsU, knotsV, countU, countV, points, weights, range, trim) ->
+                        trimmed(bspline(p, q, knotsU, knotsV, countU, countV, points, weights, range), trim));
+    }
+
+    /**
+     * The directory colour field for the current material: 0 (no colour) for the default, else
+     * the negated pointer to a colour definition (314) of its diffuse colour, written once a
+     * colour. Channels are written as percentages whose decimal text is the channel's shortest
+     * decimal with the point moved two places, so {@link IgesParams#fraction} gives the same
+     * {@code double} back; channels above 1 are written as 1 (314 allows 0..100).
+     */
+    private int colourField() {
+        if (material.equals(Material.DEFAULT)) {
+            return 0;
+        }
+        double r = Math.min(1, material.r()), g = Math.min(1, material.g()), b = Math.min(1, material.b());
+        Integer known = colourOf.get(List.of(r, g, b));
+        if (known == null) {
+            List<String> f = new ArrayList<>();
+            f.add("314");
+            f.add(percent(r));
+            f.add(percent(g));
+            f.add(percent(b));
+            known = add(new Entity(314, 0, "00000200", "COLOR", f));
+            colourOf.put(List.of(r, g, b), known);
+        }
+        return -known;
+    }
+
+    /** {@code fraction} × 100 as exact decimal text, with a decimal point: {@code 0.85 → "85.0"}, {@code 0.123 → "12.3"}. */
+    static String percent(double fraction) {
+        String s = new java.math.BigDecimal(Double.toString(fraction)).movePointRight(2).stripTrailingZeros().toPlainString();
+        return s.indexOf('.') < 0 ? s + ".0" : s;
     }
 
     /** Receives one B-spline surface to write: degrees, full knot vectors, net (u fastest), weights or null, range, trims or null. */
@@ -128,7 +176,7 @@ public final class IgesWriter {
         }
         reals(f, points);
         reals(f, range);
-        return add(new Entity(128, 0, "00000000", "SURFACE", f));
+        return add(new Entity(128, 0, "00000000", "SURFACE", colourField(), f));
     }
 
     /** The 144 over surface {@code surface} (a pointer) for each outer loop, or nothing when untrimmed. */
@@ -155,14 +203,14 @@ public final class IgesWriter {
             for (int h : holes) {
                 f.add(Integer.toString(h));
             }
-            add(new Entity(144, 0, "00000000", "TRIMSURF", f));
+            add(new Entity(144, 0, "00000000", "TRIMSURF", colourField(), f));
         }
     }
 
     /** A surface's directory status made physically dependent (drawn through its 144). */
     private void claim(int pointer) {
         Entity e = entities.get((pointer - 1) / 2);
-        entities.set((pointer - 1) / 2, new Entity(e.type, e.form, "00010000", e.label, e.params));
+        entities.set((pointer - 1) / 2, new Entity(e.type, e.form, "00010000", e.label, e.colour, e.params));
     }
 
     /** The 142 for {@code loop} on {@code surface}; its parameter-space curves as 126 (joined by a 102). */
@@ -265,7 +313,7 @@ public final class IgesWriter {
         for (int k = 0; k < entities.size(); k++) {
             Entity e = entities.get(k);
             int count = paramLines.get(k).size();
-            lines.directory(e.type, pd, e.status, count, e.form, e.label);
+            lines.directory(e.type, pd, e.status, e.colour, count, e.form, e.label);
             pd += count;
         }
         for (int k = 0; k < entities.size(); k++) {

@@ -21,10 +21,14 @@ import org.beziertracer.model.TrimRegion;
  * turns its normal exactly.
  *
  * <p>An edge without a parameter-space curve on the face's surface has its 3-D curve projected
- * onto a B-spline surface or a plane ({@link EdgeProjection}, {@link EdgeCurve3}).
+ * onto the surface ({@link EdgeProjection}, {@link EdgeCurve3}): by point inversion on a B-spline
+ * surface, in closed form on a plane, an analytic surface or a surface of revolution
+ * ({@link SurfaceInverse}); a projected polyline is mapped into the B-spline's parameters point
+ * by point, a parallel or meridian (an iso-parameter line) exactly.
  *
  * <p>A face is skipped ({@link IgesEntities.Skip}, with the reason) when an edge has no
- * parameter-space curve on another kind of surface, when a line or
+ * parameter-space curve on an extrusion (or a revolution of a curve outside a plane through its
+ * axis), when a line or
  * circle trim lies on a surface without a closed-form inverse, when a trim across an angle
  * parameter is not an iso-parameter line (the angle has no exact rational map), or when a loop
  * does not close in the parameters. A B-spline face bounded by exactly one outer loop of four
@@ -35,8 +39,15 @@ import org.beziertracer.model.TrimRegion;
  */
 final class StepFaces {
 
-    /** A trim piece in the file's parameters, and whether it came from a {@code LINE}. */
-    private record Raw(TrimPiece piece, boolean line) { }
+    /**
+     * A trim piece in the file's parameters, whether it came from a {@code LINE}, and whether it
+     * is a projected 3-D curve (a polyline, or an exact iso-parameter line).
+     */
+    private record Raw(TrimPiece piece, boolean line, boolean projected) {
+        Raw(TrimPiece piece, boolean line) {
+            this(piece, line, false);
+        }
+    }
 
     private final StepGeometry g;
     private final double angleUnit;
@@ -70,6 +81,7 @@ final class StepFaces {
         if (outer.isEmpty() && !holes.isEmpty()) {
             pickOuter(outer, holes);
         }
+        alignTurns(outer, holes, s);
         double[] box;
         IgesSurface surface;
         if (s.kind == StepSurface.Kind.BSPLINE) {
@@ -111,6 +123,39 @@ final class StepFaces {
         }
         TrimRegion trim = outerLoops.isEmpty() && holeLoops.isEmpty() ? null : new TrimRegion(outerLoops, holeLoops);
         return new IgesSurface.Trimmed(sameSense ? surface : transposed(surface), trim);
+    }
+
+    /**
+     * Loops with projected pieces moved by whole turns of a periodic parameter to lie nearest the
+     * first outer loop: a projected loop's first angle is taken in (−π, π], so a hole at 250° of a
+     * face that runs from 0° to 360° would otherwise sit at −110°, outside the face's box. Exact:
+     * the surface repeats by the period.
+     */
+    private static void alignTurns(List<List<Raw>> outer, List<List<Raw>> holes, StepSurface s) {
+        double pu = s.periodU(), pv = s.periodV();
+        if (outer.isEmpty() || (pu == 0 && pv == 0)) {
+            return;
+        }
+        double[] ref = box(List.of(outer.get(0)), List.of());
+        for (List<List<Raw>> loops : List.of(outer, holes)) {
+            for (int k = loops == outer ? 1 : 0; k < loops.size(); k++) {
+                List<Raw> loop = loops.get(k);
+                if (loop.stream().noneMatch(Raw::projected)) {
+                    continue;
+                }
+                double[] b = box(List.of(loop), List.of());
+                double du = turns(ref[0] + ref[1], b[0] + b[1], pu), dv = turns(ref[2] + ref[3], b[2] + b[3], pv);
+                if (du != 0 || dv != 0) {
+                    loops.set(k, loop.stream().map(r -> new Raw(StepTrims.moved(r.piece(), du, dv), r.line(), r.projected()))
+                            .toList());
+                }
+            }
+        }
+    }
+
+    /** The whole periods that move the middle {@code twiceMid / 2} nearest {@code twiceRef / 2} (0 when not periodic). */
+    private static double turns(double twiceRef, double twiceMid, double period) {
+        return period > 0 ? period * Math.rint((twiceRef - twiceMid) / (2 * period)) : 0;
     }
 
     /** Without an outer bound: the loop whose box holds every other is outer; else all are. */
@@ -193,7 +238,7 @@ final class StepFaces {
             StepFile.Entity geometry = ea.ref(3, "edge_geometry");
             List<StepFile.Entity> pcurves = pcurves(geometry, surfaceId);
             if (pcurves.isEmpty()) {
-                Raw r = new Raw(projected(geometry, ea, loopStartIsEdgeStart, forward, s), false);
+                Raw r = new Raw(projected(geometry, ea, loopStartIsEdgeStart, forward, s, previous), false, true);
                 out.add(r);
                 previous = TrimLoop.ends(r.piece());
                 continue;
@@ -246,11 +291,8 @@ final class StepFaces {
      * ({@link EdgeProjection}) from the loop's start vertex to its end vertex.
      */
     private TrimPiece projected(StepFile.Entity geometry, StepArgs edge, boolean loopStartIsEdgeStart, boolean forward,
-                                StepSurface s) {
-        if (s.kind != StepSurface.Kind.BSPLINE && s.kind != StepSurface.Kind.PLANE) {
-            throw new IgesEntities.Skip("trimmed by model-space curves only on a "
-                    + s.kind.name().toLowerCase(java.util.Locale.ROOT) + " surface (projected only onto B-spline surfaces and planes)");
-        }
+                                StepSurface s, double[] previous) {
+        SurfaceInverse inverse = s.kind == StepSurface.Kind.BSPLINE ? null : SurfaceInverse.of(s);
         StepFile.Entity curveEntity = geometry;
         if (!geometry.is("LINE") && !geometry.is("CIRCLE") && !geometry.is("B_SPLINE_CURVE_WITH_KNOTS")
                 && !geometry.is("TRIMMED_CURVE")) {
@@ -260,23 +302,10 @@ final class StepFaces {
         StepFile.Entity v0 = edge.ref(1, "edge_start", "VERTEX_POINT"), v1 = edge.ref(2, "edge_end", "VERTEX_POINT");
         double[] start = vertex(loopStartIsEdgeStart ? v0 : v1), end = vertex(loopStartIsEdgeStart ? v1 : v0);
         EdgeCurve3 c = EdgeCurve3.of(g, curveEntity, angleUnit, start, end, v0.id() == v1.id(), forward);
-        EdgeProjection projection;
-        if (s.kind == StepSurface.Kind.BSPLINE) {
-            projection = EdgeProjection.onto(SplinePoint.of(s.spline), s.spline.range());
-        } else {
-            double extent = 0; // the plane's parameters are lengths: the tolerance follows the curve's size
-            double[] first = c.at(c.ta());
-            for (int k = 1; k <= 16; k++) {
-                double[] q = c.at(c.ta() + (c.tb() - c.ta()) * k / 16);
-                extent = Math.max(extent, Math.max(Math.abs(q[0] - first[0]), Math.max(Math.abs(q[1] - first[1]),
-                        Math.abs(q[2] - first[2]))));
-            }
-            projection = new EdgeProjection((p, guess) -> {
-                double[] uv = s.inverse(p);
-                return new double[] {uv[0], uv[1], 0};
-            }, new double[] {0, extent, 0, extent}, 1);
+        if (inverse != null) {
+            return inverse.project(c, previous); // closed-form parameters: planes, analytic surfaces, revolutions
         }
-        return projection.project(c::at, c.ta(), c.tb());
+        return EdgeProjection.onto(SplinePoint.of(s.spline), s.spline.range()).project(c::at, c.ta(), c.tb());
     }
 
     private void addIfOn(StepFile.Entity pcurve, int surfaceId, List<StepFile.Entity> out) {
@@ -376,7 +405,7 @@ final class StepFaces {
         for (Raw r : raw) {
             TrimPiece p = r.piece();
             if (s.angleU() || s.angleV()) {
-                p = StepTrims.mapped(p, s, box);
+                p = r.projected() ? StepTrims.mappedPoints(p, s, box) : StepTrims.mapped(p, s, box);
             }
             pieces.add(sameSense ? p : StepTrims.swapped(p));
         }

@@ -163,6 +163,35 @@ final class StepTrims {
         return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), out, c.weights()), p.from(), p.to());
     }
 
+    /**
+     * A projected polyline (degree 1) mapped into the B-spline's parameters vertex by vertex: each
+     * vertex exactly (angles by {@link StepSurface#angleParam}), the segments between them within
+     * the projection's tolerance; an iso-parameter line is mapped exactly as a set.
+     */
+    static TrimPiece mappedPoints(TrimPiece p, StepSurface s, double[] box) {
+        TrimCurve c = p.curve();
+        if (c.degree() != 1) {
+            return mapped(p, s, box);
+        }
+        double[] pts = c.points(), out = new double[pts.length];
+        for (int k = 0; k < pts.length; k += 2) {
+            out[k] = s.mapU(snap(pts[k], box[0], box[1]), box[0], box[1]);
+            out[k + 1] = s.mapV(snap(pts[k + 1], box[2], box[3]), box[2], box[3]);
+        }
+        return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), out, c.weights()), p.from(), p.to());
+    }
+
+    /** {@code p} moved by {@code (du, dv)} in the parameters. */
+    static TrimPiece moved(TrimPiece p, double du, double dv) {
+        TrimCurve c = p.curve();
+        double[] pts = c.points().clone();
+        for (int k = 0; k < pts.length; k += 2) {
+            pts[k] += du;
+            pts[k + 1] += dv;
+        }
+        return new TrimPiece(new TrimCurve(c.basis(), c.degree(), c.parm(), pts, c.weights()), p.from(), p.to());
+    }
+
     static boolean monotone(double[] pts, int axis) {
         boolean up = true, down = true;
         for (int k = 2 + axis; k < pts.length; k += 2) {

@@ -155,4 +155,50 @@ class EdgeProjectionTest {
             }
         }
     }
+
+    /** Every piece of {@code loop} a straight line of two points along u or v. */
+    private static void assertIsoLines(TrimLoop loop, String what) {
+        for (var piece : loop.pieces()) {
+            double[] p = piece.curve().points();
+            assertEquals(1, piece.curve().degree(), what);
+            assertEquals(4, p.length, what + ": a polyline of " + p.length / 2 + " points, not a line");
+            assertTrue(p[0] == p[2] || p[1] == p[3], what + ": neither u nor v constant " + java.util.Arrays.toString(p));
+        }
+    }
+
+    @Test
+    void parallelsAndMeridiansOfRevolvedSurfacesComeOutAsExactIsoParameterLines() throws Exception {
+        Path file = Path.of(EdgeProjectionTest.class.getResource("/step/analytic3d.stp").toURI());
+        IgesReader.Model m = StepReader.readModel(TextSource.of(Files.readString(file), "analytic3d.stp"));
+        // the cylinder: outer band and window, in the B-spline's parameters (the angle mapped onto the arcs)
+        TrimRegion cylinder = m.surfaces().get(0).trim();
+        assertIsoLines(cylinder.outer().get(0), "cylinder outer loop");
+        assertIsoLines(cylinder.holes().get(0), "cylinder window");
+        double[] box = new double[] {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY};
+        for (var piece : cylinder.holes().get(0).pieces()) {
+            double[] p = piece.curve().points();
+            for (int k = 0; k < p.length; k += 2) {
+                box[0] = Math.min(box[0], p[k]);
+                box[1] = Math.max(box[1], p[k]);
+                box[2] = Math.min(box[2], p[k + 1]);
+                box[3] = Math.max(box[3], p[k + 1]);
+            }
+        }
+        double tight = 1e-12;
+        assertEquals(StepSurface.angleParam(2, 0, 2 * Math.PI), box[0], tight);
+        assertEquals(StepSurface.angleParam(3, 0, 2 * Math.PI), box[1], tight);
+        assertEquals(1, box[2], 0, "the parallel z = 1 exactly");
+        assertEquals(2, box[3], 0, "the parallel z = 2 exactly");
+        // the sphere patch's parallels and meridians, and the revolution's parallels and seam
+        assertIsoLines(m.surfaces().get(1).trim().outer().get(0), "sphere patch");
+        assertIsoLines(m.surfaces().get(2).trim().outer().get(0), "revolution band");
+        // the tilted circle is no iso-line: a polyline through points of the circle
+        TrimLoop hole = m.surfaces().get(1).trim().holes().get(0);
+        assertTrue(hole.pieces().get(0).curve().points().length > 40, "the tilted circle's polyline");
+        // the IGES 120's window of model-space curves
+        Path iges = Path.of(EdgeProjectionTest.class.getResource("/iges/revolved3d.igs").toURI());
+        IgesReader.Model cone = IgesReader.readModel(TextSource.of(Files.readString(iges), "revolved3d.igs"));
+        assertIsoLines(cone.surfaces().get(0).trim().holes().get(0), "IGES cone window");
+    }
 }

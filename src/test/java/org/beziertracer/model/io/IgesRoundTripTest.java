@@ -66,7 +66,7 @@ class IgesRoundTripTest {
         }
     }
 
-    private static FreeFormSurface randomSurface(Random rnd, int s) {
+    static FreeFormSurface randomSurface(Random rnd, int s) {
         int p = 1 + rnd.nextInt(4), q = 1 + rnd.nextInt(4);
         int cu = p + 1 + rnd.nextInt(5), cv = q + 1 + rnd.nextInt(5);
         double[] ku = SplineReference.randomKnots(rnd, p, cu, rnd.nextBoolean());
