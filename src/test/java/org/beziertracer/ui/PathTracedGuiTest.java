@@ -82,7 +82,9 @@ class PathTracedGuiTest extends GuiSession {
         assertTrue(d.status("spp").contains(" of 256 spp"), d.status("spp"));
         assertTrue(exposureSlider() == 10, "the toolbox shows +1 EV: " + exposureSlider());
         assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().exposure()) == 1.0);
-        waitLong("more samples at the new exposure", () -> shownSamples() >= samplesAfter + 1);
+        // more samples at the new exposure, unless the render had already reached its target (on a quiet
+        // machine 256 spp of the default patch take about 10 s, as long as the steps above may take)
+        waitLong("more samples at the new exposure", () -> shownSamples() >= samplesAfter + 1 || shownSamples() == 256);
         d.menuBusy("Render", "resetExposure");
         assertTrue(GuiDriver.onEdt(() -> d.app.settings().current().exposure()) == 0, "reset to 0 EV");
         waitLong("the slider back at 0", () -> ((javax.swing.JSlider) GuiDriver.find(d.frame, "tool.exposure")).getValue() == 0);
