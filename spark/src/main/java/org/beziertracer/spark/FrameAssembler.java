@@ -36,10 +36,9 @@ final class FrameAssembler {
         return FramePattern.fileOf(java.nio.file.Path.of(pattern), frame).getFileName().toString();
     }
 
-    /** The {@code .pfm} file name of {@code frame}: the PNG's with {@code .pfm}. */
+    /** The {@code .pfm} file name of {@code frame}: the PNG's with {@code .pfm}, as {@code render JOB.json} names it. */
     String pfmName(int frame) {
-        String png = pngName(frame);
-        return png.substring(0, png.length() - ".png".length()) + ".pfm";
+        return FramePattern.pfmName(pngName(frame));
     }
 
     /** Assembles {@code frame} from its {@code n} tiles; false when it was there already. */

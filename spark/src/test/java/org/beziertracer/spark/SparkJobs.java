@@ -57,12 +57,19 @@ final class SparkJobs {
         assertEquals(0, r.code(), r.err());
     }
 
-    /** The frames in {@code out} hold the PNG pixels of the one-machine render in {@code oneDir}. */
+    /**
+     * The frames in {@code out} are the files of the one-machine render in {@code oneDir} byte for byte: each
+     * frame's PNG and its linear {@code .pfm}.
+     */
     static void assertSameFrames(Path oneDir, Path out, String what) throws IOException {
         for (int f = 1; f <= 2; f++) {
             String n = String.format("%02d", f);
-            assertArrayEquals(pixels(oneDir.resolve("one-" + n + ".png")), pixels(out.resolve("spin-" + n + ".png")),
-                    what + ": frame " + f + " differs from the one-machine render");
+            for (String ext : new String[] {".png", ".pfm"}) {
+                assertArrayEquals(Files.readAllBytes(oneDir.resolve("one-" + n + ext)),
+                        Files.readAllBytes(out.resolve("spin-" + n + ext)),
+                        what + ": the " + ext + " of frame " + f + " differs from the one-machine render's");
+            }
+            assertArrayEquals(pixels(oneDir.resolve("one-" + n + ".png")), pixels(out.resolve("spin-" + n + ".png")));
         }
     }
 
