@@ -43,6 +43,7 @@ class LocalClusterTest {
         }
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("8 tiles rendered, 0 already there; 2 frames assembled"), r.out());
+        SparkJobs.assertExecutorsUseThisJvmsKernel(r.out());
         assertEquals(0, JobSource.loadCount() - loadsBefore, "the executors are other JVMs: this one loaded nothing");
         SparkJobs.assertSameFrames(dir, out, "local-cluster[2,1,1024]");
     }

@@ -2,6 +2,7 @@ package org.beziertracer.spark;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
@@ -13,9 +14,13 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import java.util.List;
+import java.util.regex.Pattern;
+
 import javax.imageio.ImageIO;
 
 import org.beziertracer.cli.BezierTracerCommand;
+import org.beziertracer.math.Kernels;
 
 /** Test helpers: a small job, a run of the Spark application, a one-machine render to compare with. */
 final class SparkJobs {
@@ -70,6 +75,21 @@ final class SparkJobs {
                         what + ": the " + ext + " of frame " + f + " differs from the one-machine render's");
             }
             assertArrayEquals(pixels(oneDir.resolve("one-" + n + ".png")), pixels(out.resolve("spin-" + n + ".png")));
+        }
+    }
+
+    /**
+     * Each executor that rendered reports (one line) the kernel this JVM chose: the SIMD one, since surefire starts
+     * this JVM with {@code --add-modules jdk.incubator.vector} and Spark 4 gives executor JVMs the same option.
+     */
+    static void assertExecutorsUseThisJvmsKernel(String out) {
+        assertTrue(Kernels.vectorModulePresent(), "the test JVM runs with the Vector API module (spark/pom.xml)");
+        List<String> lines = out.lines().filter(l -> l.startsWith("executor ")).toList();
+        assertTrue(!lines.isEmpty(), "one line per executor: " + out);
+        for (String line : lines) {
+            assertTrue(line.matches("executor \\S+: kernel " + Pattern.quote(Kernels.best().description())
+                    + "; job loaded in \\d+\\.\\d\\d s"), "the executor renders with " + Kernels.best().description()
+                    + ": " + line);
         }
     }
 

@@ -47,6 +47,8 @@ class SparkRenderTest {
         assertTrue(r.out().contains("tiles 8 / 8 done"), r.out());
         assertTrue(r.out().contains("8 tiles rendered, 0 already there; 2 frames assembled"), r.out());
         assertEquals(1, JobSource.loadCount() - loadsBefore, "the one executor (this JVM) loaded the job once");
+        SparkJobs.assertExecutorsUseThisJvmsKernel(r.out());
+        assertTrue(r.out().contains("executor driver: kernel "), r.out());
         assertSameFrames(dir, out, "local[2]");
         JobFrames one = JobFrames.of(JobFiles.load(job, Method::parse), 1, "spin.json");
         try (RenderSession session = new RenderSession(1, FrameSink.NONE)) {
