@@ -2,6 +2,7 @@ package org.beziertracer.spark;
 
 import java.io.IOException;
 import java.util.Locale;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import org.apache.hadoop.fs.Path;
 import org.apache.spark.api.java.function.Function;
@@ -23,6 +24,7 @@ import org.beziertracer.render.TilePixels;
  */
 final class FrameAssembler implements Function<Integer, Integer> {
     private static final long serialVersionUID = 1L;
+    private static final AtomicInteger ASSEMBLED = new AtomicInteger();
 
     private final String output;
     private final String jobName;
@@ -77,8 +79,12 @@ final class FrameAssembler implements Function<Integer, Integer> {
         String tag = OutputFolder.attemptTag();
         folder.writeAtomically(folder.frame(pfmName(frame)), assembly.pfm(), tag);
         folder.writeAtomically(folder.frame(pngName(frame)), assembly.png(), tag);
+        ASSEMBLED.incrementAndGet();
         return true;
     }
+
+    /** How many frames this JVM assembled (the tests check: none on a driver whose executors are other JVMs). */
+    static int assembledCount() { return ASSEMBLED.get(); }
 
     /** {@code JOB-####.png}: the frames' name when the job names no output. */
     static String defaultPattern(String jobName) {
