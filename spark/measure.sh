@@ -6,26 +6,30 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-3}
-spp=${SPP:-16}          # samples per pixel of the 640x480 frame
+spp=${SPP:-32}          # samples per pixel of the frames measured against render
+sizes=${SIZES:-"640x480 1280x960"}  # frame sizes (a bigger frame amortises Spark's start-up)
 cspp=${CLUSTER_SPP:-4}  # samples per pixel of the local-cluster turntable (4 frames of 320x240)
 work=$(mktemp -d)
 ./mvnw -q -o -f spark/pom.xml dependency:build-classpath -Dmdep.includeScope=compile -Dmdep.outputFile="$work/cp" >/dev/null
 cp="$(pwd)/spark/target/classes:$(cat "$work/cp")"
 opts=$(sed -n 's:.*<spark.jvm.options>\(.*\)</spark.jvm.options>.*:\1:p' spark/pom.xml)
-cat > "$work/frame.json" <<JOB
-{"job": 1, "scene": "teapot", "settings": {"width": 640, "height": 480, "spp": $spp, "sampler": "jittered"},
+timed() { /usr/bin/time -f "%e %U %S" -o "$work/time" "$@" >"$work/spark.out" 2>/dev/null; cat "$work/time"; }
+echo "size run render-wall render-cpu spark-wall spark-cpu (seconds; CPU = user + system)"
+for size in $sizes; do
+  w=${size%x*}; h=${size#*x}
+  cat > "$work/frame.json" <<JOB
+{"job": 1, "scene": "teapot", "settings": {"width": $w, "height": $h, "spp": $spp, "sampler": "jittered"},
  "output": "frame.png"}
 JOB
-timed() { /usr/bin/time -f "%e %U %S" -o "$work/time" "$@" >"$work/spark.out" 2>/dev/null; cat "$work/time"; }
-echo "run render-wall render-cpu spark-wall spark-cpu (seconds; CPU = user + system)"
-for k in $(seq "$runs"); do
-  read -r rw ru rs < <(timed java --add-modules jdk.incubator.vector -cp "$cp" org.beziertracer.Main render \
-      "$work/frame.json" -o "$work/render.png" --threads 2 -q)
-  rm -rf "$work/out"
-  read -r sw su ss < <(timed java $opts -cp "$cp" org.beziertracer.spark.SparkRender "$work/frame.json" \
-      "$work/out" --tiles 16 --master 'local[2]')
-  echo "$k $rw $(echo "$ru + $rs" | bc) $sw $(echo "$su + $ss" | bc)"
-  grep "tiles rendered" "$work/spark.out" | sed 's/.*(\(.*\))/  render stage of the local[2] run: \1/'
+  for k in $(seq "$runs"); do
+    read -r rw ru rs < <(timed java --add-modules jdk.incubator.vector -cp "$cp" org.beziertracer.Main render \
+        "$work/frame.json" -o "$work/render.png" --threads 2 -q)
+    rm -rf "$work/out"
+    read -r sw su ss < <(timed java $opts -cp "$cp" org.beziertracer.spark.SparkRender "$work/frame.json" \
+        "$work/out" --tiles 16 --master 'local[2]')
+    echo "$size $k $rw $(echo "$ru + $rs" | bc) $sw $(echo "$su + $ss" | bc)"
+    grep "tiles rendered\|^executor" "$work/spark.out" | sed 's/^/  /'
+  done
 done
 # local-cluster: executors through Spark's launcher (an empty $SPARK_HOME/jars; classes from extraClassPath)
 mkdir -p "$work/spark-home/jars"

@@ -9,6 +9,7 @@ import org.beziertracer.intersect.HeapBudget;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.model.RenderSettings;
 import org.beziertracer.model.Scene;
+import org.beziertracer.model.io.AtomicFiles;
 import org.beziertracer.model.io.FramePattern;
 import org.beziertracer.model.io.JobDocument;
 import org.beziertracer.model.io.JobFiles;
@@ -24,8 +25,9 @@ import org.beziertracer.render.RenderSession;
 /**
  * {@code render JOB.json} (issue 37): reads the job file, checks everything (frames, pieces, output,
  * every frame's camera) before the first ray, builds the intersector once and renders each frame of
- * the job (or of {@code --frames}), each to its numbered PNG, atomically. {@code --crop}/{@code --tile}
- * render the same piece of every frame. Settings options ({@code --size}, {@code --spp}, …) override the
+ * the job (or of {@code --frames}), each to its numbered PNG and the linear {@code .pfm} beside it
+ * ({@link FramePattern#pfmName}), each atomically and byte for byte the files the Spark module assembles
+ * ({@code render.Png}, {@code render.Pfm}). {@code --crop}/{@code --tile} render the same piece of every frame. Settings options ({@code --size}, {@code --spp}, …) override the
  * job's; camera options, {@code --pixel}, {@code --difference-to}, {@code --repeat} and {@code --stats}
  * do not go with a job.
  */
@@ -83,7 +85,9 @@ final class JobRender {
                 if (parent != null) {
                     Files.createDirectories(parent);
                 }
-                PngWriter.write(out, window.width(), window.height(), piece.argb());
+                // the same files, byte for byte, as the Spark module's assembly: the linear .pfm, then the PNG
+                AtomicFiles.writeBytes(FramePattern.pfmOf(out), o -> o.write(piece.pfm()));
+                AtomicFiles.writeBytes(out, o -> o.write(piece.png()));
             }
         }
         return 0;

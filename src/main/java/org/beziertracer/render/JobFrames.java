@@ -131,6 +131,11 @@ public final class JobFrames {
         }
     }
 
+    /** The evaluation kernel these frames render with ({@link org.beziertracer.math.LaneKernel#description}). */
+    public String kernel() {
+        return base.options().kernel().description();
+    }
+
     /** Stops before the path tracer's tone curve (0 unless the job sets it). */
     public double exposure() {
         return doc.tracer().exposure() == null ? 0 : doc.tracer().exposure();

@@ -43,6 +43,16 @@ public record TilePixels(PixelWindow window, int[] argb, float[] rgb) {
         return new TilePixels(window, argb, result.film().linearRgb(window));
     }
 
+    /** The PNG of these pixels ({@link Png}): for a whole frame, the bytes {@link FrameAssembly#png()} gives. */
+    public byte[] png() {
+        return Png.encode(window.width(), window.height(), argb);
+    }
+
+    /** The linear {@code .pfm} of these pixels ({@link Pfm}): for a whole frame, {@link FrameAssembly#pfm()}'s bytes. */
+    public byte[] pfm() {
+        return Pfm.encode(window.width(), window.height(), rgb);
+    }
+
     /** This tile as bytes: magic, window (4 ints), pixels, floats; big-endian. */
     public byte[] toBytes() {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream(16 * argb.length + 20);

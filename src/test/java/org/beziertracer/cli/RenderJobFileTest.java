@@ -13,9 +13,13 @@ import java.nio.file.Path;
 import javax.imageio.ImageIO;
 
 import org.beziertracer.UserMessages;
+import org.beziertracer.intersect.Method;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.CameraPath;
 import org.beziertracer.model.CameraSpec;
+import org.beziertracer.model.io.JobFiles;
+import org.beziertracer.render.FrameAssembly;
+import org.beziertracer.render.JobFrames;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -69,6 +73,30 @@ class RenderJobFileTest {
     }
 
     @Test
+    void eachFramesPngAndLinearPfmAreTheBytesOfTheFrameAssembledFromTiles() throws Exception {
+        scene();
+        Path job = job("{\"job\": 1, \"scene\": \"room.json\", \"seed\": 4, \"settings\": {\"spp\": 2,"
+                + " \"sampler\": \"jittered\"}, \"camera\": {\"turntable\": {\"frames\": 2}}, \"output\": \"out/f-#.png\"}");
+        Run r = Run.of("render", job.toString(), "--threads", "2");
+        assertEquals(0, r.code(), r.err());
+        // what the Spark module writes: frames put together from tiles rendered apart
+        JobFrames frames = JobFrames.of(JobFiles.load(job, Method::parse), 1, "job.json");
+        for (int f = 1; f <= 2; f++) {
+            FrameAssembly assembled = new FrameAssembly(40, 30);
+            for (int i = 1; i <= 3; i++) {
+                assembled.add(frames.renderTile(f, i, 3));
+            }
+            assertArrayEquals(assembled.png(), Files.readAllBytes(dir.resolve("out/f-" + f + ".png")),
+                    "the PNG bytes of frame " + f);
+            assertArrayEquals(assembled.pfm(), Files.readAllBytes(dir.resolve("out/f-" + f + ".pfm")),
+                    "the .pfm bytes of frame " + f);
+        }
+        try (var files = Files.list(dir.resolve("out"))) {
+            assertEquals(4, files.count(), "two PNGs, two .pfm, no temporary file");
+        }
+    }
+
+    @Test
     void someFramesAndAPieceOfThemAreTheSameBytesAsTheWholeFrames() throws IOException {
         scene();
         Path job = job("{\"job\": 1, \"scene\": \"room.json\", \"camera\": {\"keyframes\": ["
@@ -85,6 +113,8 @@ class RenderJobFileTest {
         BufferedImage crop = ImageIO.read(dir.resolve("piece-3.png").toFile());
         assertEquals(28, crop.getWidth());
         assertArrayEquals(whole.getRGB(5, 4, 28, 17, null, 0, 28), crop.getRGB(0, 0, 28, 17, null, 0, 28));
+        String pfm = new String(Files.readAllBytes(dir.resolve("piece-3.pfm")), java.nio.charset.StandardCharsets.ISO_8859_1);
+        assertTrue(pfm.startsWith("PF\n28 17\n-1.0\n"), "the piece's linear image beside its PNG");
     }
 
     @Test

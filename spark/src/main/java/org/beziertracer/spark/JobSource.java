@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Serializable;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -13,6 +14,8 @@ import org.beziertracer.model.io.JobDocument;
 import org.beziertracer.model.io.JobFiles;
 import org.beziertracer.model.io.ModelFormatException;
 import org.beziertracer.render.JobFrames;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A render job as data the driver broadcasts (issue 37): the job file's text, its name (for messages)
@@ -30,8 +33,9 @@ public record JobSource(String json, String fileName, String baseDir, int firstF
 
     private static final long serialVersionUID = 1L;
 
+    private static final Logger LOG = LoggerFactory.getLogger(JobSource.class);
     /** Each executor's jobs, by the job's text and frames; built once per JVM. */
-    private static final Map<JobSource, JobFrames> LOADED = new ConcurrentHashMap<>();
+    private static final Map<JobSource, Loaded> LOADED = new ConcurrentHashMap<>();
     private static final AtomicInteger LOAD_COUNT = new AtomicInteger();
 
     /**
@@ -66,11 +70,27 @@ public record JobSource(String json, String fileName, String baseDir, int firstF
 
     /** This JVM's frames of the job, built on first use (the scene is read and the BVH built once per JVM). */
     public JobFrames frames(int threads) {
+        return load(threads).frames();
+    }
+
+    /**
+     * This JVM's frames of the job and the seconds their loading took, loaded on first use; the first load
+     * logs (INFO, once per executor JVM) the time and the kernel the tiles render with.
+     */
+    Loaded load(int threads) {
         return LOADED.computeIfAbsent(this, s -> {
             LOAD_COUNT.incrementAndGet();
-            return JobFrames.of(s.document(), threads, s.fileName());
+            long t0 = System.nanoTime();
+            JobFrames frames = JobFrames.of(s.document(), threads, s.fileName());
+            Loaded loaded = new Loaded(frames, (System.nanoTime() - t0) / 1e9);
+            LOG.info("beziertracer: {} loaded in {} s (scene read, intersector built); kernel: {}", s.fileName(),
+                    String.format(Locale.ROOT, "%.2f", loaded.seconds()), frames.kernel());
+            return loaded;
         });
     }
+
+    /** A job loaded in this JVM: its frames, and the seconds reading the scene and building the intersector took. */
+    record Loaded(JobFrames frames, double seconds) {}
 
     /** How many times this JVM loaded a job (the tests check: once per executor). */
     public static int loadCount() { return LOAD_COUNT.get(); }

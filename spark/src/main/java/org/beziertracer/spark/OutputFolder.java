@@ -7,6 +7,7 @@ import java.net.URI;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FileSystem;
 import org.apache.hadoop.fs.Path;
+import org.apache.spark.TaskContext;
 
 /**
  * The output folder of a job on any Hadoop file system ({@code file://}, {@code hdfs://}, {@code s3a://}):
@@ -23,6 +24,12 @@ final class OutputFolder {
         this.fs = FileSystem.get(u, new Configuration());
         fs.setWriteChecksum(false); // no .NAME.crc beside each file on file:// (other file systems keep their own)
         this.root = new Path(u);
+    }
+
+    /** A name for this task attempt's temporary files: stage and attempt ids ({@code local} outside a task). */
+    static String attemptTag() {
+        TaskContext task = TaskContext.get();
+        return task == null ? "local" + ProcessHandle.current().pid() : task.stageId() + "-" + task.taskAttemptId();
     }
 
     Path tile(String name) { return new Path(new Path(root, "tiles"), name); }

@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-import org.apache.spark.TaskContext;
+import org.apache.spark.SparkEnv;
 import org.apache.spark.api.java.function.Function;
 import org.apache.spark.broadcast.Broadcast;
 import org.beziertracer.render.TilePixels;
@@ -13,12 +13,12 @@ import org.beziertracer.render.TilePixels;
  * The executor's side of a job: renders one {@link TileTask} with the broadcast job (loaded once per
  * executor JVM, {@link JobSource#frames}) and writes the tile atomically into the output folder; a tile
  * already there (a resumed run, or a retried task whose first attempt finished) is not rendered again.
- * Returns 1 when it rendered the tile, 0 when it was there.
+ * Returns {@link TileDone}: whether it rendered the tile, and the executor's kernel and job loading time.
  *
  * <p>Test hook: when {@code failOnceFile} names a file that exists, the first task to delete it throws,
  * once, after rendering and before writing (Spark retries the task).
  */
-final class RenderTile implements Function<TileTask, Integer> {
+final class RenderTile implements Function<TileTask, TileDone> {
     private static final long serialVersionUID = 1L;
 
     private final Broadcast<JobSource> job;
@@ -36,19 +36,20 @@ final class RenderTile implements Function<TileTask, Integer> {
     }
 
     @Override
-    public Integer call(TileTask t) throws IOException, InterruptedException {
+    public TileDone call(TileTask t) throws IOException, InterruptedException {
         OutputFolder out = new OutputFolder(output);
         org.apache.hadoop.fs.Path target = out.tile(t.fileName(jobName));
+        SparkEnv env = SparkEnv.get();
+        String executor = env == null ? "?" : env.executorId();
         if (out.exists(target)) {
-            return 0;
+            return TileDone.skipped(executor);
         }
-        TilePixels pixels = job.value().frames(threads).renderTile(t.frame(), t.i(), t.n());
+        JobSource.Loaded loaded = job.value().load(threads);
+        TilePixels pixels = loaded.frames().renderTile(t.frame(), t.i(), t.n());
         if (failOnceFile != null && Files.deleteIfExists(Path.of(failOnceFile))) {
             throw new IllegalStateException("injected failure (test hook) in tile " + t);
         }
-        TaskContext task = TaskContext.get();
-        String tag = task == null ? "local" : task.stageId() + "-" + task.taskAttemptId();
-        out.writeAtomically(target, pixels.toBytes(), tag);
-        return 1;
+        out.writeAtomically(target, pixels.toBytes(), OutputFolder.attemptTag());
+        return new TileDone(true, executor, loaded.frames().kernel(), loaded.seconds());
     }
 }

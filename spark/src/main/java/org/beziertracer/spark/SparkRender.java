@@ -7,6 +7,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
 
 import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
@@ -21,7 +23,8 @@ import org.beziertracer.render.Failures;
  * whole job first (the one-line errors of {@code render JOB.json}, exit code 1, before Spark starts),
  * splits it into (frame, tile) tasks, skips the tiles already in {@code OUT_URI/tiles/} (resume),
  * broadcasts the job so each executor loads the scene once, renders the rest ({@link RenderTile}), prints
- * {@code tiles done / total} with an ETA ({@link TileProgress}) and assembles each frame's PNG and
+ * {@code tiles done / total} with an ETA ({@link TileProgress}) and one line per executor (its kernel), then
+ * assembles the frames in parallel, one Spark task each, into each frame's PNG and
  * {@code .pfm} ({@link FrameAssembler}). Without a master (no {@code --master}, no {@code spark.master}
  * from {@code spark-submit}) it runs on an embedded {@code local[*]} master.
  */
@@ -129,22 +132,45 @@ public final class SparkRender {
             Broadcast<JobSource> broadcast = sc.broadcast(source);
             int threads = sc.getConf().getInt("spark.task.cpus", 1);
             RenderTile task = new RenderTile(broadcast, job, output, threads, sc.getConf().get(FAIL_ONCE_KEY, null));
-            rendered = sc.parallelize(todo, todo.size()).map(task).reduce(Integer::sum);
+            sc.setJobDescription(TileProgress.TILES);
+            List<TileDone> done = sc.parallelize(todo, todo.size()).map(task).collect();
+            rendered = (int) done.stream().filter(TileDone::rendered).count();
+            printExecutors(done, out);
         }
         progress.finish(todo.size());
+        // the frames, one task each, assembled in parallel on the executors now that every tile is written
         String pattern = doc.output() != null ? doc.output().getFileName().toString() : FrameAssembler.defaultPattern(job);
-        FrameAssembler assembler = new FrameAssembler(folder, job, pattern, doc.scene().settings().width(),
-                doc.scene().settings().height());
-        int frames = 0;
+        FrameAssembler assembler = new FrameAssembler(output, job, pattern, doc.scene().settings().width(),
+                doc.scene().settings().height(), tiles);
+        List<Integer> missing = new ArrayList<>();
         for (int f = doc.firstFrame(); f <= doc.lastFrame(); f++) {
-            if (assembler.assemble(f, tiles)) {
-                frames++;
+            if (!assembler.written(folder, f)) {
+                missing.add(f);
             }
+        }
+        int frames = 0;
+        if (!missing.isEmpty()) {
+            sc.setJobDescription("beziertracer frames");
+            frames = sc.parallelize(missing, missing.size()).map(assembler).reduce(Integer::sum);
         }
         out.printf(Locale.ROOT, "%d tiles rendered, %d already there; %d frames assembled in %s (%.2f tiles/s)%n",
                 rendered, total - todo.size(), frames, output, progress.tilesPerSecond());
         out.flush();
         return 0;
+    }
+
+    /** One line per executor that rendered tiles: its kernel and the seconds it took to load the job. */
+    private static void printExecutors(List<TileDone> done, PrintStream out) {
+        Map<String, TileDone> first = new TreeMap<>();
+        for (TileDone d : done) {
+            if (d.rendered()) {
+                first.putIfAbsent(d.executor(), d);
+            }
+        }
+        for (TileDone d : first.values()) {
+            out.printf(Locale.ROOT, "executor %s: kernel %s; job loaded in %.2f s%n", d.executor(), d.kernel(),
+                    d.loadSeconds());
+        }
     }
 
     /** The job's name in tile names: the job file's name without {@code .json}. */

@@ -1,19 +1,28 @@
 package org.beziertracer.spark;
 
 import java.io.PrintStream;
+import java.util.HashSet;
 import java.util.Locale;
+import java.util.Properties;
+import java.util.Set;
 
 import org.apache.spark.TaskFailedReason;
 import org.apache.spark.scheduler.SparkListener;
+import org.apache.spark.scheduler.SparkListenerStageSubmitted;
 import org.apache.spark.scheduler.SparkListenerTaskEnd;
 import org.apache.spark.scheduler.SparkListenerTaskStart;
 
 /**
  * Prints {@code tiles D / T done, ETA S s} on the driver as tile tasks finish (Spark's listener bus calls
- * it on one thread), and one line for each failed attempt. Tiles found already written count as done from the start; the ETA is the mean time
- * per tile finished in this run times the tiles left.
+ * it on one thread), and one line for each failed attempt (of a tile or of a frame's assembly). Tiles found
+ * already written count as done from the start; the ETA is the mean time per tile finished in this run
+ * times the tiles left. Tile tasks are told from the frames' assembly by their job's description
+ * ({@link #TILES}, set with {@code setJobDescription}).
  */
 final class TileProgress extends SparkListener {
+    /** The description of the Spark job that renders tiles. */
+    static final String TILES = "beziertracer tiles";
+    private final Set<Integer> tileStages = new HashSet<>();
     private final PrintStream out;
     private final int total;
     private final int skipped;
@@ -30,7 +39,18 @@ final class TileProgress extends SparkListener {
     }
 
     @Override
+    public synchronized void onStageSubmitted(SparkListenerStageSubmitted submitted) {
+        Properties p = submitted.properties();
+        if (p != null && TILES.equals(p.getProperty("spark.job.description"))) {
+            tileStages.add(submitted.stageInfo().stageId());
+        }
+    }
+
+    @Override
     public synchronized void onTaskStart(SparkListenerTaskStart start) {
+        if (!tileStages.contains(start.stageId())) {
+            return;
+        }
         if (firstStartNanos == 0) {
             firstStartNanos = System.nanoTime();
         }
@@ -38,15 +58,16 @@ final class TileProgress extends SparkListener {
 
     @Override
     public synchronized void onTaskEnd(SparkListenerTaskEnd end) {
+        boolean tile = tileStages.contains(end.stageId());
         if (end.taskInfo() != null && end.taskInfo().successful()) {
-            if (closed) {
+            if (closed || !tile) {
                 return;
             }
             finished++;
             lastEndNanos = System.nanoTime();
             out.println(line());
         } else if (end.reason() instanceof TaskFailedReason failed) {
-            out.println("a tile task failed (Spark retries it up to spark.task.maxFailures): "
+            out.println("a " + (tile ? "tile" : "frame assembly") + " task failed (Spark retries it up to spark.task.maxFailures): "
                     + failed.toErrorString().lines().findFirst().orElse("?"));
         }
         out.flush();

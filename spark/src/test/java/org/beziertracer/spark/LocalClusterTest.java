@@ -43,11 +43,15 @@ class LocalClusterTest {
         }
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("8 tiles rendered, 0 already there; 2 frames assembled"), r.out());
+        SparkJobs.assertExecutorsUseThisJvmsKernel(r.out());
         assertEquals(0, JobSource.loadCount() - loadsBefore, "the executors are other JVMs: this one loaded nothing");
+        assertEquals(0, FrameAssembler.assembledCount() - assembledBefore,
+                "the frames were assembled by tasks in the executor JVMs, not by the driver");
         SparkJobs.assertSameFrames(dir, out, "local-cluster[2,1,1024]");
     }
 
     private final int loadsBefore = JobSource.loadCount();
+    private final int assembledBefore = FrameAssembler.assembledCount();
 
     /** This JVM's class path (surefire's manifest-only jar opened into its entries when it is one). */
     static String classPath() throws Exception {

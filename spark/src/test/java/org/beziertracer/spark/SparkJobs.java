@@ -2,6 +2,7 @@ package org.beziertracer.spark;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
@@ -13,9 +14,13 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import java.util.List;
+import java.util.regex.Pattern;
+
 import javax.imageio.ImageIO;
 
 import org.beziertracer.cli.BezierTracerCommand;
+import org.beziertracer.math.Kernels;
 
 /** Test helpers: a small job, a run of the Spark application, a one-machine render to compare with. */
 final class SparkJobs {
@@ -57,12 +62,34 @@ final class SparkJobs {
         assertEquals(0, r.code(), r.err());
     }
 
-    /** The frames in {@code out} hold the PNG pixels of the one-machine render in {@code oneDir}. */
+    /**
+     * The frames in {@code out} are the files of the one-machine render in {@code oneDir} byte for byte: each
+     * frame's PNG and its linear {@code .pfm}.
+     */
     static void assertSameFrames(Path oneDir, Path out, String what) throws IOException {
         for (int f = 1; f <= 2; f++) {
             String n = String.format("%02d", f);
-            assertArrayEquals(pixels(oneDir.resolve("one-" + n + ".png")), pixels(out.resolve("spin-" + n + ".png")),
-                    what + ": frame " + f + " differs from the one-machine render");
+            for (String ext : new String[] {".png", ".pfm"}) {
+                assertArrayEquals(Files.readAllBytes(oneDir.resolve("one-" + n + ext)),
+                        Files.readAllBytes(out.resolve("spin-" + n + ext)),
+                        what + ": the " + ext + " of frame " + f + " differs from the one-machine render's");
+            }
+            assertArrayEquals(pixels(oneDir.resolve("one-" + n + ".png")), pixels(out.resolve("spin-" + n + ".png")));
+        }
+    }
+
+    /**
+     * Each executor that rendered reports (one line) the kernel this JVM chose: the SIMD one, since surefire starts
+     * this JVM with {@code --add-modules jdk.incubator.vector} and Spark 4 gives executor JVMs the same option.
+     */
+    static void assertExecutorsUseThisJvmsKernel(String out) {
+        assertTrue(Kernels.vectorModulePresent(), "the test JVM runs with the Vector API module (spark/pom.xml)");
+        List<String> lines = out.lines().filter(l -> l.startsWith("executor ")).toList();
+        assertTrue(!lines.isEmpty(), "one line per executor: " + out);
+        for (String line : lines) {
+            assertTrue(line.matches("executor \\S+: kernel " + Pattern.quote(Kernels.best().description())
+                    + "; job loaded in \\d+\\.\\d\\d s"), "the executor renders with " + Kernels.best().description()
+                    + ": " + line);
         }
     }
 

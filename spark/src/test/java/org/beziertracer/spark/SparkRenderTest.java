@@ -41,12 +41,15 @@ class SparkRenderTest {
         Path job = SparkJobs.job(dir, "");
         SparkJobs.renderOnOneMachine(job, dir);
         Path out = dir.resolve("out");
-        int loadsBefore = JobSource.loadCount();
+        int loadsBefore = JobSource.loadCount(), assembledBefore = FrameAssembler.assembledCount();
         SparkJobs.Result r = SparkJobs.run(job.toString(), out.toUri().toString(), "--tiles", "4", "--master", "local[2]");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("tiles 8 / 8 done"), r.out());
         assertTrue(r.out().contains("8 tiles rendered, 0 already there; 2 frames assembled"), r.out());
         assertEquals(1, JobSource.loadCount() - loadsBefore, "the one executor (this JVM) loaded the job once");
+        assertEquals(2, FrameAssembler.assembledCount() - assembledBefore, "the one executor (this JVM) assembled both frames");
+        SparkJobs.assertExecutorsUseThisJvmsKernel(r.out());
+        assertTrue(r.out().contains("executor driver: kernel "), r.out());
         assertSameFrames(dir, out, "local[2]");
         JobFrames one = JobFrames.of(JobFiles.load(job, Method::parse), 1, "spin.json");
         try (RenderSession session = new RenderSession(1, FrameSink.NONE)) {

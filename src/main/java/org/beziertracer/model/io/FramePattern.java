@@ -39,6 +39,21 @@ public final class FramePattern {
     }
 
     /**
+     * The linear {@code .pfm} written beside a frame's PNG: the same name with {@code .pfm} in place of
+     * {@code .png} (any case), or {@code .pfm} added when the name has no {@code .png}. {@code render JOB.json}
+     * and the Spark module's assembly name it the same way.
+     */
+    public static String pfmName(String pngName) {
+        int cut = pngName.toLowerCase(java.util.Locale.ROOT).endsWith(".png") ? pngName.length() - 4 : pngName.length();
+        return pngName.substring(0, cut) + ".pfm";
+    }
+
+    /** {@link #pfmName} of {@code png}'s file name, in the same folder. */
+    public static Path pfmOf(Path png) {
+        return png.resolveSibling(pfmName(png.getFileName().toString()));
+    }
+
+    /**
      * {@code A-B} or {@code A} (whole numbers 0 or more, {@code A <= B}) as {@code {A, B}}.
      *
      * @param what names the value in the message ({@code --frames}, {@code job.json: frames})
