@@ -61,7 +61,16 @@ final class OwenSobol {
      * of {@code seed}, in [0, 1).
      */
     static double sample(int index, int dim, int seed) {
-        int shuffled = nestedUniformScramble(index, seed);
+        return coordinate(shuffle(index, seed), dim, seed);
+    }
+
+    /** The Sobol index that sample {@code index} of {@code seed}'s sequence takes. */
+    static int shuffle(int index, int seed) {
+        return nestedUniformScramble(index, seed);
+    }
+
+    /** Dimension {@code dim} of the shuffled index {@code shuffled} ({@link #shuffle}), scrambled, in [0, 1). */
+    static double coordinate(int shuffled, int dim, int seed) {
         int x = nestedUniformScramble(sobol(shuffled, dim), hash(seed, dim + 1));
         return (x & 0xFFFF_FFFFL) * 0x1.0p-32;
     }

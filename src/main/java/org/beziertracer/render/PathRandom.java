@@ -36,9 +36,9 @@ final class PathRandom {
 
     /** The next 2-D point's first coordinate, in [0, 1); {@link #second()} is its other. One dimension. */
     double next2() {
-        int seed = OwenSobol.hash(pixelSeed, dimension++);
-        second = OwenSobol.sample(index, 1, seed);
-        return OwenSobol.sample(index, 0, seed);
+        int seed = OwenSobol.hash(pixelSeed, dimension++), shuffled = OwenSobol.shuffle(index, seed);
+        second = OwenSobol.coordinate(shuffled, 1, seed);
+        return OwenSobol.coordinate(shuffled, 0, seed);
     }
 
     /** The second coordinate of the last {@link #next2} point. */
