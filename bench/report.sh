@@ -24,7 +24,7 @@ mkdir -p "$out" docs/perf
 ./mvnw -B -q -f bench/pom.xml package
 jar=bench/target/benchmarks.jar
 vector=--add-modules=jdk.incubator.vector
-declare -A fork_args=([simd]="$vector" [scalar]="$vector -Dbeziertracer.kernel=scalar")
+declare -A fork_args=([simd]="$vector -Dbeziertracer.kernel=simd" [scalar]="$vector -Dbeziertracer.kernel=scalar")
 started=$(date +%s)
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 # name | JMH selector and parameters | plot title | plot options | kernel (simd or scalar)
@@ -76,7 +76,9 @@ report() { java -cp "$jar" org.beziertracer.bench.report."$@"; }
   echo '```'
   echo
   echo "Every JMH fork starts with \`-jvmArgsAppend \"$vector\"\` (the SIMD kernel, as the README's"
-  echo "launch command gives); the scalar columns add \`-Dbeziertracer.kernel=scalar\`. Pictures are the same"
+  echo "launch command gives) and \`-Dbeziertracer.kernel=simd\` (SIMD from the first call: the default \`auto\`"
+  echo "kernel starts warming SIMD up 2 s after its first call, which could fall inside a measurement);"
+  echo "the scalar columns use \`-Dbeziertracer.kernel=scalar\` instead. Pictures are the same"
   echo "to the byte with either kernel. Details of each benchmark: [bench/README.md](../bench/README.md)."
   echo
   echo "| stamp | |"

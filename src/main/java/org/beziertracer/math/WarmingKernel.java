@@ -12,7 +12,8 @@ import java.util.concurrent.atomic.AtomicInteger;
  * {@link VectorKernel#powerForm} took about 400 µs each, a thousand times the compiled cost, so a
  * one-shot 800×600 render with the SIMD kernel took twice the wall time of the scalar one.
  *
- * <p>On the first call this kernel starts one daemon thread that runs both kernels on a fixed set
+ * <p>On the first call this kernel starts one daemon thread that sleeps for a delay (a short run
+ * ends before it and never pays for the warm-up: {@link Kernels} says how long), then runs both kernels on a fixed set
  * of patches (degrees 1 to 15, whole registers) and times blocks of calls, alternately; as soon as
  * the fast kernel wins three blocks in a row, every later call goes to it. The callers meanwhile
  * run the stand-in, already compiled after a few hundred calls. If the fast kernel never wins
@@ -32,6 +33,7 @@ final class WarmingKernel implements LaneKernel {
 
     private final LaneKernel fast;
     private final LaneKernel standIn;
+    private final long delayNanos;
     private final long limitNanos;
     private final AtomicBoolean started = new AtomicBoolean();
     private final AtomicInteger threads = new AtomicInteger();
@@ -41,11 +43,13 @@ final class WarmingKernel implements LaneKernel {
     /**
      * @param fast       the kernel to use once it is faster
      * @param standIn    the kernel to use until then (same bits)
+     * @param delayNanos how long after the first call the warm-up waits (asleep) before it measures
      * @param limitNanos how long the warm-up may measure before it gives up and keeps the stand-in
      */
-    WarmingKernel(LaneKernel fast, LaneKernel standIn, long limitNanos) {
+    WarmingKernel(LaneKernel fast, LaneKernel standIn, long delayNanos, long limitNanos) {
         this.fast = fast;
         this.standIn = standIn;
+        this.delayNanos = delayNanos;
         this.limitNanos = limitNanos;
     }
 
@@ -98,6 +102,13 @@ final class WarmingKernel implements LaneKernel {
     }
 
     private void warmUp() {
+        if (delayNanos > 0) {
+            try {
+                TimeUnit.NANOSECONDS.sleep(delayNanos);
+            } catch (InterruptedException e) {
+                return; // stays on the stand-in
+            }
+        }
         Workload w = new Workload(fast.lanes());
         long start = System.nanoTime();
         int wins = 0;

@@ -13,7 +13,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * {@link WarmingKernel} answers with its stand-in until its warm-up thread has measured the fast
- * kernel winning, then with the fast kernel; it starts that thread on the first call only, keeps
+ * kernel winning, then with the fast kernel; it starts that thread on the first call only, lets it
+ * measure only after its delay (a short run never pays for the warm-up), keeps
  * the stand-in when the fast kernel never wins, and gives the same bits either way. The two fake
  * kernels differ in cost by orders of magnitude (a busy wait against none), so which one wins does
  * not depend on the machine's load.
@@ -57,7 +58,7 @@ class WarmingKernelTest {
     @Test
     void theFirstCallStartsTheWarmUpAndTheFasterKernelTakesOver() throws InterruptedException {
         Counting fast = new Counting(0), slow = new Counting(200_000);
-        WarmingKernel k = new WarmingKernel(fast, slow, TimeUnit.SECONDS.toNanos(60));
+        WarmingKernel k = new WarmingKernel(fast, slow, 0, TimeUnit.SECONDS.toNanos(60));
         assertEquals(0, k.warmUpsStarted(), "nothing runs before the first call");
         double[] out = new double[18];
         k.powerForm(A, 0, 1, 1, U, V, 2, out, 2);
@@ -75,9 +76,35 @@ class WarmingKernelTest {
     }
 
     @Test
+    void theWarmUpWaitsForItsDelayBeforeItRunsTheFastKernel() throws InterruptedException {
+        Counting fast = new Counting(0), slow = new Counting(200_000);
+        WarmingKernel k = new WarmingKernel(fast, slow, TimeUnit.SECONDS.toNanos(60), TimeUnit.SECONDS.toNanos(60));
+        double[] out = new double[18];
+        k.powerForm(A, 0, 1, 1, U, V, 2, out, 2);
+        assertEquals(1, k.warmUpsStarted(), "the first call starts the (sleeping) warm-up thread");
+        assertFalse(k.awaitWarmUp(300, TimeUnit.MILLISECONDS), "the warm-up is still waiting");
+        assertEquals(0, fast.calls.get(), "a run shorter than the delay never calls the fast kernel");
+        assertEquals(1, slow.calls.get(), "only the caller's call ran, on the stand-in");
+        assertFalse(k.warm());
+    }
+
+    @Test
+    void afterItsDelayTheWarmUpMeasuresAndHandsOver() throws InterruptedException {
+        Counting fast = new Counting(0), slow = new Counting(200_000);
+        long delay = TimeUnit.MILLISECONDS.toNanos(200);
+        WarmingKernel k = new WarmingKernel(fast, slow, delay, TimeUnit.SECONDS.toNanos(60));
+        long t0 = System.nanoTime();
+        k.powerForm(A, 0, 1, 1, U, V, 2, new double[18], 2);
+        assertTrue(k.awaitWarmUp(60, TimeUnit.SECONDS));
+        assertTrue(System.nanoTime() - t0 >= delay, "the warm-up did not end before its delay");
+        assertTrue(k.warm(), "and then the fast kernel takes over");
+        assertTrue(fast.calls.get() > 0);
+    }
+
+    @Test
     void aFastKernelThatNeverWinsLeavesTheStandIn() throws InterruptedException {
         Counting neverFaster = new Counting(200_000), standIn = new Counting(0);
-        WarmingKernel k = new WarmingKernel(neverFaster, standIn, TimeUnit.MILLISECONDS.toNanos(300));
+        WarmingKernel k = new WarmingKernel(neverFaster, standIn, 0, TimeUnit.MILLISECONDS.toNanos(300));
         double[] out = new double[18];
         k.powerForm(A, 0, 1, 1, U, V, 2, out, 2);
         assertTrue(k.awaitWarmUp(60, TimeUnit.SECONDS), "the warm-up gives up at its limit");
@@ -90,7 +117,7 @@ class WarmingKernelTest {
     @Test
     void concurrentFirstCallsStartOneWarmUpThreadThatEnds() throws InterruptedException {
         Counting fast = new Counting(0), slow = new Counting(200_000);
-        WarmingKernel k = new WarmingKernel(fast, slow, TimeUnit.SECONDS.toNanos(60));
+        WarmingKernel k = new WarmingKernel(fast, slow, 0, TimeUnit.SECONDS.toNanos(60));
         Thread[] callers = new Thread[4];
         for (int t = 0; t < callers.length; t++) {
             callers[t] = new Thread(() -> k.powerForm(A, 0, 1, 1, U, V, 2, new double[18], 2));
@@ -107,7 +134,7 @@ class WarmingKernelTest {
     @Test
     void theSimdKernelBehindItsWarmUpGivesTheScalarBitsBeforeAndAfter() throws InterruptedException {
         LaneKernel simd = Kernels.named("simd"), scalar = Kernels.scalar();
-        WarmingKernel k = new WarmingKernel(simd, scalar, TimeUnit.SECONDS.toNanos(60));
+        WarmingKernel k = new WarmingKernel(simd, scalar, 0, TimeUnit.SECONDS.toNanos(60));
         Random rnd = new Random(9);
         int stride = 16;
         for (int round = 0; round < 2; round++) {
