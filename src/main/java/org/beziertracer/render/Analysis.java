@@ -18,7 +18,9 @@ import java.util.Locale;
  * @param draftPull      the pull direction of {@code draft} (unit; default z)
  * @param draftTolerance degrees within which a face counts as vertical (neither positive nor
  *                       negative draft), 0..45
- * @param environment    the image {@code emap} reflects ({@link EnvironmentMap#studio()} by default)
+ * @param environment    the image {@code emap} reflects, or null for the built-in studio
+ *                       ({@link EnvironmentMap#studio()}, made on first use: a render without
+ *                       the {@code emap} view never pays the 30–70 ms of making it)
  */
 public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, double[] isophoteLight,
                        double isophoteStep, double rangeLow, double rangeHigh, double[] draftPull,
@@ -28,11 +30,10 @@ public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, 
     public Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, double[] isophoteLight,
                     double isophoteStep, double rangeLow, double rangeHigh, double[] draftPull, double draftTolerance) {
         this(zebraAxis, zebraStripes, zebraWidth, isophoteLight, isophoteStep, rangeLow, rangeHigh, draftPull,
-                draftTolerance, EnvironmentMap.studio());
+                draftTolerance, null);
     }
 
     public Analysis {
-        java.util.Objects.requireNonNull(environment, "environment");
         zebraAxis = unit("zebra axis", zebraAxis);
         isophoteLight = isophoteLight == null ? null : unit("isophote light", isophoteLight);
         draftPull = unit("pull direction", draftPull);
@@ -58,6 +59,12 @@ public record Analysis(double[] zebraAxis, int zebraStripes, double zebraWidth, 
     /** Bars along z, 16 of them, half dark; isophotes every 10° from the eye; automatic range; pull along z, 1°. */
     public static Analysis defaults() {
         return new Analysis(new double[] {0, 0, 1}, 16, 0.5, null, 10, Double.NaN, Double.NaN, new double[] {0, 0, 1}, 1);
+    }
+
+    /** The image {@code emap} reflects: the one given, or the built-in studio. */
+    @Override
+    public EnvironmentMap environment() {
+        return environment != null ? environment : EnvironmentMap.studio();
     }
 
     /** True when the curvature range comes from the values in view. */

@@ -3,6 +3,7 @@ package org.beziertracer.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -20,6 +21,17 @@ class AnalysisViewsTest {
     private static RenderJob job(Scene scene, String view, Analysis a) {
         RenderSettings s = new RenderSettings(160, 120, 1, "regular", "clipping", true, view, 0, true, 5);
         return RenderJob.prepare(scene, s, RenderOptions.defaults().withThreads(2).withProgressive(false).withAnalysis(a));
+    }
+
+    @Test
+    void theDefaultEnvironmentIsTheStudioMadeOnFirstUseAndAGivenOneIsKept() {
+        Analysis d = Analysis.defaults();
+        assertSame(EnvironmentMap.studio(), d.environment(), "no environment given: the built-in studio");
+        assertSame(EnvironmentMap.studio(), d.withRange(0, 1).withZebra(new double[] {1, 0, 0}, 8, 0.3).environment());
+        EnvironmentMap sky = new EnvironmentMap(2, 2, new float[] {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});
+        Analysis a = new Analysis(new double[] {0, 0, 1}, 16, 0.5, null, 10, Double.NaN, Double.NaN,
+                new double[] {0, 0, 1}, 1, sky);
+        assertSame(sky, a.withIsophotes(new double[] {0, 1, 0}, 5).environment(), "a given map survives the withers");
     }
 
     @Test
