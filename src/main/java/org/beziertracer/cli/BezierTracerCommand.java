@@ -86,7 +86,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (FilePaths.find(arg).filter(Files::isRegularFile).isPresent()) {
             return null;
         }
-        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render, analyze; "
+        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render, analyze, convert; "
                 + "built-ins: " + String.join(", ", BuiltIns.names()) + ")";
     }
 

@@ -56,7 +56,10 @@ class LaunchAppTest {
         String line = captured.toString(java.nio.charset.StandardCharsets.UTF_8).strip();
         org.beziertracer.UserMessages.check(line);
         org.junit.jupiter.api.Assertions.assertTrue(line.startsWith("beziertracer: \"rendr\" is not a command, a file or a "
-                + "built-in model (commands: info, trace, render, analyze; built-ins: patch, teapot"), line);
+                + "built-in model (commands: info, trace, render, analyze, convert; built-ins: patch, teapot"), line);
         org.junit.jupiter.api.Assertions.assertFalse(line.contains("\n"));
+        String commands = line.substring(line.indexOf("(commands: ") + 11, line.indexOf(';'));
+        assertEquals(String.join(", ", BezierTracerCommand.commandLine().getSubcommands().keySet()), commands,
+                "the sentence names every command the tree has");
     }
 }
