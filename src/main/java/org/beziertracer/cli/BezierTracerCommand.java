@@ -122,7 +122,10 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         } catch (Error e) {
             return CliErrors.report(e, command, cl.getErr(), CliErrors.modelArgument(cl));
         }
-        // A command that wrote to a full disk or a closed pipe did not succeed
+        // A command that wrote to a full disk did not succeed; one whose reader left (| head) ends quietly
+        if (code == 0 && StandardOutput.closedPipe(cl.getOut())) {
+            return StandardOutput.EXIT_CLOSED_PIPE;
+        }
         String failed = StandardOutput.failure(cl.getOut());
         return failed != null && code == 0 ? CliErrors.report(new IOException(failed), command, cl.getErr()) : code;
     }

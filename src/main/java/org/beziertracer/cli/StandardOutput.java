@@ -51,6 +51,23 @@ final class StandardOutput extends PrintWriter {
         return "standard output: write failed (" + (cause == null ? "input/output error" : IoReasons.of(cause)) + ")";
     }
 
+    /** The exit code of a process the reader of its output has left: 128 + SIGPIPE, as a shell reports one the signal ended. */
+    static final int EXIT_CLOSED_PIPE = 141;
+
+    /**
+     * True when writing to {@code out} failed because its reader has gone ({@code info … | head -1}):
+     * the command then ends quietly, as Unix tools do (the signal SIGPIPE ends them), not with an
+     * error line. "Broken pipe" on Linux and macOS, "The pipe is being closed" or "The pipe has been
+     * ended" on Windows.
+     */
+    static boolean closedPipe(PrintWriter out) {
+        if (!out.checkError() || !(out instanceof StandardOutput s) || s.recorder.first == null) {
+            return false;
+        }
+        String m = String.valueOf(s.recorder.first.getMessage());
+        return m.contains("Broken pipe") || m.contains("pipe is being closed") || m.contains("pipe has been ended");
+    }
+
     /** Passes bytes through whole (not one by one, as {@link FilterOutputStream} would) and keeps the first failure. */
     private static final class Recorder extends FilterOutputStream {
         private IOException first;

@@ -176,6 +176,9 @@ final class TraceCommand implements Callable<Integer> {
             rays++;
             if (output == null && (rays & STDOUT_CHECK_MASK) == 0) {
                 out.flush();
+                if (StandardOutput.closedPipe(spec.commandLine().getOut())) {
+                    return; // the reader left (| head): stop quietly, as Unix tools do
+                }
                 String failed = StandardOutput.failure(spec.commandLine().getOut());
                 if (failed != null) { // stop early: a closed pipe or a full disk takes no more
                     throw new IOException(failed);

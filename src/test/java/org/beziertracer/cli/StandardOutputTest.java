@@ -59,6 +59,52 @@ class StandardOutputTest {
         }
     }
 
+    /** A stream whose reader has gone, as a pipe into {@code head -1} after its line. */
+    private static final class ClosedPipe extends OutputStream {
+        final AtomicInteger attempts = new AtomicInteger();
+
+        @Override
+        public void write(int b) throws IOException {
+            write(new byte[] {(byte) b}, 0, 1);
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            attempts.incrementAndGet();
+            throw new IOException("Broken pipe");
+        }
+    }
+
+    @Test
+    void aCommandWhoseReaderLeftEndsQuietlyAsUnixToolsDo() {
+        for (String[] command : List.of(new String[] {"info", "teapot"}, new String[] {"analyze", "patch"})) {
+            ClosedPipe pipe = new ClosedPipe();
+            Run r = Run.writingTo(StandardOutput.over(pipe, StandardCharsets.UTF_8), command);
+            assertEquals(StandardOutput.EXIT_CLOSED_PIPE, r.code(), r.err());
+            assertEquals("", r.err(), "no error line: the reader chose to stop reading");
+            assertTrue(pipe.attempts.get() > 0);
+        }
+        ClosedPipe pipe = new ClosedPipe();
+        Run r = Run.writingTo(StandardOutput.over(pipe, StandardCharsets.UTF_8), "trace", "patch", "--random", "2000000");
+        assertEquals(StandardOutput.EXIT_CLOSED_PIPE, r.code(), r.err());
+        assertTrue(pipe.attempts.get() < 10, "writes attempted after the reader left: " + pipe.attempts.get());
+    }
+
+    @Test
+    void aChildProcessPipedIntoAReaderThatLeavesExitsQuietly() throws Exception {
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Main.class.getName(),
+                "trace", "patch", "--random", "2000000").directory(dir.toFile())
+                .redirectError(dir.resolve("err.txt").toFile()).start();
+        try (var in = p.getInputStream()) {
+            assertTrue(in.read() >= 0, "the child starts writing"); // then the reader leaves, as head -c 1 does
+        }
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the child ends soon after its reader left");
+        String err = Files.readString(dir.resolve("err.txt"));
+        assertEquals(StandardOutput.EXIT_CLOSED_PIPE, p.exitValue(), err);
+        assertEquals("", err.lines().filter(l -> !l.startsWith("WARNING: Using incubator modules")).reduce("", String::concat));
+    }
+
     @Test
     void aWriterThatKeepsNoReasonStillFails() {
         Run r = Run.writingTo(new PrintWriter(new FullDisk()), "info", "patch");
