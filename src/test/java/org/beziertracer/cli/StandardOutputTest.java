@@ -19,7 +19,7 @@ import org.beziertracer.UserMessages;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Output that cannot be written (a full disk, a closed pipe) fails the command in one line (issue 36). */
+/** Output that cannot be written (a full disk) fails the command in one line (issue 36); a reader that left ends it quietly. */
 class StandardOutputTest {
 
     @TempDir
