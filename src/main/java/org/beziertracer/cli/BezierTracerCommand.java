@@ -3,7 +3,11 @@ package org.beziertracer.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 import org.beziertracer.model.io.FilePaths;
 import org.beziertracer.model.io.BuiltIns;
@@ -19,10 +23,27 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, versionProvider = BezierTracerCommand.Version.class,
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
-                + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
-        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class, AnalyzeCommand.class,
-                ConvertCommand.class})
+                + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.")
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
+
+    /**
+     * The sub-commands by name, in the order the help lists them. A run that names one of them
+     * first gets a tree of just that one ({@link #commandLine(String[])}): picocli reads a
+     * command's annotations by reflection when it is added; building the whole tree took the main
+     * thread 280–390 ms of CPU in a cold JVM, the {@code info} tree alone 205–280 ms (2-core EPYC).
+     * The names are their {@code @Command} names (a test checks).
+     */
+    static final Map<String, Supplier<Object>> COMMANDS = commands();
+
+    private static Map<String, Supplier<Object>> commands() {
+        Map<String, Supplier<Object>> m = new LinkedHashMap<>();
+        m.put("info", InfoCommand::new);
+        m.put("trace", TraceCommand::new);
+        m.put("render", RenderCommand::new);
+        m.put("analyze", AnalyzeCommand::new);
+        m.put("convert", ConvertCommand::new);
+        return Collections.unmodifiableMap(m);
+    }
 
     /** {@code --version}: the release, the Java that runs it, and which evaluation kernel runs. */
     static final class Version implements picocli.CommandLine.IVersionProvider {
@@ -62,11 +83,11 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp(desktopApp, null);
         }
-        CommandLine cl = commandLine();
+        CommandLine cl = commandLine(args);
         cl.setOut(StandardOutput.system());
         // picocli's own writer would encode in Java's choice, ASCII under LANG=C: names would print as ?
         cl.setErr(new PrintWriter(new java.io.OutputStreamWriter(System.err, ConsoleEncoding.stderr()), true));
-        if (args.length == 1 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
+        if (args.length == 1 && !args[0].startsWith("-") && !COMMANDS.containsKey(args[0])) {
             String problem = modelProblem(args[0]);
             if (problem != null) {
                 cl.getErr().println("beziertracer: " + problem);
@@ -86,8 +107,8 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (FilePaths.find(arg).filter(Files::isRegularFile).isPresent()) {
             return null;
         }
-        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: info, trace, render, analyze, convert; "
-                + "built-ins: " + String.join(", ", BuiltIns.names()) + ")";
+        return Echo.quote(arg) + " is not a command, a file or a built-in model (commands: "
+                + String.join(", ", COMMANDS.keySet()) + "; built-ins: " + String.join(", ", BuiltIns.names()) + ")";
     }
 
     /**
@@ -95,7 +116,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
      * embedding); never launches the app. Returns the exit code.
      */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
-        return run(commandLine(), args, out, err);
+        return run(commandLine(args), args, out, err);
     }
 
     /** As {@link #run(String[], PrintWriter, PrintWriter)} on a command tree the caller set up. */
@@ -130,9 +151,24 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         return failed != null && code == 0 ? CliErrors.report(new IOException(failed), command, cl.getErr()) : code;
     }
 
-    /** The configured command tree: sub-commands plus the one-line error handler. */
+    /** The configured command tree: every sub-command plus the one-line error handler. */
     static CommandLine commandLine() {
+        return commandLine(new String[0]);
+    }
+
+    /**
+     * The configured command tree for {@code args}: when the first names a sub-command, that one
+     * alone under the top command (all that running it needs); otherwise every sub-command (the top
+     * command's help lists them, and picocli matches an unknown name against them).
+     */
+    static CommandLine commandLine(String[] args) {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
+        Supplier<Object> only = args.length > 0 ? COMMANDS.get(args[0]) : null;
+        if (only != null) {
+            cl.addSubcommand(only.get());
+        } else {
+            COMMANDS.values().forEach(c -> cl.addSubcommand(c.get()));
+        }
         cl.setResourceBundle(new CliText());
         // File names as FilePaths reads them: an existing non-ASCII name works under LANG=C too
         cl.registerConverter(java.nio.file.Path.class, name -> FilePaths.find(name).orElseThrow(() ->
