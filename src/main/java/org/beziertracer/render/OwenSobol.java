@@ -17,14 +17,31 @@ package org.beziertracer.render;
 final class OwenSobol {
     private OwenSobol() {}
 
-    /** Sobol's direction numbers, dimension 1 (the Pascal matrix mod 2; dimension 0 is the identity). */
-    private static final int[] DIRECTIONS_1 = new int[32];
+    /**
+     * Sobol's direction numbers of dimension 1 (the Pascal matrix mod 2; dimension 0 is the
+     * identity), XOR-summed a byte of the index at a time: {@code BYTES[256 * k + b]} is the XOR of
+     * the direction numbers of the bits set in {@code b} at byte {@code k}. The point is linear in
+     * the index's bits over GF(2), so four look-ups give what the loop over 32 bits gives, to the bit.
+     */
+    private static final int[] BYTES = new int[4 * 256];
 
     static {
+        int[] directions = new int[32];
         int v = 0x8000_0000;
         for (int bit = 0; bit < 32; bit++) {
-            DIRECTIONS_1[bit] = v;
+            directions[bit] = v;
             v ^= v >>> 1;
+        }
+        for (int k = 0; k < 4; k++) {
+            for (int b = 0; b < 256; b++) {
+                int x = 0;
+                for (int bit = 0; bit < 8; bit++) {
+                    if ((b >>> bit & 1) != 0) {
+                        x ^= directions[8 * k + bit];
+                    }
+                }
+                BYTES[256 * k + b] = x;
+            }
         }
     }
 
@@ -33,13 +50,8 @@ final class OwenSobol {
         if (dim == 0) {
             return Integer.reverse(index);
         }
-        int x = 0;
-        for (int bit = 0; index != 0; bit++, index >>>= 1) {
-            if ((index & 1) != 0) {
-                x ^= DIRECTIONS_1[bit];
-            }
-        }
-        return x;
+        return BYTES[index & 0xFF] ^ BYTES[256 + (index >>> 8 & 0xFF)] ^ BYTES[512 + (index >>> 16 & 0xFF)]
+                ^ BYTES[768 + (index >>> 24)];
     }
 
     /**

@@ -25,6 +25,28 @@ class OwenSobolTest {
     }
 
     @Test
+    void theByteTablesGiveTheGeneratorMatrixProductToTheBit() {
+        // dimension 1 by its definition: the XOR of the direction numbers of the index's set bits
+        int[] directions = new int[32];
+        int v = 0x8000_0000;
+        for (int bit = 0; bit < 32; bit++) {
+            directions[bit] = v;
+            v ^= v >>> 1;
+        }
+        Random rnd = new Random(341);
+        for (int trial = 0; trial < 100_000; trial++) {
+            int index = trial < 1024 ? trial : trial < 1056 ? 1 << (trial - 1024) : rnd.nextInt();
+            int x = 0;
+            for (int bit = 0; bit < 32; bit++) {
+                if ((index >>> bit & 1) != 0) {
+                    x ^= directions[bit];
+                }
+            }
+            assertEquals(x, OwenSobol.sobol(index, 1), "index " + Integer.toHexString(index));
+        }
+    }
+
+    @Test
     void theFirstPowerOfTwoPointsOfEverySeedFormANet() {
         Random rnd = new Random(34);
         for (int trial = 0; trial < 40; trial++) {
