@@ -25,9 +25,14 @@ class StandardOutputTest {
     @TempDir
     Path dir;
 
-    /** A stream that refuses every write as a full disk does, counting the attempts. */
-    private static final class FullDisk extends OutputStream {
+    /** A stream that refuses every write with one error (a full disk's, a closed pipe's), counting the attempts. */
+    private static class Refusing extends OutputStream {
         final AtomicInteger attempts = new AtomicInteger();
+        private final String error;
+
+        Refusing(String error) {
+            this.error = error;
+        }
 
         @Override
         public void write(int b) throws IOException {
@@ -37,7 +42,21 @@ class StandardOutputTest {
         @Override
         public void write(byte[] b, int off, int len) throws IOException {
             attempts.incrementAndGet();
-            throw new IOException("No space left on device");
+            throw new IOException(error);
+        }
+    }
+
+    /** A full disk. */
+    private static final class FullDisk extends Refusing {
+        FullDisk() {
+            super("No space left on device");
+        }
+    }
+
+    /** A pipe whose reader has gone, as one into {@code head -1} after its line. */
+    private static final class ClosedPipe extends Refusing {
+        ClosedPipe() {
+            super("Broken pipe");
         }
     }
 
@@ -56,22 +75,6 @@ class StandardOutputTest {
             assertEquals(1, r.code(), command + ": " + r.err());
             assertEquals("beziertracer " + command.get(0) + ": standard output: write failed (disk full)",
                     UserMessages.checkOneLineOutput(r.err()), command.toString());
-        }
-    }
-
-    /** A stream whose reader has gone, as a pipe into {@code head -1} after its line. */
-    private static final class ClosedPipe extends OutputStream {
-        final AtomicInteger attempts = new AtomicInteger();
-
-        @Override
-        public void write(int b) throws IOException {
-            write(new byte[] {(byte) b}, 0, 1);
-        }
-
-        @Override
-        public void write(byte[] b, int off, int len) throws IOException {
-            attempts.incrementAndGet();
-            throw new IOException("Broken pipe");
         }
     }
 
