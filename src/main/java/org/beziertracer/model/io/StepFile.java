@@ -131,10 +131,39 @@ final class StepFile {
 
     // ---- characters
 
+    /** Characters taken from the source a buffer at a time: an array access a character, not a call chain. */
+    private final char[] buffer = new char[1 << 13];
+    private int at, end;
+    /** The line of the next character (lines end in LF, CRLF or a lone CR, as {@link TextSource} counts them). */
+    private int nextLine = 1;
+    private boolean afterCr;
+
     private void next() throws IOException {
-        c = source.read();
-        // TextSource counts lines (LF, CRLF or a lone CR); a line break belongs to the line it ends
-        line = c == '\n' || c == '\r' ? source.line() - 1 : source.line();
+        if (at == end) {
+            end = Math.max(0, source.read(buffer));
+            at = 0;
+        }
+        if (at < end) {
+            c = buffer[at++];
+            // a line break belongs to the line it ends
+            line = nextLine;
+            if (c == '\n') {
+                if (afterCr) {
+                    line = nextLine - 1; // the LF of a CRLF: the line the CR ended
+                } else {
+                    nextLine++;
+                }
+                afterCr = false;
+            } else if (c == '\r') {
+                nextLine++;
+                afterCr = true;
+            } else {
+                afterCr = false;
+            }
+        } else {
+            c = -1;
+            line = nextLine;
+        }
         if (++chars > maxChars) {
             throw source.error(0, "the file holds more than the " + (maxChars >> 20) + " MB a STEP file may hold");
         }
@@ -419,7 +448,7 @@ final class StepFile {
     }
 
     /** The characters of the number being read (one buffer for the whole file). */
-    private final StringBuilder numberText = new StringBuilder(32);
+    private final char[] numberText = new char[65];
 
     /**
      * A number: a whole one as a {@code Long}, digit by digit; a real by FastDoubleParser on the
@@ -427,28 +456,28 @@ final class StepFile {
      * gigabyte per second").
      */
     private Object numberValue() throws IOException {
-        StringBuilder sb = numberText;
-        sb.setLength(0);
+        char[] text = numberText;
+        int n = 0;
         boolean real = false;
         while ((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'E' || c == 'e') {
             real |= c == '.' || c == 'E' || c == 'e';
-            sb.append((char) c);
-            if (sb.length() > 64) {
+            if (n == 64) {
                 throw source.error(line, "a number longer than 64 characters");
             }
+            text[n++] = (char) c;
             next();
         }
         try {
             if (!real) {
-                return NumberText.whole(sb);
+                return NumberText.whole(java.nio.CharBuffer.wrap(text, 0, n));
             }
-            double v = JavaDoubleParser.parseDouble(sb);
+            double v = JavaDoubleParser.parseDouble(text, 0, n);
             if (!Double.isFinite(v)) {
-                throw source.error(line, "the number " + Echo.quote(sb.toString()) + " is too large");
+                throw source.error(line, "the number " + Echo.quote(new String(text, 0, n)) + " is too large");
             }
             return v;
         } catch (NumberFormatException e) {
-            throw source.error(line, "expected a number, found " + Echo.quote(sb.toString()));
+            throw source.error(line, "expected a number, found " + Echo.quote(new String(text, 0, n)));
         }
     }
 
