@@ -201,6 +201,15 @@ final class StepFile {
         return source.error(line, "expected " + expected + ", found " + found);
     }
 
+    /** {@link #expect(char, String)} whose message names the entity {@code #id}: no text made unless it fails. */
+    private void expect(char ch, String before, int id) throws IOException {
+        skipSpace();
+        if (c != ch) {
+            throw unexpected("'" + ch + "'" + before + id);
+        }
+        next();
+    }
+
     private void expect(char ch, String where) throws IOException {
         skipSpace();
         if (c != ch) {
@@ -212,7 +221,7 @@ final class StepFile {
     /** A keyword (entity or section name, letters, digits, '_' and '-'), upper case as written. */
     /** The names read so far, each once, as the JVM's interned strings (the types' literals in the code are the same objects). */
     private final Map<String, String> names = new HashMap<>();
-    private final StringBuilder keywordText = new StringBuilder(32);
+    private char[] keywordText = new char[64];
 
     /**
      * A name; one string object per distinct name, the interned one, so entities share their
@@ -220,16 +229,20 @@ final class StepFile {
      */
     private String keyword() throws IOException {
         skipSpace();
-        StringBuilder sb = keywordText;
-        sb.setLength(0);
-        while (Character.isLetterOrDigit(c) || c == '_' || c == '-') {
-            sb.append((char) c);
-            if (sb.length() > maxToken) {
+        char[] text = keywordText;
+        int n = 0;
+        while ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || (c >= 'a' && c <= 'z')
+                || (c > 127 && Character.isLetterOrDigit(c))) {
+            if (n == maxToken) {
                 throw source.error(line, "a name longer than " + maxToken + " characters");
             }
+            if (n == text.length) {
+                text = keywordText = java.util.Arrays.copyOf(text, Math.min(2 * n, maxToken));
+            }
+            text[n++] = (char) c;
             next();
         }
-        String name = sb.toString();
+        String name = new String(text, 0, n);
         String known = names.get(name);
         if (known == null) {
             known = names.size() < 100_000 ? name.intern() : name; // a file of endless made-up names interns no more
@@ -312,7 +325,7 @@ final class StepFile {
             int at = line;
             next();
             int id = number();
-            expect('=', " after #" + id);
+            expect('=', " after #", id);
             skipSpace();
             List<Part> parts = new ArrayList<>(1);
             if (c == '(') {
@@ -339,7 +352,7 @@ final class StepFile {
                 }
                 parts.add(new Part(type, params(at, 0)));
             }
-            expect(';', " after the entity #" + id);
+            expect(';', " after the entity #", id);
             Entity e = new Entity(id, at, List.copyOf(parts));
             if (entities.putIfAbsent(id, e) != null) {
                 throw source.error(at, "#" + id + " is defined twice (first on line " + entities.get(id).line() + ")");
