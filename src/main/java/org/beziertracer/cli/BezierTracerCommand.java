@@ -19,9 +19,7 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "beziertracer", mixinStandardHelpOptions = true, versionProvider = BezierTracerCommand.Version.class,
         description = "Ray traces Bézier surfaces directly (no triangles).%n"
-                + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.",
-        subcommands = {InfoCommand.class, TraceCommand.class, RenderCommand.class, AnalyzeCommand.class,
-                ConvertCommand.class})
+                + "With no command, opens the desktop app; beziertracer FILE_OR_BUILTIN opens the app on a model.")
 public final class BezierTracerCommand implements java.util.concurrent.Callable<Integer> {
 
     /** {@code --version}: the release, the Java that runs it, and which evaluation kernel runs. */
@@ -62,7 +60,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         if (args.length == 0) {
             return launchApp(desktopApp, null);
         }
-        CommandLine cl = commandLine();
+        CommandLine cl = commandLine(args[0]);
         cl.setOut(StandardOutput.system());
         // picocli's own writer would encode in Java's choice, ASCII under LANG=C: names would print as ?
         cl.setErr(new PrintWriter(new java.io.OutputStreamWriter(System.err, ConsoleEncoding.stderr()), true));
@@ -95,7 +93,7 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
      * embedding); never launches the app. Returns the exit code.
      */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
-        return run(commandLine(), args, out, err);
+        return run(commandLine(args.length > 0 ? args[0] : null), args, out, err);
     }
 
     /** As {@link #run(String[], PrintWriter, PrintWriter)} on a command tree the caller set up. */
@@ -127,9 +125,40 @@ public final class BezierTracerCommand implements java.util.concurrent.Callable<
         return failed != null && code == 0 ? CliErrors.report(new IOException(failed), command, cl.getErr()) : code;
     }
 
-    /** The configured command tree: sub-commands plus the one-line error handler. */
+    /** The sub-commands' names, in the order {@code --help} lists them, and how to make each. */
+    private static final String[] NAMES = {"info", "trace", "render", "analyze", "convert"};
+
+    private static Object subcommand(String name) {
+        return switch (name) {
+            case "info" -> new InfoCommand();
+            case "trace" -> new TraceCommand();
+            case "render" -> new RenderCommand();
+            case "analyze" -> new AnalyzeCommand();
+            case "convert" -> new ConvertCommand();
+            default -> throw new IllegalArgumentException(name);
+        };
+    }
+
+    /** The configured command tree: every sub-command plus the one-line error handler. */
     static CommandLine commandLine() {
+        return commandLine(null);
+    }
+
+    /**
+     * The command tree for a command line whose first argument is {@code first}: when that names a
+     * sub-command, the tree holds that one only (picocli builds a command's model by reflection
+     * over its annotated fields: the other four cost a short command a third of its start-up);
+     * otherwise — an option, a model to open, a mistyped name, none — every sub-command, so help,
+     * suggestions and errors are as they were.
+     */
+    static CommandLine commandLine(String first) {
         CommandLine cl = new CommandLine(new BezierTracerCommand());
+        boolean one = first != null && java.util.Arrays.asList(NAMES).contains(first);
+        for (String name : NAMES) {
+            if (!one || name.equals(first)) {
+                cl.addSubcommand(name, subcommand(name));
+            }
+        }
         cl.setResourceBundle(new CliText());
         // File names as FilePaths reads them: an existing non-ASCII name works under LANG=C too
         cl.registerConverter(java.nio.file.Path.class, name -> FilePaths.find(name).orElseThrow(() ->

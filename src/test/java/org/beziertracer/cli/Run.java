@@ -17,7 +17,7 @@ record Run(int code, String out, String err) {
     /** As {@link #of}, after {@code setup} adjusted the command tree (e.g. a sub-command's test seam). */
     static Run with(Consumer<CommandLine> setup, String... args) {
         StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine cl = BezierTracerCommand.commandLine();
+        CommandLine cl = BezierTracerCommand.commandLine(args.length > 0 ? args[0] : null); // as the program builds it
         setup.accept(cl);
         int code = BezierTracerCommand.run(cl, args, new PrintWriter(out), new PrintWriter(err));
         return new Run(code, out.toString(), err.toString());
@@ -26,7 +26,8 @@ record Run(int code, String out, String err) {
     /** Runs {@code beziertracer ARGS} with standard output going to {@code out} (the result's {@code out} is empty). */
     static Run writingTo(PrintWriter out, String... args) {
         StringWriter err = new StringWriter();
-        int code = BezierTracerCommand.run(BezierTracerCommand.commandLine(), args, out, new PrintWriter(err));
+        int code = BezierTracerCommand.run(BezierTracerCommand.commandLine(args.length > 0 ? args[0] : null), args, out,
+                new PrintWriter(err));
         return new Run(code, "", err.toString());
     }
 }
