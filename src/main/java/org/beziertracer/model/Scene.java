@@ -187,14 +187,26 @@ public final class Scene {
         return b.build();
     }
 
-    /** Union of the control-point boxes of every patch (empty when there are none). */
+    /**
+     * Union of the control-point boxes of every patch (empty when there are none). Computed once
+     * and kept (the patches never change): the read's finiteness check, {@code info} and the
+     * intersector's scale all ask for it. The race of two first callers is benign: both compute
+     * the same immutable record.
+     */
     public Aabb controlBounds() {
-        Aabb box = Aabb.EMPTY;
-        for (BezierPatch p : patches) {
-            box = box.union(p.controlBounds());
+        Aabb box = controlBounds;
+        if (box == null) {
+            box = Aabb.EMPTY;
+            for (BezierPatch p : patches) {
+                box = box.union(p.controlBounds());
+            }
+            controlBounds = box;
         }
         return box;
     }
+
+    /** {@link #controlBounds()} once computed, else null. */
+    private Aabb controlBounds;
 
     /**
      * The finite part of the model: the patches' control boxes and the meshes' vertex boxes

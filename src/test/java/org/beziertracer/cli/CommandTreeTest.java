@@ -1,6 +1,7 @@
 package org.beziertracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -34,7 +35,8 @@ class CommandTreeTest {
             CommandLine cl = BezierTracerCommand.commandLine(new String[] {name, "--help"});
             assertEquals(List.of(name), List.copyOf(cl.getSubcommands().keySet()));
         }
-        for (String[] args : List.of(new String[] {"--help"}, new String[] {"rendr", "x"}, new String[0])) {
+        for (String[] args : List.of(new String[] {"--help"}, new String[] {"rendr", "x"}, new String[0],
+                new String[] {"teapot"}, new String[] {"inf"}, new String[] {"Info"}, new String[] {"-V"})) {
             assertEquals(5, BezierTracerCommand.commandLine(args).getSubcommands().size(), String.join(" ", args));
         }
     }
@@ -49,6 +51,25 @@ class CommandTreeTest {
             assertEquals(run(BezierTracerCommand.commandLine(), args), run(BezierTracerCommand.commandLine(args), args),
                     String.join(" ", args));
         }
+    }
+
+    @Test
+    void topLevelHelpStillListsEveryCommand() {
+        Run r = Run.of("--help");
+        assertEquals(0, r.code(), r.err());
+        for (String name : BezierTracerCommand.COMMANDS.keySet()) {
+            assertTrue(r.out().matches("(?s).*\\n\\s+" + name + "\\s.*"), name + " missing from\n" + r.out());
+        }
+    }
+
+    @Test
+    void aSubCommandRunAloneKeepsItsQualifiedNameInHelpAndErrors() {
+        Run help = Run.of("info", "--help");
+        assertEquals(0, help.code(), help.err());
+        assertTrue(help.out().contains("Usage: beziertracer info "), help.out());
+        Run bad = Run.of("render", "teapot", "--spp", "x");
+        assertEquals(2, bad.code(), bad.err());
+        assertTrue(bad.err().startsWith("beziertracer render: "), bad.err());
     }
 
     private static String run(CommandLine cl, String[] args) {

@@ -35,7 +35,7 @@ class InfoCommandTest {
 
     @Test
     void infoPrintsTheBytesTheAccelerationDataHolds() {
-        Run r = run("info", "teapot");
+        Run r = run("info", "--accel", "teapot");
         assertEquals(0, r.code(), r.err());
         SceneIntersector si = SceneIntersector.build(Models.teapot(), IntersectOptions.defaults());
         long leaves = si.leafBytes(), nodes = si.accelBytes();
@@ -44,6 +44,27 @@ class InfoCommandTest {
         assertTrue(r.out().contains(expected), r.out());
         assertTrue(r.out().contains(String.format(java.util.Locale.ROOT, "%,d a patch): sub-patches %,d, BVH %,d\n",
                 (leaves + nodes) / 32, leaves, nodes)), r.out());
+    }
+
+    @Test
+    void withoutAccelInfoPrintsTheSummaryOnlyAndBuildsNothing() {
+        Run r = run("info", "teapot");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().endsWith("control-point bounds: x[-120,141] y[-80,80] z[0,120]\n"), r.out());
+        for (String absent : new String[] {"sub-patches:", "bvh:", "build:", "acceleration data:"}) {
+            assertTrue(!r.out().contains(absent), absent + " in " + r.out());
+        }
+    }
+
+    @Test
+    void accelAddsTheSplitAndBvhFiguresAfterTheSameSummary() {
+        Run plain = run("info", "teapot");
+        Run accel = run("info", "--accel", "teapot");
+        assertEquals(0, accel.code(), accel.err());
+        assertTrue(accel.out().startsWith(plain.out()), accel.out());
+        String tail = accel.out().substring(plain.out().length());
+        assertTrue(tail.matches("sub-patches: \\d+\nbvh: \\d+ nodes, depth \\d+\nbuild: [0-9.]+ ms \\(split \\+ BVH\\)\n"
+                + "acceleration data: [0-9,]+ bytes .*\n"), tail);
     }
 
     @Test
@@ -115,5 +136,6 @@ class InfoCommandTest {
         Run r = run("info", "--help");
         assertEquals(0, r.code());
         assertTrue(r.out().contains("MODEL"), r.out());
+        assertTrue(r.out().contains("--accel"), r.out());
     }
 }

@@ -39,7 +39,7 @@ class LimitsTest {
     @Test
     void aModelWhoseSubPatchesWouldNotFitIsRefusedInOneLine() throws Exception {
         Path big = LimitsFixtures.wavyModel(dir.resolve("big.bpt"), 80);
-        ChildJvm.Result r = beziertracer("32m", "info", big.getFileName().toString());
+        ChildJvm.Result r = beziertracer("32m", "info", "--accel", big.getFileName().toString());
         assertEquals(1, r.code(), r.err());
         String line = UserMessages.checkOneLineOutput(r.err());
         assertTrue(line.startsWith("beziertracer info: big.bpt: 80 patches need about "), line);

@@ -80,7 +80,7 @@ class MeshSceneTest {
         assertEquals(0, model.code(), model.err());
         assertTrue(model.out().contains("patches: 0"), model.out());
         assertTrue(model.out().contains("meshes: 1 mesh, 2 triangles"), model.out());
-        Run whole = Run.of("info", scene.toString());
+        Run whole = Run.of("info", "--accel", scene.toString());
         assertEquals(0, whole.code(), whole.err());
         assertTrue(whole.out().contains("meshes: 1 mesh, 2 triangles"), whole.out());
         assertTrue(whole.out().contains("bvh primitives: "), whole.out());

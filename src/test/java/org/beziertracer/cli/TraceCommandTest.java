@@ -157,8 +157,8 @@ class TraceCommandTest {
     }
 
     @Test
-    void infoNowReportsSubPatchesAndTheBvh() {
-        Run r = run("info", "teapot");
+    void infoAccelReportsSubPatchesAndTheBvh() {
+        Run r = run("info", "--accel", "teapot");
         assertTrue(r.out().matches("(?s).*sub-patches: \\d+\n.*bvh: \\d+ nodes, depth \\d+\n.*build: .* ms.*"), r.out());
     }
 }

@@ -15,7 +15,7 @@ package org.beziertracer.model.io;
 final class IgesParams {
 
     /** The record's text; field {@code k} is {@code text[from[k], to[k])}, trimmed (no copy until asked for). */
-    private final String text;
+    private final char[] text;
     private final int[] from, to;
     private final boolean[] hollerith;
     private final int size;
@@ -23,7 +23,7 @@ final class IgesParams {
     private final int line;
     private final String what;
 
-    private IgesParams(String text, int[] from, int[] to, boolean[] hollerith, int size, TextSource source, int line,
+    private IgesParams(char[] text, int[] from, int[] to, boolean[] hollerith, int size, TextSource source, int line,
                        String what) {
         this.text = text;
         this.from = from;
@@ -67,24 +67,34 @@ final class IgesParams {
      * @param what what the record is, for messages ({@code "entity 128 (directory line 7)"})
      */
     static IgesParams parse(String text, char delimiter, char end, TextSource source, int line, String what) {
-        Bounds fields = new Bounds(Math.max(16, text.length() / 6)); // an estimate: B-spline records take about 6 characters a field
-        int k = 0, n = text.length();
+        return parse(text.toCharArray(), text.length(), delimiter, end, source, line, what);
+    }
+
+    /**
+     * {@link #parse(String, char, char, TextSource, int, String)} of the first {@code n} characters
+     * of {@code text}, which the result keeps (the caller hands it over). Scanned as an array, not
+     * by {@code String.charAt}: a cold read runs this loop in the interpreter and C1, where a
+     * {@code charAt} is four calls a character.
+     */
+    static IgesParams parse(char[] text, int n, char delimiter, char end, TextSource source, int line, String what) {
+        Bounds fields = new Bounds(Math.max(16, n / 6)); // an estimate: B-spline records take about 6 characters a field
+        int k = 0;
         boolean ended = false;
         while (k <= n && !ended) {
             // skip blanks before a field
-            while (k < n && text.charAt(k) == ' ') {
+            while (k < n && text[k] == ' ') {
                 k++;
             }
             int start = k;
-            while (k < n && Character.isDigit(text.charAt(k))) {
+            while (k < n && (text[k] >= '0' && text[k] <= '9' || text[k] > 127 && Character.isDigit(text[k]))) {
                 k++;
             }
-            if (k > start && k < n && (text.charAt(k) == 'H' || text.charAt(k) == 'h')) {
+            if (k > start && k < n && (text[k] == 'H' || text[k] == 'h')) {
                 int count;
                 try {
-                    count = Integer.parseInt(text.substring(start, k));
+                    count = Integer.parseInt(new String(text, start, k - start));
                 } catch (NumberFormatException e) {
-                    throw source.error(line, what + ": a string length " + Echo.quote(text.substring(start, k))
+                    throw source.error(line, what + ": a string length " + Echo.quote(new String(text, start, k - start))
                             + " too large");
                 }
                 if (count > n - k - 1) {
@@ -92,19 +102,19 @@ final class IgesParams {
                 }
                 fields.add(k + 1, k + 1 + count, true);
                 k += 1 + count;
-                while (k < n && text.charAt(k) == ' ') {
+                while (k < n && text[k] == ' ') {
                     k++;
                 }
             } else {
                 k = start;
-                while (k < n && text.charAt(k) != delimiter && text.charAt(k) != end) {
+                while (k < n && text[k] != delimiter && text[k] != end) {
                     k++;
                 }
                 int a = start, b = k;
-                while (a < b && text.charAt(a) <= ' ') {
+                while (a < b && text[a] <= ' ') {
                     a++;
                 }
-                while (b > a && text.charAt(b - 1) <= ' ') {
+                while (b > a && text[b - 1] <= ' ') {
                     b--;
                 }
                 fields.add(a, b, false);
@@ -112,7 +122,7 @@ final class IgesParams {
             if (k >= n) {
                 throw source.error(line, what + ": the record does not end with " + Echo.quote(String.valueOf(end)));
             }
-            char c = text.charAt(k);
+            char c = text[k];
             if (c == end) {
                 ended = true;
             } else if (c != delimiter) {
@@ -142,14 +152,14 @@ final class IgesParams {
         int a = from[k], b = to[k];
         if (a < b && b - a <= 9) { // up to 9 characters: digits after an optional sign never overflow
             int i = a;
-            boolean negative = text.charAt(i) == '-';
-            if (negative || text.charAt(i) == '+') {
+            boolean negative = text[i] == '-';
+            if (negative || text[i] == '+') {
                 i++;
             }
             int v = 0;
             boolean digits = i < b;
             for (; i < b && digits; i++) {
-                char c = text.charAt(i);
+                char c = text[i];
                 digits = c >= '0' && c <= '9';
                 v = 10 * v + (c - '0');
             }
@@ -220,7 +230,7 @@ final class IgesParams {
 
     /** Field {@code k} as a string (a Hollerith string, or the bare text); empty when absent. */
     String string(int k) {
-        return k < size ? text.substring(from[k], to[k]) : "";
+        return k < size ? new String(text, from[k], to[k] - from[k]) : "";
     }
 
     /** Whether field {@code k} was written as a Hollerith string. */

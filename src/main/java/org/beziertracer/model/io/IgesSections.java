@@ -57,7 +57,9 @@ final class IgesSections {
             throw source.error(e.line, "entity " + e.type + " (directory line " + e.sequence
                     + "): its parameter data (line " + e.paramStart + " of the P section) is missing");
         }
-        IgesParams p = IgesParams.parse(text.toString(), delimiter, end, source, paramLine.get(e.sequence),
+        char[] chars = new char[text.length()];
+        text.getChars(0, chars.length, chars, 0);
+        IgesParams p = IgesParams.parse(chars, chars.length, delimiter, end, source, paramLine.get(e.sequence),
                 "entity " + e.type + " (directory line " + e.sequence + ")");
         if (p.integer(0) != e.type) {
             throw p.error("its parameter data starts with entity type " + p.string(0) + ", expected " + e.type);

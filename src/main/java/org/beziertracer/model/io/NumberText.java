@@ -154,6 +154,47 @@ final class NumberText {
         return Double.isFinite(v) ? v : Double.NaN;
     }
 
+    /** {@link #finiteOrNaN(String, int, int)} of the characters {@code [from, to)} of {@code s}. */
+    static double finiteOrNaN(char[] s, int from, int to) {
+        if (from >= to || !isDecimal(s, from, to)) {
+            return Double.NaN;
+        }
+        double v = JavaDoubleParser.parseDouble(s, from, to - from);
+        return Double.isFinite(v) ? v : Double.NaN;
+    }
+
+    /** {@link #isDecimal(String, int, int)} of a character array. */
+    static boolean isDecimal(char[] s, int from, int to) {
+        int i = from < to && (s[from] == '+' || s[from] == '-') ? from + 1 : from;
+        int whole = digits(s, i, to);
+        i += whole;
+        int fraction = 0;
+        if (i < to && s[i] == '.') {
+            fraction = digits(s, i + 1, to);
+            i += 1 + fraction;
+        }
+        if (whole == 0 && fraction == 0) {
+            return false;
+        }
+        if (i < to && (s[i] == 'e' || s[i] == 'E')) {
+            i = i + 1 < to && (s[i + 1] == '+' || s[i + 1] == '-') ? i + 2 : i + 1;
+            int exponent = digits(s, i, to);
+            if (exponent == 0) {
+                return false;
+            }
+            i += exponent;
+        }
+        return i == to;
+    }
+
+    private static int digits(char[] s, int i, int n) {
+        int j = i;
+        while (j < n && s[j] >= '0' && s[j] <= '9') {
+            j++;
+        }
+        return j - i;
+    }
+
     /** The value of a plain decimal token when it is finite, else NaN (the caller then reports why). */
     static double finiteOrNaN(String token) {
         return token == null ? Double.NaN : finiteOrNaN(token, 0, token.length());

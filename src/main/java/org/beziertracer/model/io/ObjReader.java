@@ -206,10 +206,15 @@ public final class ObjReader {
                     statement.append(content, 0, content.length() - 1).append(' ');
                     continue;
                 }
-                statement.append(content);
                 line = statementLine;
-                String s = statement.toString().strip();
-                statement.setLength(0);
+                String s;
+                if (statement.length() == 0) {
+                    s = content.strip(); // a statement of one line (nearly all): no copy through the builder
+                } else {
+                    statement.append(content);
+                    s = statement.toString().strip();
+                    statement.setLength(0);
+                }
                 if (!s.isEmpty() && !plainVertex(s)) {
                     statement(Fields.of(s));
                 }
@@ -292,22 +297,30 @@ public final class ObjReader {
          * line: most lines of a big model are such vertices. Returns false, having read nothing, for
          * anything else, which the general path then reads or reports.
          */
+        /** The characters of the statement {@link #plainVertex} scans (an array: no {@code charAt} call a character). */
+        private char[] vertexText = new char[128];
+
         private boolean plainVertex(String s) {
             int n = s.length();
             if (n < 7 || s.charAt(0) != 'v' || !Fields.separator(s.charAt(1)) || freeForm.skipping()
                     || vertices.count() >= limits.vertices()) {
                 return false;
             }
+            if (n > vertexText.length) {
+                vertexText = new char[Math.max(n, 2 * vertexText.length)];
+            }
+            char[] a = vertexText;
+            s.getChars(0, n, a, 0);
             int i = 1;
             for (int c = 0; c < 3; c++) {
-                while (i < n && Fields.separator(s.charAt(i))) {
+                while (i < n && Fields.separator(a[i])) {
                     i++;
                 }
                 int start = i;
-                while (i < n && !Fields.separator(s.charAt(i))) {
+                while (i < n && !Fields.separator(a[i])) {
                     i++;
                 }
-                xyz[c] = NumberText.finiteOrNaN(s, start, i);
+                xyz[c] = NumberText.finiteOrNaN(a, start, i);
                 if (Double.isNaN(xyz[c])) {
                     return false;
                 }

@@ -131,10 +131,39 @@ final class StepFile {
 
     // ---- characters
 
+    /** Characters taken from the source a buffer at a time: an array access a character, not a call chain. */
+    private final char[] buffer = new char[1 << 13];
+    private int at, end;
+    /** The line of the next character (lines end in LF, CRLF or a lone CR, as {@link TextSource} counts them). */
+    private int nextLine = 1;
+    private boolean afterCr;
+
     private void next() throws IOException {
-        c = source.read();
-        // TextSource counts lines (LF, CRLF or a lone CR); a line break belongs to the line it ends
-        line = c == '\n' || c == '\r' ? source.line() - 1 : source.line();
+        if (at == end) {
+            end = Math.max(0, source.read(buffer));
+            at = 0;
+        }
+        if (at < end) {
+            c = buffer[at++];
+            // a line break belongs to the line it ends
+            line = nextLine;
+            if (c == '\n') {
+                if (afterCr) {
+                    line = nextLine - 1; // the LF of a CRLF: the line the CR ended
+                } else {
+                    nextLine++;
+                }
+                afterCr = false;
+            } else if (c == '\r') {
+                nextLine++;
+                afterCr = true;
+            } else {
+                afterCr = false;
+            }
+        } else {
+            c = -1;
+            line = nextLine;
+        }
         if (++chars > maxChars) {
             throw source.error(0, "the file holds more than the " + (maxChars >> 20) + " MB a STEP file may hold");
         }
@@ -172,6 +201,15 @@ final class StepFile {
         return source.error(line, "expected " + expected + ", found " + found);
     }
 
+    /** {@link #expect(char, String)} whose message names the entity {@code #id}: no text made unless it fails. */
+    private void expect(char ch, String before, int id) throws IOException {
+        skipSpace();
+        if (c != ch) {
+            throw unexpected("'" + ch + "'" + before + id);
+        }
+        next();
+    }
+
     private void expect(char ch, String where) throws IOException {
         skipSpace();
         if (c != ch) {
@@ -183,7 +221,7 @@ final class StepFile {
     /** A keyword (entity or section name, letters, digits, '_' and '-'), upper case as written. */
     /** The names read so far, each once, as the JVM's interned strings (the types' literals in the code are the same objects). */
     private final Map<String, String> names = new HashMap<>();
-    private final StringBuilder keywordText = new StringBuilder(32);
+    private char[] keywordText = new char[64];
 
     /**
      * A name; one string object per distinct name, the interned one, so entities share their
@@ -191,16 +229,20 @@ final class StepFile {
      */
     private String keyword() throws IOException {
         skipSpace();
-        StringBuilder sb = keywordText;
-        sb.setLength(0);
-        while (Character.isLetterOrDigit(c) || c == '_' || c == '-') {
-            sb.append((char) c);
-            if (sb.length() > maxToken) {
+        char[] text = keywordText;
+        int n = 0;
+        while ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || (c >= 'a' && c <= 'z')
+                || (c > 127 && Character.isLetterOrDigit(c))) {
+            if (n == maxToken) {
                 throw source.error(line, "a name longer than " + maxToken + " characters");
             }
+            if (n == text.length) {
+                text = keywordText = java.util.Arrays.copyOf(text, Math.min(2 * n, maxToken));
+            }
+            text[n++] = (char) c;
             next();
         }
-        String name = sb.toString();
+        String name = new String(text, 0, n);
         String known = names.get(name);
         if (known == null) {
             known = names.size() < 100_000 ? name.intern() : name; // a file of endless made-up names interns no more
@@ -283,7 +325,7 @@ final class StepFile {
             int at = line;
             next();
             int id = number();
-            expect('=', " after #" + id);
+            expect('=', " after #", id);
             skipSpace();
             List<Part> parts = new ArrayList<>(1);
             if (c == '(') {
@@ -310,7 +352,7 @@ final class StepFile {
                 }
                 parts.add(new Part(type, params(at, 0)));
             }
-            expect(';', " after the entity #" + id);
+            expect(';', " after the entity #", id);
             Entity e = new Entity(id, at, List.copyOf(parts));
             if (entities.putIfAbsent(id, e) != null) {
                 throw source.error(at, "#" + id + " is defined twice (first on line " + entities.get(id).line() + ")");
@@ -419,7 +461,7 @@ final class StepFile {
     }
 
     /** The characters of the number being read (one buffer for the whole file). */
-    private final StringBuilder numberText = new StringBuilder(32);
+    private final char[] numberText = new char[65];
 
     /**
      * A number: a whole one as a {@code Long}, digit by digit; a real by FastDoubleParser on the
@@ -427,28 +469,28 @@ final class StepFile {
      * gigabyte per second").
      */
     private Object numberValue() throws IOException {
-        StringBuilder sb = numberText;
-        sb.setLength(0);
+        char[] text = numberText;
+        int n = 0;
         boolean real = false;
         while ((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'E' || c == 'e') {
             real |= c == '.' || c == 'E' || c == 'e';
-            sb.append((char) c);
-            if (sb.length() > 64) {
+            if (n == 64) {
                 throw source.error(line, "a number longer than 64 characters");
             }
+            text[n++] = (char) c;
             next();
         }
         try {
             if (!real) {
-                return NumberText.whole(sb);
+                return NumberText.whole(java.nio.CharBuffer.wrap(text, 0, n));
             }
-            double v = JavaDoubleParser.parseDouble(sb);
+            double v = JavaDoubleParser.parseDouble(text, 0, n);
             if (!Double.isFinite(v)) {
-                throw source.error(line, "the number " + Echo.quote(sb.toString()) + " is too large");
+                throw source.error(line, "the number " + Echo.quote(new String(text, 0, n)) + " is too large");
             }
             return v;
         } catch (NumberFormatException e) {
-            throw source.error(line, "expected a number, found " + Echo.quote(sb.toString()));
+            throw source.error(line, "expected a number, found " + Echo.quote(new String(text, 0, n)));
         }
     }
 

@@ -106,6 +106,34 @@ public final class TextSource {
         return c;
     }
 
+    /**
+     * The next characters into {@code dst}, as many as are decoded and fit (at least one), or -1
+     * at the end: what as many {@link #read()} calls would give, lines counted alike, without a
+     * call a character (the STEP tokenizer scans them as an array).
+     */
+    public int read(char[] dst) throws IOException {
+        if (!chars.hasRemaining() && !fill()) {
+            return -1;
+        }
+        int n = Math.min(dst.length, chars.remaining());
+        chars.get(dst, 0, n);
+        for (int k = 0; k < n; k++) {
+            char c = dst[k];
+            if (c == '\n') {
+                if (!afterCr) {
+                    line++;
+                }
+                afterCr = false;
+            } else if (c == '\r') {
+                line++;
+                afterCr = true;
+            } else {
+                afterCr = false;
+            }
+        }
+        return n;
+    }
+
     /** 1-based line of the next character {@link #read()} returns (the line just started after a line end). */
     public int line() {
         return line;

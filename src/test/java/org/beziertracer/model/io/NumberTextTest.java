@@ -72,4 +72,27 @@ class NumberTextTest {
         assertEquals(true, Double.isNaN(NumberText.finiteOrNaN("v 1.5x", 2, 6)));
         assertEquals(true, Double.isNaN(NumberText.finiteOrNaN("v ", 2, 2)));
     }
+
+    @Test
+    void theCharArrayFormAgreesWithTheStringFormOnDecimalsAndNearMisses() {
+        Random rnd = new Random(35);
+        String alphabet = "0123456789+-.eEdDx ";
+        for (int n = 0; n < 200_000; n++) {
+            StringBuilder sb = new StringBuilder();
+            if (rnd.nextBoolean()) { // a likely decimal
+                sb.append(rnd.nextBoolean() ? "-" : "").append(rnd.nextInt(1000)).append('.').append(rnd.nextInt(1_000_000));
+                if (rnd.nextInt(3) == 0) {
+                    sb.append(rnd.nextBoolean() ? 'e' : 'E').append(rnd.nextInt(3) == 0 ? "+" : "").append(rnd.nextInt(400) - 200);
+                }
+            }
+            for (int k = rnd.nextInt(3); k > 0; k--) { // and perhaps a stray character anywhere
+                sb.insert(rnd.nextInt(sb.length() + 1), alphabet.charAt(rnd.nextInt(alphabet.length())));
+            }
+            String text = "#" + sb + "#";
+            int from = 1, to = 1 + sb.length();
+            double a = NumberText.finiteOrNaN(text, from, to), b = NumberText.finiteOrNaN(text.toCharArray(), from, to);
+            assertEquals(NumberText.isDecimal(text, from, to), NumberText.isDecimal(text.toCharArray(), from, to), text);
+            assertEquals(Double.doubleToRawLongBits(a), Double.doubleToRawLongBits(b), text);
+        }
+    }
 }

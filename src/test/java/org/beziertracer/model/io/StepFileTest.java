@@ -95,6 +95,33 @@ class StepFileTest {
         assertEquals(10, f.entities.get(3).line());
     }
 
+    @Test
+    void linesAreCountedAcrossManyBuffersOfMixedLineEnds() throws IOException {
+        java.util.Random rnd = new java.util.Random(35);
+        String[] ends = {"\n", "\r\n", "\r"};
+        StringBuilder data = new StringBuilder();
+        int line = 7; // HEAD is 6 lines
+        int[] expected = new int[5001];
+        for (int id = 1; id <= 5000; id++) {
+            expected[id] = line;
+            data.append("#").append(id).append("=P(").append(rnd.nextDouble()).append(',');
+            String end = ends[rnd.nextInt(3)]; // a line break inside the parameters
+            data.append(end).append(id).append(");").append(end);
+            line += 2;
+            for (int k = rnd.nextInt(3); k > 0; k--) { // blank lines (never an LF after a lone CR: that is one CRLF)
+                data.append(ends[1 + rnd.nextInt(2)]);
+                line++;
+            }
+        }
+        StepFile f = StepFile.read(TextSource.of(HEAD + data + TAIL, "part.stp"));
+        for (int id = 1; id <= 5000; id++) {
+            assertEquals(expected[id], f.entities.get(id).line(), "#" + id);
+        }
+        String bad = HEAD + data + "#5001=P(1.,\r\n2.);\r\n#5002=P(.T);\n" + TAIL;
+        assertEquals("part.stp:" + (line + 2) + ": expected an enumeration .NAME., found \")\"",
+                UserMessages.of(ModelFormatException.class, () -> StepFile.read(TextSource.of(bad, "part.stp"))));
+    }
+
     private static String error(String data) {
         return UserMessages.of(ModelFormatException.class, () -> read(data));
     }

@@ -2,6 +2,7 @@ package org.beziertracer.model.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -105,5 +106,32 @@ class TextSourceTest {
         assertEquals("t.obj:2: line longer than 4 characters, the most a line may hold",
                 UserMessages.of(ModelFormatException.class, s::readLine));
         assertNull(source(new byte[0]).readLine());
+    }
+
+    @Test
+    void readingIntoAnArrayGivesTheCharactersAndLinesOfReadingOneByOne() throws java.io.IOException {
+        java.util.Random rnd = new java.util.Random(35);
+        String alphabet = "ab\r\n\u00e9\u20ac ";
+        for (int round = 0; round < 200; round++) {
+            StringBuilder sb = new StringBuilder(rnd.nextBoolean() ? "\uFEFF" : "");
+            for (int k = rnd.nextInt(40_000); k > 0; k--) {
+                sb.append(alphabet.charAt(rnd.nextInt(alphabet.length())));
+            }
+            TextSource one = TextSource.of(sb.toString(), "t.txt"), many = TextSource.of(sb.toString(), "t.txt");
+            char[] buffer = new char[1 + rnd.nextInt(20_000)];
+            StringBuilder byOne = new StringBuilder(), byMany = new StringBuilder();
+            List<Integer> lineAfter = new ArrayList<>();
+            for (int c = one.read(); c >= 0; c = one.read()) {
+                byOne.append((char) c);
+                lineAfter.add(one.line());
+            }
+            for (int n = many.read(buffer); n >= 0; n = many.read(buffer)) {
+                assertTrue(n > 0, "an empty read before the end");
+                byMany.append(buffer, 0, n);
+                assertEquals(lineAfter.get(byMany.length() - 1), many.line(), "round " + round + ", after " + byMany.length());
+            }
+            assertEquals(byOne.toString(), byMany.toString(), "round " + round);
+            assertEquals(one.line(), many.line(), "round " + round);
+        }
     }
 }

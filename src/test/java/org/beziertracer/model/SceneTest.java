@@ -1,0 +1,35 @@
+package org.beziertracer.model;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.beziertracer.math.Aabb;
+import org.junit.jupiter.api.Test;
+
+class SceneTest {
+
+    @Test
+    void controlBoundsAreTheUnionOfThePatchBoxesComputedOnce() {
+        Random rnd = new Random(35);
+        List<BezierPatch> patches = new ArrayList<>();
+        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
+        double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (int k = 0; k < 50; k++) {
+            double[] net = new double[3 * 16];
+            for (int i = 0; i < net.length; i++) {
+                net[i] = (rnd.nextDouble() - 0.5) * 1000;
+                lo[i % 3] = Math.min(lo[i % 3], net[i]);
+                hi[i % 3] = Math.max(hi[i % 3], net[i]);
+            }
+            patches.add(new BezierPatch(3, 3, net));
+        }
+        Scene scene = Scene.builder().patches(patches).build();
+        Aabb box = scene.controlBounds();
+        assertEquals(new Aabb(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), box);
+        assertSame(box, scene.controlBounds(), "the second call computes the box again");
+    }
+}
