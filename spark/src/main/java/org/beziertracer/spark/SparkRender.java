@@ -26,13 +26,14 @@ import org.beziertracer.render.Failures;
  * {@code tiles done / total} with an ETA ({@link TileProgress}) and one line per executor (its kernel), then
  * assembles the frames in parallel, one Spark task each, into each frame's PNG and
  * {@code .pfm} ({@link FrameAssembler}). Without a master (no {@code --master}, no {@code spark.master}
- * from {@code spark-submit}) it runs on an embedded {@code local[*]} master.
+ * from {@code spark-submit}) it runs on an embedded {@code local[*]} master, without Spark's web UI unless
+ * {@code --ui} ({@link #configure}).
  */
 public final class SparkRender {
     private SparkRender() {}
 
     static final String PREFIX = "beziertracer spark: ";
-    static final String USAGE = "usage: JOB.json OUT_URI [--tiles N] [--frames A-B] [--master URL]";
+    static final String USAGE = "usage: JOB.json OUT_URI [--tiles N] [--frames A-B] [--master URL] [--ui]";
     /** Test hook: a file whose deletion makes one tile task fail once ({@link RenderTile}). */
     static final String FAIL_ONCE_KEY = "spark.beziertracer.failOnceFile";
     /** Tiles per frame unless {@code --tiles}: at most this, at most the image height. */
@@ -83,23 +84,39 @@ public final class SparkRender {
             err.println(PREFIX + Failures.describe(e));
             return 1;
         }
-        SparkConf conf = new SparkConf().setAppName("beziertracer " + jobName(a.job()));
-        if (a.master() != null) {
-            conf.setMaster(a.master());
-        } else if (!conf.contains("spark.master")) {
-            conf.setMaster("local[*]");
-        }
-        if (conf.get("spark.master").startsWith("local")) {
-            // an embedded master needs no network: the driver listens on the loopback address only
-            conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1")
-                    .setIfMissing("spark.log.level", "WARN");
-        }
+        SparkConf conf = configure(new SparkConf().setAppName("beziertracer " + jobName(a.job())), a.master(), a.ui());
         try (JavaSparkContext sc = new JavaSparkContext(conf)) {
+            if (sc.sc().uiWebUrl().isDefined()) {
+                out.println("Spark UI at " + sc.sc().uiWebUrl().get());
+            }
             return render(sc, source, doc, folder, a.output(), jobName(a.job()), tiles, out);
         } catch (Exception e) { // Spark's SparkException (a failed stage) is checked but thrown undeclared
             err.println(PREFIX + failure(e));
             return 1;
         }
+    }
+
+    /**
+     * The Spark configuration of a run: {@code --master} (else {@code spark.master} as {@code spark-submit} or a
+     * system property set it, else {@code local[*]}). An embedded master ({@code local…}, {@code local-cluster…})
+     * needs no network, so the driver listens on the loopback address only, logs warnings only and starts no
+     * web UI (about 2 CPU-s of start-up, docs/spark.md) unless {@code --ui} or {@code spark.ui.enabled} asks for
+     * it; each of these stays as the user set it. Any other master keeps Spark's defaults (the UI on).
+     */
+    static SparkConf configure(SparkConf conf, String master, boolean ui) {
+        if (master != null) {
+            conf.setMaster(master);
+        } else if (!conf.contains("spark.master")) {
+            conf.setMaster("local[*]");
+        }
+        if (ui) {
+            conf.set("spark.ui.enabled", "true");
+        }
+        if (conf.get("spark.master").startsWith("local")) {
+            conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1")
+                    .setIfMissing("spark.log.level", "WARN").setIfMissing("spark.ui.enabled", "false");
+        }
+        return conf;
     }
 
     /** One line for a failed run: our own messages as the CLI gives them, Spark's first line otherwise. */
@@ -180,14 +197,17 @@ public final class SparkRender {
     }
 
     /** The command line. */
-    record Arguments(String job, String output, Integer tiles, String frames, String master) {
+    record Arguments(String job, String output, Integer tiles, String frames, String master, boolean ui) {
         static Arguments parse(String[] args) {
             List<String> positional = new ArrayList<>();
             Integer tiles = null;
             String frames = null, master = null;
+            boolean ui = false;
             for (int k = 0; k < args.length; k++) {
                 String arg = args[k];
-                if (arg.equals("--tiles") || arg.equals("--frames") || arg.equals("--master")) {
+                if (arg.equals("--ui")) {
+                    ui = true;
+                } else if (arg.equals("--tiles") || arg.equals("--frames") || arg.equals("--master")) {
                     if (k + 1 >= args.length) {
                         throw new IllegalArgumentException(arg + " needs a value");
                     }
@@ -213,7 +233,7 @@ public final class SparkRender {
                 throw new IllegalArgumentException("expected JOB.json and OUT_URI, got " + positional.size()
                         + " arguments");
             }
-            return new Arguments(positional.get(0), outputUri(positional.get(1)), tiles, frames, master);
+            return new Arguments(positional.get(0), outputUri(positional.get(1)), tiles, frames, master, ui);
         }
 
         /** A URI with a scheme as it is; a plain path as a {@code file:} URI of its absolute form. */

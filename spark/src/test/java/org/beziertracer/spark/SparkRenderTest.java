@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
 
+import org.apache.spark.SparkConf;
 import org.beziertracer.intersect.Method;
 import org.beziertracer.model.io.JobFiles;
 import org.beziertracer.render.FrameSink;
@@ -50,6 +51,7 @@ class SparkRenderTest {
         assertEquals(2, FrameAssembler.assembledCount() - assembledBefore, "the one executor (this JVM) assembled both frames");
         SparkJobs.assertExecutorsUseThisJvmsKernel(r.out());
         assertTrue(r.out().contains("executor driver: kernel "), r.out());
+        assertFalse(r.out().contains("Spark UI at"), "an embedded master starts no web UI by default: " + r.out());
         assertSameFrames(dir, out, "local[2]");
         JobFrames one = JobFrames.of(JobFiles.load(job, Method::parse), 1, "spin.json");
         try (RenderSession session = new RenderSession(1, FrameSink.NONE)) {
@@ -75,12 +77,14 @@ class SparkRenderTest {
         System.setProperty(SparkRender.FAIL_ONCE_KEY, flag.toString());
         SparkJobs.Result r;
         try {
-            r = SparkJobs.run(job.toString(), dir.resolve("out").toString(), "--tiles", "4", "--master", "local[2,2]");
+            r = SparkJobs.run(job.toString(), dir.resolve("out").toString(), "--tiles", "4", "--master", "local[2,2]",
+                    "--ui");
         } finally {
             System.clearProperty(SparkRender.FAIL_ONCE_KEY);
         }
         assertEquals(0, r.code(), r.err());
         assertFalse(Files.exists(flag), "the injected failure happened");
+        assertTrue(r.out().matches("(?s)Spark UI at http://[^\\s]+:\\d+\n.*"), "--ui starts the web UI: " + r.out());
         assertTrue(r.out().contains("a tile task failed (Spark retries it up to spark.task.maxFailures): "
                 + "java.lang.IllegalStateException: injected failure (test hook) in tile TileTask["), r.out());
         assertSameFrames(dir, dir.resolve("out"), "after a retry");
@@ -128,6 +132,29 @@ class SparkRenderTest {
             assertEquals(3, fresh, "exactly the missing tiles were written");
         }
         assertSameFrames(dir, out, "resumed");
+    }
+
+    @Test
+    void anEmbeddedMasterStartsNoWebUiUnlessAskedForAndOtherMastersKeepSparksDefaults() {
+        SparkConf local = SparkRender.configure(new SparkConf(false), "local[2]", false);
+        assertEquals("false", local.get("spark.ui.enabled"));
+        assertEquals("127.0.0.1", local.get("spark.driver.bindAddress"));
+        assertEquals("WARN", local.get("spark.log.level"));
+        assertEquals("false", SparkRender.configure(new SparkConf(false), "local-cluster[2,1,1024]", false)
+                .get("spark.ui.enabled"));
+        assertEquals("local[*]", SparkRender.configure(new SparkConf(false), null, false).get("spark.master"));
+        assertEquals("true", SparkRender.configure(new SparkConf(false), "local[2]", true).get("spark.ui.enabled"),
+                "--ui");
+        assertEquals("true", SparkRender.configure(new SparkConf(false).set("spark.ui.enabled", "true"), "local[2]",
+                false).get("spark.ui.enabled"), "the user's spark.ui.enabled stays");
+        assertEquals("ERROR", SparkRender.configure(new SparkConf(false).set("spark.log.level", "ERROR"), null, false)
+                .get("spark.log.level"), "the user's log level stays");
+        SparkConf submitted = SparkRender.configure(new SparkConf(false).setMaster("spark://farm:7077"), null, false);
+        assertEquals("spark://farm:7077", submitted.get("spark.master"));
+        assertFalse(submitted.contains("spark.ui.enabled"), "a cluster keeps Spark's default UI");
+        assertFalse(submitted.contains("spark.driver.bindAddress"));
+        assertTrue(SparkRender.Arguments.parse(new String[] {"j.json", "out", "--ui"}).ui());
+        assertFalse(SparkRender.Arguments.parse(new String[] {"j.json", "out"}).ui());
     }
 
     /** A tile file (not Hadoop's checksum beside it). */
