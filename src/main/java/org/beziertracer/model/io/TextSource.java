@@ -92,6 +92,12 @@ public final class TextSource {
             return -1;
         }
         char c = chars.get();
+        count(c);
+        return c;
+    }
+
+    /** Counts a line at each LF, CR or CR LF. */
+    private void count(char c) {
         if (c == '\n') {
             if (!afterCr) {
                 line++;
@@ -103,7 +109,6 @@ public final class TextSource {
         } else {
             afterCr = false;
         }
-        return c;
     }
 
     /**
@@ -118,18 +123,7 @@ public final class TextSource {
         int n = Math.min(dst.length, chars.remaining());
         chars.get(dst, 0, n);
         for (int k = 0; k < n; k++) {
-            char c = dst[k];
-            if (c == '\n') {
-                if (!afterCr) {
-                    line++;
-                }
-                afterCr = false;
-            } else if (c == '\r') {
-                line++;
-                afterCr = true;
-            } else {
-                afterCr = false;
-            }
+            count(dst[k]);
         }
         return n;
     }
