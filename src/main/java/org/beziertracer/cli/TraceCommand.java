@@ -180,7 +180,7 @@ final class TraceCommand implements Callable<Integer> {
                     return; // the reader left (| head): stop quietly, as Unix tools do
                 }
                 String failed = StandardOutput.failure(spec.commandLine().getOut());
-                if (failed != null) { // stop early: a closed pipe or a full disk takes no more
+                if (failed != null) { // stop early: a full disk takes no more
                     throw new IOException(failed);
                 }
             }

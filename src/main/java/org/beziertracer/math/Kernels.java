@@ -24,9 +24,9 @@ public final class Kernels {
      * core's time once (the uncompiled Vector API calls and their C2 compilation: a 240×180 path-traced
      * render took 3.3 s of CPU with the scalar kernel and 4.3 s with the warm-up at the first call,
      * on a 2-core EPYC); running the scalar kernel instead makes frames 5–25 % longer
-     * ({@code FrameBench}), at most about 0.4 core-seconds a second on 2 cores. Buying when the rent paid reaches the price (about 2 s) never
-     * costs more than twice the best choice made in hindsight, and a one-shot render shorter than
-     * that pays nothing.
+     * ({@code FrameBench}), at most about 0.4 core-seconds a second on 2 cores. Buying when the
+     * rent paid reaches the price (about 2 s) never costs more than twice the best choice made in
+     * hindsight, and a one-shot render shorter than that pays nothing.
      */
     private static final long WARM_UP_DELAY_NANOS = 2_000_000_000L;
     private static final LaneKernel AUTO = VECTOR != null
