@@ -60,6 +60,17 @@ public final class BezierPatch {
      *                                  and finite
      */
     public BezierPatch(int n, int m, double[] net, double[] weights, PatchDomain domain, PatchOrigin origin) {
+        this(n, m, net, weights, domain, origin, false);
+    }
+
+    /**
+     * The public constructor's patch; with {@code adopt} the net is kept, not copied: for nets made
+     * in this package that nothing else holds or changes (a free-form surface's pieces, or the
+     * surface's own immutable points when it is one piece), which saves a copy a patch on models
+     * of a million patches.
+     */
+    BezierPatch(int n, int m, double[] net, double[] weights, PatchDomain domain, PatchOrigin origin,
+                boolean adopt) {
         checkDegree("u", n);
         checkDegree("v", m);
         if (net == null) {
@@ -82,8 +93,8 @@ public final class BezierPatch {
         }
         this.n = n;
         this.m = m;
-        this.net = net.clone();
-        this.weights = weights == null || allOnes(weights) ? null : weights.clone();
+        this.net = adopt ? net : net.clone();
+        this.weights = weights == null || allOnes(weights) ? null : adopt ? weights : weights.clone();
         this.domain = domain == null || domain.isUnit() ? null : domain;
         this.origin = origin;
     }
@@ -93,8 +104,14 @@ public final class BezierPatch {
      * points {@code (w·x, w·y, w·z, w)} (divided out here).
      */
     public static BezierPatch fromNet(int n, int m, double[] net, int dim, PatchDomain domain, PatchOrigin origin) {
+        return fromNet(n, m, net, dim, domain, origin, false);
+    }
+
+    /** {@link #fromNet}; with {@code adopt}, a net of {@code dim = 3} is kept, not copied (the adopting constructor). */
+    static BezierPatch fromNet(int n, int m, double[] net, int dim, PatchDomain domain, PatchOrigin origin,
+                               boolean adopt) {
         if (dim == 3) {
-            return new BezierPatch(n, m, net, null, domain, origin);
+            return new BezierPatch(n, m, net, null, domain, origin, adopt);
         }
         int count = net.length / 4;
         double[] xyz = new double[3 * count], w = new double[count];
@@ -104,7 +121,7 @@ public final class BezierPatch {
             xyz[3 * k + 1] = net[4 * k + 1] / w[k];
             xyz[3 * k + 2] = net[4 * k + 2] / w[k];
         }
-        return new BezierPatch(n, m, xyz, w, domain, origin);
+        return new BezierPatch(n, m, xyz, w, domain, origin, true); // xyz and w are made here
     }
 
     /**

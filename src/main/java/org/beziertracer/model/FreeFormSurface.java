@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Objects;
 
 import org.beziertracer.math.BezierDecomposition;
-import org.beziertracer.math.KnotVector;
 
 /**
  * An immutable free-form surface as a file describes it (an OBJ {@code surf}): Bézier or
@@ -52,9 +51,8 @@ public final class FreeFormSurface {
         if (weights != null) {
             BezierPatch.checkWeights(weights, countU * countV);
         }
-        double[] kU = basis.knotVector(degreeU, parmU), kV = basis.knotVector(degreeV, parmV);
-        checkRange("u", range[0], range[1], KnotVector.start(degreeU, kU), KnotVector.end(degreeU, kU));
-        checkRange("v", range[2], range[3], KnotVector.start(degreeV, kV), KnotVector.end(degreeV, kV));
+        checkRange("u", range[0], range[1], basis.start(degreeU, parmU), basis.end(degreeU, parmU));
+        checkRange("v", range[2], range[3], basis.start(degreeV, parmV), basis.end(degreeV, parmV));
         this.basis = basis;
         this.degreeU = degreeU;
         this.degreeV = degreeV;
@@ -113,10 +111,14 @@ public final class FreeFormSurface {
 
     /** How many Bézier pieces {@link #toPatches()} makes (the knot spans in the range), without making them. */
     public long pieceCount() {
-        return (long) spans(basis.knotVector(degreeU, parmU), range[0], range[1])
-                * spans(basis.knotVector(degreeV, parmV), range[2], range[3]);
+        return (long) spans(parmU, range[0], range[1]) * spans(parmV, range[2], range[3]);
     }
 
+    /**
+     * The knot spans of {@code knots} in {@code (from, to)}: 1 + the distinct values strictly
+     * between. The parameter values as given count the same as their knot vector (which only
+     * repeats them).
+     */
     private static int spans(double[] knots, double from, double to) {
         int count = 1;
         double last = from;
@@ -135,6 +137,14 @@ public final class FreeFormSurface {
      * whose weights all come out as exactly 1 is polynomial.
      */
     public List<BezierPatch> toPatches() {
+        if (weights == null && basis == SplineBasis.BEZIER && parmU.length == 2 && parmV.length == 2
+                && range[0] == parmU[0] && range[1] == parmU[1] && range[2] == parmV[0] && range[3] == parmV[1]) {
+            // one polynomial Bézier net over the whole range (most surfaces of big models): the
+            // points themselves, shared with the patch (both immutable), as the decomposition
+            // would leave them
+            PatchDomain domain = new PatchDomain(range[0], range[1], range[2], range[3], trim);
+            return List.of(new BezierPatch(degreeU, degreeV, points, null, domain, new PatchOrigin(this, 0, 1), true));
+        }
         int dim = weights == null ? 3 : 4;
         double[] pts = points;
         if (weights != null) {
@@ -157,7 +167,7 @@ public final class FreeFormSurface {
             int a = k % pieces.countU(), b = k / pieces.countU();
             PatchDomain domain = new PatchDomain(bu[a], bu[a + 1], bv[b], bv[b + 1], trim);
             out.add(BezierPatch.fromNet(degreeU, degreeV, pieces.nets()[k], dim, domain,
-                    new PatchOrigin(this, k, total)));
+                    new PatchOrigin(this, k, total), true)); // the nets are the decomposition's own
         }
         return out;
     }

@@ -47,6 +47,16 @@ public enum SplineBasis {
         return null;
     }
 
+    /** The start of the parameter range these values give: {@link KnotVector#start} of {@link #knotVector}, without making it. */
+    public double start(int degree, double[] parm) {
+        return this == BSPLINE ? KnotVector.start(degree, parm) : parm[0];
+    }
+
+    /** The end of the parameter range these values give: {@link KnotVector#end} of {@link #knotVector}, without making it. */
+    public double end(int degree, double[] parm) {
+        return this == BSPLINE ? KnotVector.end(degree, parm) : parm[parm.length - 1];
+    }
+
     /** The B-spline knot vector of these parameter values (a copy for {@link #BSPLINE}). */
     public double[] knotVector(int degree, double[] parm) {
         if (this == BSPLINE) {

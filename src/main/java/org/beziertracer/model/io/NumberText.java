@@ -195,6 +195,26 @@ final class NumberText {
         return j - i;
     }
 
+    /**
+     * The whole number {@code [+-]?\d{1,18}} that is {@code s[from..to)}, else
+     * {@link Long#MIN_VALUE} (which no index resolves to): an OBJ index read in place.
+     */
+    static long wholeOrMin(char[] s, int from, int to) {
+        int i = from < to && (s[from] == '+' || s[from] == '-') ? from + 1 : from;
+        if (i == to || to - i > 18) {
+            return Long.MIN_VALUE;
+        }
+        long v = 0;
+        for (int k = i; k < to; k++) {
+            char d = s[k];
+            if (d < '0' || d > '9') {
+                return Long.MIN_VALUE;
+            }
+            v = 10 * v + (d - '0');
+        }
+        return s[from] == '-' ? -v : v;
+    }
+
     /** The value of a plain decimal token when it is finite, else NaN (the caller then reports why). */
     static double finiteOrNaN(String token) {
         return token == null ? Double.NaN : finiteOrNaN(token, 0, token.length());

@@ -1,6 +1,5 @@
 package org.beziertracer.model.io;
 
-import org.beziertracer.math.KnotVector;
 import org.beziertracer.model.FreeFormSurface;
 import org.beziertracer.model.SplineBasis;
 import org.beziertracer.model.TrimCurve;
@@ -64,8 +63,8 @@ final class ObjBlocks {
         }
         check(b, b.basis.problem(n, pu, (int) countU), "u", b.parmULine, file);
         check(b, b.basis.problem(m, pv, (int) countV), "v", b.parmVLine, file);
-        checkRange(b, "u", b.range[0], b.range[1], b.basis.knotVector(n, pu), n, file);
-        checkRange(b, "v", b.range[2], b.range[3], b.basis.knotVector(m, pv), m, file);
+        checkRange(b, "u", b.range[0], b.range[1], b.basis.start(n, pu), b.basis.end(n, pu), file);
+        checkRange(b, "v", b.range[2], b.range[3], b.basis.start(m, pv), b.basis.end(m, pv), file);
         int count = b.refs.length;
         double[] points = new double[3 * count];
         double[] weights = b.rational ? new double[count] : null;
@@ -100,9 +99,8 @@ final class ObjBlocks {
         }
     }
 
-    private static void checkRange(ObjFreeForm.Block b, String direction, double lo, double hi, double[] knots,
-                                   int degree, String file) {
-        double start = KnotVector.start(degree, knots), end = KnotVector.end(degree, knots);
+    private static void checkRange(ObjFreeForm.Block b, String direction, double lo, double hi, double start,
+                                   double end, String file) {
         if (!(lo < hi && lo >= start && hi <= end)) {
             throw new ModelFormatException(file, b.line, "expected the surf range " + direction + "["
                     + NumberText.format(lo) + "," + NumberText.format(hi) + "] inside the parameter range ["

@@ -195,6 +195,42 @@ final class ObjFreeForm {
         block = b;
     }
 
+    /**
+     * {@link #surf} of a statement in place — {@code a[start[k]..end[k])} for its {@code fields}
+     * fields, the first {@code surf} — when every check passes and every index is a plain whole
+     * number ({@code [+-]?\d{1,18}}, no {@code v/vt} form): the same block as the string path
+     * makes. Otherwise false, having changed nothing: the caller then takes the string path, which
+     * reads the other forms or reports the problem.
+     */
+    boolean plainSurf(char[] a, int[] start, int[] end, int fields, int lineNumber) {
+        if (skipping() || block != null || basis == null || degreeU == 0 || degreeV == 0 || fields < 6) {
+            return false;
+        }
+        double s0 = NumberText.finiteOrNaN(a, start[1], end[1]), s1 = NumberText.finiteOrNaN(a, start[2], end[2]);
+        double t0 = NumberText.finiteOrNaN(a, start[3], end[3]), t1 = NumberText.finiteOrNaN(a, start[4], end[4]);
+        if (Double.isNaN(s0) || Double.isNaN(s1) || Double.isNaN(t0) || Double.isNaN(t1)) {
+            return false;
+        }
+        int defined = vertices.count();
+        int[] refs = new int[fields - 5];
+        for (int k = 0; k < refs.length; k++) {
+            int index = ObjVertices.resolve(NumberText.wholeOrMin(a, start[k + 5], end[k + 5]), defined);
+            if (index < 0) {
+                return false;
+            }
+            refs[k] = index;
+        }
+        line = lineNumber;
+        Block b = new Block("surf", line, basis, rational, degreeU, degreeV);
+        b.range[0] = s0;
+        b.range[1] = s1;
+        b.range[2] = t0;
+        b.range[3] = t1;
+        b.refs = refs;
+        block = b;
+        return true;
+    }
+
     private void curv2(String[] t) {
         openBlock("curv2");
         // a curve needs only the first degree: after deg n m it is of degree n (the spec reads on)

@@ -121,7 +121,23 @@ public final class ObjReader {
      */
     public static Model readModel(TextSource text, Path baseDir) throws IOException {
         HeapEstimates.requireObj(text); // a file too big for the heap is refused before parsing
-        return new Parser(text, baseDir).parse();
+        return new Parser(text, baseDir, true).parse();
+    }
+
+    /**
+     * {@link #readModel(TextSource, Path)} with the in-place paths (plain {@code v} and {@code surf}
+     * statements parsed where they lie) on or off, for the tests that hold the two paths to the
+     * same result; {@code inPlaceCounts[0]} and {@code [1]} receive how many vertices and surfs
+     * took the in-place path.
+     */
+    static Model readModel(TextSource text, boolean inPlace, int[] inPlaceCounts) throws IOException {
+        Parser parser = new Parser(text, null, inPlace);
+        try {
+            return parser.parse();
+        } finally {
+            inPlaceCounts[0] = parser.inPlaceVertices;
+            inPlaceCounts[1] = parser.inPlaceSurfs;
+        }
     }
 
     /** {@link #readModel(TextSource)} of in-memory text; for tests. */
@@ -159,9 +175,14 @@ public final class ObjReader {
         private int line;
         /** The coordinates of the vertex being read. */
         private final double[] xyz = new double[3];
+        /** False: every statement takes the string path (the tests' reference). */
+        private final boolean inPlace;
+        /** How many vertices and surfs took the in-place path. */
+        private int inPlaceVertices, inPlaceSurfs;
 
-        Parser(TextSource text, Path baseDir) {
+        Parser(TextSource text, Path baseDir, boolean inPlace) {
             this.text = text;
+            this.inPlace = inPlace;
             this.limits = text.limits();
             this.file = text.fileName();
             this.topFile = file;
@@ -183,40 +204,54 @@ public final class ObjReader {
             return new Model(patches, faces.mesh(vertices), note == null ? List.of() : List.of(note));
         }
 
-        /** Reads the statements of {@code text} (the file opened, or a called one); its last line number. */
+        /**
+         * Reads the statements of {@code text} (the file opened, or a called one); its last line
+         * number. Lines are read where they lie ({@link TextSource#nextLine()}): a plain vertex or
+         * {@code surf} is parsed from the characters; any other statement becomes a string and
+         * goes through {@link #statement}.
+         */
         private int readAll(TextSource text) throws IOException {
             int physical = 0;
-            String raw;
             StringBuilder statement = new StringBuilder();
             int statementLine = 0;
             long statementCap = (long) STATEMENT_LINES * limits.lineChars();
-            while ((raw = text.readLine()) != null) {
+            while (text.nextLine()) {
                 physical = text.lineNumber();
-                int hash = raw.indexOf('#');
-                String content = (hash >= 0 ? raw.substring(0, hash) : raw).stripTrailing();
+                char[] a = text.lineChars();
+                int from = text.lineStart(), end = commentAt(a, from, text.lineEnd());
+                while (end > from && Character.isWhitespace(a[end - 1])) {
+                    end--; // String.stripTrailing, in place
+                }
                 if (statement.length() == 0) {
                     statementLine = physical;
                 }
-                if (statement.length() + content.length() > statementCap) {
+                if (statement.length() + (end - from) > statementCap) {
                     line = statementLine;
                     throw error("statement longer than " + statementCap + " characters (joined continuation"
                             + " lines), the most a statement may hold");
                 }
-                if (content.endsWith("\\")) {
-                    statement.append(content, 0, content.length() - 1).append(' ');
+                if (end > from && a[end - 1] == '\\') {
+                    statement.append(a, from, end - from - 1).append(' ');
                     continue;
                 }
                 line = statementLine;
-                String s;
-                if (statement.length() == 0) {
-                    s = content.strip(); // a statement of one line (nearly all): no copy through the builder
+                if (statement.length() == 0) { // a statement of one line (nearly all): read in place
+                    while (from < end && Character.isWhitespace(a[from])) {
+                        from++;
+                    }
+                    if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)) {
+                        statement(inPlace && isEnd(a, from, end) ? END : Fields.of(new String(a, from, end - from)));
+                    }
                 } else {
-                    statement.append(content);
-                    s = statement.toString().strip();
+                    statement.append(a, from, end - from);
+                    String s = statement.toString().strip();
                     statement.setLength(0);
-                }
-                if (!s.isEmpty() && !plainVertex(s)) {
-                    statement(Fields.of(s));
+                    if (!s.isEmpty()) {
+                        char[] c = s.toCharArray();
+                        if (!plainVertex(c, 0, c.length)) {
+                            statement(Fields.of(s));
+                        }
+                    }
                 }
             }
             if (statement.length() > 0 && !statement.toString().isBlank()) {
@@ -224,6 +259,23 @@ public final class ObjReader {
                 statement(Fields.of(statement.toString()));
             }
             return physical;
+        }
+
+        /** The fields of {@code end}, the statement that follows every surf. */
+        private static final String[] END = {"end"};
+
+        private static boolean isEnd(char[] a, int from, int to) {
+            return to - from == 3 && a[from] == 'e' && a[from + 1] == 'n' && a[from + 2] == 'd';
+        }
+
+        /** Where a {@code #} comment starts in {@code a[from..to)}, else {@code to}. */
+        private static int commentAt(char[] a, int from, int to) {
+            for (int i = from; i < to; i++) {
+                if (a[i] == '#') {
+                    return i;
+                }
+            }
+            return to;
         }
 
         /** {@code call FILE.obj}: the file's statements, read in place ({@link ObjCalls}). */
@@ -293,31 +345,23 @@ public final class ObjReader {
         }
 
         /**
-         * Reads {@code v x y z} (three finite decimals, no weight) in place, without splitting the
-         * line: most lines of a big model are such vertices. Returns false, having read nothing, for
-         * anything else, which the general path then reads or reports.
+         * Reads {@code v x y z} (three finite decimals, no weight) from {@code a[from..to)}, a
+         * statement without leading or trailing blanks: most lines of a big model are such
+         * vertices. Returns false, having read nothing, for anything else, which the general path
+         * then reads or reports.
          */
-        /** The characters of the statement {@link #plainVertex} scans (an array: no {@code charAt} call a character). */
-        private char[] vertexText = new char[128];
-
-        private boolean plainVertex(String s) {
-            int n = s.length();
-            if (n < 7 || s.charAt(0) != 'v' || !Fields.separator(s.charAt(1)) || freeForm.skipping()
+        private boolean plainVertex(char[] a, int from, int to) {
+            if (!inPlace || to - from < 7 || a[from] != 'v' || !Fields.separator(a[from + 1]) || freeForm.skipping()
                     || vertices.count() >= limits.vertices()) {
                 return false;
             }
-            if (n > vertexText.length) {
-                vertexText = new char[Math.max(n, 2 * vertexText.length)];
-            }
-            char[] a = vertexText;
-            s.getChars(0, n, a, 0);
-            int i = 1;
+            int i = from + 1;
             for (int c = 0; c < 3; c++) {
-                while (i < n && Fields.separator(a[i])) {
+                while (i < to && Fields.separator(a[i])) {
                     i++;
                 }
                 int start = i;
-                while (i < n && !Fields.separator(a[i])) {
+                while (i < to && !Fields.separator(a[i])) {
                     i++;
                 }
                 xyz[c] = NumberText.finiteOrNaN(a, start, i);
@@ -325,10 +369,46 @@ public final class ObjReader {
                     return false;
                 }
             }
-            if (i != n) {
+            if (i != to) {
                 return false; // a weight or more: the general path
             }
             vertices.add(xyz[0], xyz[1], xyz[2], 1);
+            inPlaceVertices++;
+            return true;
+        }
+
+        /** The fields of the statement {@link #plainSurf} reads: {@code a[fieldStart[k]..fieldEnd[k])}. */
+        private int[] fieldStart = new int[32], fieldEnd = new int[32];
+
+        /**
+         * Reads {@code surf s0 s1 t0 t1 i1 i2 …} of plain numbers from {@code a[from..to)} (a
+         * statement without leading or trailing blanks) in place, as {@link ObjFreeForm#plainSurf}
+         * can; false, having read nothing, for anything else.
+         */
+        private boolean plainSurf(char[] a, int from, int to) {
+            if (!inPlace || to - from < 5 || a[from] != 's' || a[from + 1] != 'u' || a[from + 2] != 'r' || a[from + 3] != 'f'
+                    || !Fields.separator(a[from + 4])) {
+                return false;
+            }
+            int fields = 0;
+            for (int i = from; i < to; ) {
+                if (fields == fieldStart.length) {
+                    fieldStart = java.util.Arrays.copyOf(fieldStart, 2 * fields);
+                    fieldEnd = java.util.Arrays.copyOf(fieldEnd, 2 * fields);
+                }
+                fieldStart[fields] = i;
+                while (i < to && !Fields.separator(a[i])) {
+                    i++;
+                }
+                fieldEnd[fields++] = i;
+                while (i < to && Fields.separator(a[i])) {
+                    i++;
+                }
+            }
+            if (!freeForm.plainSurf(a, fieldStart, fieldEnd, fields, line)) {
+                return false;
+            }
+            inPlaceSurfs++;
             return true;
         }
 

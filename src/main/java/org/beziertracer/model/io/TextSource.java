@@ -10,6 +10,7 @@ import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 
 /**
  * The text of one file, as every reader (BPT, OBJ, scene JSON, ray files) sees it: UTF-8 decoded
@@ -23,7 +24,7 @@ import java.nio.charset.StandardCharsets;
  * <p>A read whose thread is interrupted (Cancel in the app) ends with an
  * {@link InterruptedIOException} before the next {@value #BUFFER} bytes are taken from the stream.
  *
- * <p>Read it one way: characters ({@link #read()}), lines ({@link #readLine()}) or all at once
+ * <p>Read it one way: characters ({@link #read()}), lines ({@link #readLine()}, {@link #nextLine()}) or all at once
  * ({@link #readAll}). Does not close the stream. Not thread-safe.
  */
 public final class TextSource {
@@ -46,6 +47,11 @@ public final class TextSource {
     private int line = 1;
     private boolean afterCr;
     private int lineNumber;
+    /** The line {@link #nextLine()} moved to: {@code lineChars[lineStart..lineEnd)}. */
+    private char[] lineChars;
+    private int lineStart, lineEnd;
+    /** The characters of a line that crosses the end of {@link #chars}, joined. */
+    private char[] spill = new char[256];
 
     /** Text of {@code in}, named {@code fileName} in messages, with the default caps. */
     public TextSource(InputStream in, String fileName) {
@@ -139,7 +145,20 @@ public final class TextSource {
      * @throws ModelFormatException for a line longer than {@link ReadLimits#lineChars()}
      */
     public String readLine() throws IOException {
-        StringBuilder sb = null;
+        return nextLine() ? new String(lineChars, lineStart, lineEnd - lineStart) : null;
+    }
+
+    /**
+     * Moves to the next line without making a {@code String} of it: its characters, without the
+     * line end, are then {@link #lineChars()}{@code [}{@link #lineStart()}{@code ..}{@link #lineEnd()}{@code )},
+     * valid until the next read. What {@link #readLine()} does for readers of millions of lines
+     * (an OBJ model's vertices), which parse the line where it lies.
+     *
+     * @return false at the end of the file
+     * @throws ModelFormatException for a line longer than {@link ReadLimits#lineChars()}
+     */
+    public boolean nextLine() throws IOException {
+        int spilled = -1; // characters of a line that crosses the buffer's end, copied to spill
         lineNumber = line;
         while (chars.hasRemaining() || fill()) {
             char[] a = chars.array();
@@ -154,32 +173,50 @@ public final class TextSource {
             while (end < limit && a[end] != '\n' && a[end] != '\r') {
                 end++;
             }
-            if (sb == null && end < limit && end - start <= limits.lineChars()) {
-                chars.position(end + 1); // the whole line is in the buffer: no builder
+            if (spilled < 0 && end < limit && end - start <= limits.lineChars()) {
+                chars.position(end + 1); // the whole line is in the buffer: read where it lies
                 line++;
                 afterCr = a[end] == '\r';
-                return new String(a, start, end - start);
+                return lineAt(a, start, end);
             }
-            if (sb == null) {
-                sb = new StringBuilder(end - start + 16);
-            }
-            if (sb.length() + (end - start) > limits.lineChars()) {
+            spilled = Math.max(spilled, 0);
+            if (spilled + (end - start) > limits.lineChars()) {
                 throw error(lineNumber, "line longer than " + limits.lineChars()
                         + " characters, the most a line may hold");
             }
-            sb.append(a, start, end - start);
+            if (spilled + (end - start) > spill.length) {
+                spill = Arrays.copyOf(spill, Math.max(spilled + (end - start), 2 * spill.length));
+            }
+            System.arraycopy(a, start, spill, spilled, end - start);
+            spilled += end - start;
             if (end < limit) {
                 chars.position(end + 1);
                 line++;
                 afterCr = a[end] == '\r';
-                return sb.toString();
+                return lineAt(spill, 0, spilled);
             }
             chars.position(end);
         }
-        return sb == null ? null : sb.toString();
+        return spilled >= 0 && lineAt(spill, 0, spilled);
     }
 
-    /** 1-based line of the line {@link #readLine()} returned last. */
+    private boolean lineAt(char[] a, int start, int end) {
+        lineChars = a;
+        lineStart = start;
+        lineEnd = end;
+        return true;
+    }
+
+    /** The array holding the line {@link #nextLine()} moved to (not a copy: read, never keep). */
+    public char[] lineChars() { return lineChars; }
+
+    /** Where that line starts in {@link #lineChars()}. */
+    public int lineStart() { return lineStart; }
+
+    /** Where that line ends (exclusive) in {@link #lineChars()}. */
+    public int lineEnd() { return lineEnd; }
+
+    /** 1-based line of the line {@link #readLine()} returned (or {@link #nextLine()} moved to) last. */
     public int lineNumber() {
         return lineNumber;
     }

@@ -1,0 +1,164 @@
+package org.beziertracer.model.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * The OBJ reader's in-place paths (plain {@code v} and {@code surf} statements parsed from the
+ * line's characters, {@link TextSource#nextLine()}) against its string path: seeded random files
+ * in the many spellings writers use — signs, exponents, tabs, comments, continuation lines, CR LF,
+ * lines crossing the decoder's buffer, slash and negative indices, weights — and with errors
+ * planted, read both ways: the same patches to the bit, or the same one-line error.
+ */
+class ObjInPlaceTest {
+
+    /** The model or the error message, both ways; asserts they agree and returns the in-place counts. */
+    private static int[] bothWays(String text) throws IOException {
+        int[] on = new int[2], off = new int[2];
+        String a = outcome(text, true, on), b = outcome(text, false, off);
+        assertEquals(b, a, () -> "in place and string path differ for:\n" + text);
+        assertEquals(0, off[0] + off[1], "the string path took no in-place step");
+        return on;
+    }
+
+    private static String outcome(String text, boolean inPlace, int[] counts) throws IOException {
+        TextSource source = new TextSource(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), "r.obj");
+        try {
+            ObjReader.Model m = ObjReader.readModel(source, inPlace, counts);
+            StringBuilder sb = new StringBuilder();
+            m.patches().forEach(p -> sb.append(p.degreeU()).append('x').append(p.degreeV())
+                    .append(java.util.Arrays.toString(p.copyNet())).append(java.util.Arrays.toString(p.weights()))
+                    .append(p.domain()).append('\n'));
+            return sb.append(m.notes()).toString();
+        } catch (ModelFormatException e) {
+            return "error: " + e.getMessage();
+        }
+    }
+
+    @Test
+    void randomFilesReadTheSameBothWays() throws IOException {
+        Random rnd = new Random(20261206);
+        int vertices = 0, surfs = 0, errors = 0;
+        for (int round = 0; round < 400; round++) {
+            String text = randomFile(rnd, round % 3 == 0);
+            int[] counts = bothWays(text);
+            vertices += counts[0];
+            surfs += counts[1];
+            errors += outcome(text, true, new int[2]).startsWith("error") ? 1 : 0;
+        }
+        // both paths were really exercised: most statements in place, and errors among the files
+        assertTrue(vertices > 5_000, "in-place vertices: " + vertices);
+        assertTrue(surfs > 300, "in-place surfs: " + surfs);
+        assertTrue(errors > 40 && errors < 360, "files with an error: " + errors);
+    }
+
+    @Test
+    void aPlainModelTakesTheInPlacePathForEveryVertexAndSurf() throws IOException {
+        StringBuilder sb = new StringBuilder("cstype bezier\ndeg 1 1\n");
+        for (int k = 0; k < 50; k++) {
+            sb.append("v ").append(k).append(" 0 0\nv ").append(k).append(" 1 0\nv ").append(k).append(" 0 1\n")
+                    .append("v ").append(k).append(" 1 1\nsurf 0 1 0 1 -4 -3 -2 -1\nend\n");
+        }
+        int[] counts = bothWays(sb.toString());
+        assertEquals(200, counts[0]);
+        assertEquals(50, counts[1]);
+    }
+
+    /** A file of random vertices and surfs; with {@code planted}, one token somewhere is wrong. */
+    private static String randomFile(Random rnd, boolean planted) {
+        StringBuilder sb = new StringBuilder();
+        String eol = rnd.nextInt(4) == 0 ? "\r\n" : "\n";
+        sb.append("cstype ").append(rnd.nextInt(3) == 0 ? "rat " : "").append("bezier").append(eol);
+        int du = 1 + rnd.nextInt(3), dv = 1 + rnd.nextInt(3);
+        sb.append("deg ").append(du).append(' ').append(dv).append(eol);
+        int defined = 0;
+        int surfCount = 1 + rnd.nextInt(4);
+        int plantAt = planted ? rnd.nextInt(surfCount) : -1;
+        boolean slashes = rnd.nextBoolean(); // v/vt forms (the string path) in half the files
+        for (int s = 0; s < surfCount; s++) {
+            int points = (du + 1) * (dv + 1);
+            for (int k = 0; k < points + rnd.nextInt(3); k++) {
+                sb.append(blank(rnd)).append('v').append(rnd.nextBoolean() ? " " : "\t");
+                for (int c = 0; c < 3; c++) {
+                    sb.append(number(rnd)).append(c < 2 ? blank(rnd) + " " : "");
+                }
+                if (rnd.nextInt(8) == 0) {
+                    sb.append(' ').append(1 + rnd.nextInt(3)); // a weight: the string path
+                }
+                if (rnd.nextInt(10) == 0) {
+                    sb.append(" # ").append("x".repeat(rnd.nextInt(3) == 0 ? 9_000 : 5)); // across the buffer
+                }
+                sb.append(blank(rnd)).append(eol);
+                defined++;
+            }
+            sb.append(blank(rnd)).append("surf ").append(range(rnd)).append(' ').append(range(rnd));
+            for (int k = 0; k < points; k++) {
+                int index = 1 + rnd.nextInt(defined);
+                sb.append(rnd.nextInt(40) == 0 ? " \\" + eol : " ").append(reference(rnd, index, defined, slashes));
+            }
+            if (s == plantAt) {
+                sb.append(' ').append(plant(rnd, defined));
+            }
+            sb.append(blank(rnd)).append(eol).append("end").append(eol);
+        }
+        return sb.toString();
+    }
+
+    private static String blank(Random rnd) {
+        return switch (rnd.nextInt(6)) {
+            case 0 -> " ";
+            case 1 -> "\t";
+            default -> "";
+        };
+    }
+
+    private static String number(Random rnd) {
+        double v = (rnd.nextDouble() - 0.5) * Math.pow(10, rnd.nextInt(7) - 3);
+        return switch (rnd.nextInt(6)) {
+            case 0 -> Double.toString(v);
+            case 1 -> String.format(java.util.Locale.ROOT, "%.4e", v);
+            case 2 -> "+" + String.format(java.util.Locale.ROOT, "%.3f", Math.abs(v));
+            case 3 -> Integer.toString((int) (v * 10));
+            case 4 -> String.format(java.util.Locale.ROOT, "%.6f", v).replace("0.", ".");
+            default -> String.format(java.util.Locale.ROOT, "%.17g", v);
+        };
+    }
+
+    private static String range(Random rnd) {
+        return switch (rnd.nextInt(5)) {
+            case 0 -> "0.0 1.0";
+            case 1 -> "0 0.5";
+            case 2 -> "+0 1e0";
+            default -> "0 1";
+        };
+    }
+
+    private static String reference(Random rnd, int index, int defined, boolean slashes) {
+        return switch (rnd.nextInt(slashes ? 10 : 6) + (slashes ? 0 : 4)) {
+            case 0, 6 -> Integer.toString(index - defined - 1); // negative: counts back
+            case 1 -> index + "/" + index;
+            case 2 -> index + "//1";
+            case 3, 4 -> "+" + index;
+            case 5 -> "00" + index;
+            default -> Integer.toString(index);
+        };
+    }
+
+    /** A token that makes the surf wrong: an index out of range, not a number, a count off by one. */
+    private static String plant(Random rnd, int defined) {
+        return switch (rnd.nextInt(5)) {
+            case 0 -> Integer.toString(defined + 1);
+            case 1 -> "-" + (defined + 1);
+            case 2 -> "x1";
+            case 3 -> "99999999999999999999";
+            default -> "1";
+        };
+    }
+}
