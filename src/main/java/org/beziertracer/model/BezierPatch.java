@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.Objects;
 
 import org.beziertracer.math.Aabb;
+import org.beziertracer.math.Bounds;
 
 /**
  * An immutable tensor-product Bézier patch of degree {@code n} in u and {@code m} in v.
@@ -221,6 +222,9 @@ public final class BezierPatch {
      * (for a rational patch too, its weights being positive).
      */
     public Aabb controlBounds() { return Aabb.ofPoints(net); }
+
+    /** {@link #controlBounds()} into {@code box[0..5]} ({@link Bounds#ofPoints}), without making a box. */
+    void controlBoundsInto(double[] box) { Bounds.ofPoints(net, 0, net.length / 3, box); }
 
     /** Equal patches have equal geometry, weights and domain; the origin does not count. */
     @Override

@@ -72,19 +72,26 @@ public final class Scene {
         patchMaterial = new int[patches.size()];
         for (int k = 0; k < patchMaterial.length; k++) {
             patchMaterial[k] = k < b.patchMaterial.size() ? b.patchMaterial.get(k) : 0;
-            checkMaterial("patch " + k, patchMaterial[k]);
+            checkMaterial("patch ", k, patchMaterial[k]);
         }
         meshMaterial = new int[meshes.size()];
         for (int k = 0; k < meshMaterial.length; k++) {
             meshMaterial[k] = b.meshMaterial.get(k);
-            checkMaterial("mesh " + k, meshMaterial[k]);
+            checkMaterial("mesh ", k, meshMaterial[k]);
         }
         checkInstances();
         for (int k = 0; k < planes.size(); k++) {
-            checkMaterial("plane " + k, planes.get(k).material());
+            checkMaterial("plane ", k, planes.get(k).material());
         }
         for (int k = 0; k < spheres.size(); k++) {
-            checkMaterial("sphere " + k, spheres.get(k).material());
+            checkMaterial("sphere ", k, spheres.get(k).material());
+        }
+    }
+
+    /** {@link #checkMaterial(String, int)} of item {@code what + k}, its name made only for the message. */
+    private void checkMaterial(String what, int k, int index) {
+        if (index < 0 || index >= materials.size()) {
+            checkMaterial(what + k, index);
         }
     }
 
@@ -195,11 +202,17 @@ public final class Scene {
      */
     public Aabb controlBounds() {
         Aabb box = controlBounds;
-        if (box == null) {
-            box = Aabb.EMPTY;
+        if (box == null) { // the union of the patches' control boxes, without a box object a patch
+            double[] b = new double[6], u = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                    Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
             for (BezierPatch p : patches) {
-                box = box.union(p.controlBounds());
+                p.controlBoundsInto(b);
+                for (int c = 0; c < 3; c++) {
+                    u[c] = Math.min(u[c], b[c]);
+                    u[c + 3] = Math.max(u[c + 3], b[c + 3]);
+                }
             }
+            box = patches.isEmpty() ? Aabb.EMPTY : new Aabb(u[0], u[1], u[2], u[3], u[4], u[5]);
             controlBounds = box;
         }
         return box;

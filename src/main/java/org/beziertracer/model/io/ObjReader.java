@@ -3,6 +3,7 @@ package org.beziertracer.model.io;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
 
@@ -240,7 +241,7 @@ public final class ObjReader {
                         from++;
                     }
                     if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)) {
-                        statement(inPlace && isEnd(a, from, end) ? END : Fields.of(new String(a, from, end - from)));
+                        statement(fields(a, from, end));
                     }
                 } else {
                     statement.append(a, from, end - from);
@@ -261,11 +262,30 @@ public final class ObjReader {
             return physical;
         }
 
-        /** The fields of {@code end}, the statement that follows every surf. */
-        private static final String[] END = {"end"};
+        /**
+         * Short statements split lately, and their fields, one slot for each value of a first
+         * character's low three bits: {@code deg 3 3} and {@code end} come again and again.
+         */
+        private final char[][] recentText = new char[8][32];
+        private final int[] recentLength = {-1, -1, -1, -1, -1, -1, -1, -1};
+        private final String[][] recentFields = new String[8][];
 
-        private static boolean isEnd(char[] a, int from, int to) {
-            return to - from == 3 && a[from] == 'e' && a[from + 1] == 'n' && a[from + 2] == 'd';
+        /**
+         * {@link Fields#of} of {@code a[from..to)}; a short statement equal to a recent one gets
+         * the same fields again (no handler changes its fields) instead of new strings.
+         */
+        private String[] fields(char[] a, int from, int to) {
+            int n = to - from, slot = a[from] & 7;
+            if (inPlace && n == recentLength[slot] && Arrays.equals(a, from, to, recentText[slot], 0, n)) {
+                return recentFields[slot];
+            }
+            String[] fields = Fields.of(new String(a, from, n));
+            if (n <= recentText[slot].length) {
+                System.arraycopy(a, from, recentText[slot], 0, n);
+                recentLength[slot] = n;
+                recentFields[slot] = fields;
+            }
+            return fields;
         }
 
         /** Where a {@code #} comment starts in {@code a[from..to)}, else {@code to}. */
@@ -393,8 +413,8 @@ public final class ObjReader {
             int fields = 0;
             for (int i = from; i < to; ) {
                 if (fields == fieldStart.length) {
-                    fieldStart = java.util.Arrays.copyOf(fieldStart, 2 * fields);
-                    fieldEnd = java.util.Arrays.copyOf(fieldEnd, 2 * fields);
+                    fieldStart = Arrays.copyOf(fieldStart, 2 * fields);
+                    fieldEnd = Arrays.copyOf(fieldEnd, 2 * fields);
                 }
                 fieldStart[fields] = i;
                 while (i < to && !Fields.separator(a[i])) {
