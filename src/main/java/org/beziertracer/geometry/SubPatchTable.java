@@ -428,7 +428,7 @@ public final class SubPatchTable {
         }
         double sum = 0;
         for (BezierPatch p : patches) {
-            double d = p.controlBounds().diagonal();
+            double d = p.controlDiagonal();
             sum += d * d;
         }
         return Math.sqrt(sum / LEAF_BUDGET);

@@ -48,7 +48,11 @@ public record Aabb(double minX, double minY, double minZ, double maxX, double ma
         if (isEmpty()) {
             return 0;
         }
-        double dx = maxX - minX, dy = maxY - minY, dz = maxZ - minZ;
+        return diagonal(maxX - minX, maxY - minY, maxZ - minZ);
+    }
+
+    /** The length of a box's diagonal from its sides, as {@link #diagonal()} computes it. */
+    public static double diagonal(double dx, double dy, double dz) {
         double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
         return Double.isFinite(d) ? d : Math.hypot(Math.hypot(dx, dy), dz);
     }

@@ -32,4 +32,19 @@ class SceneTest {
         assertEquals(new Aabb(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), box);
         assertSame(box, scene.controlBounds(), "the second call computes the box again");
     }
+
+    @Test
+    void aPatchsControlDiagonalIsItsBoxDiagonalToTheBit() {
+        Random rnd = new Random(3506);
+        for (int k = 0; k < 2_000; k++) {
+            int n = 1 + rnd.nextInt(4), m = 1 + rnd.nextInt(4);
+            double scale = k % 10 == 0 ? 1e300 : Math.pow(10, rnd.nextInt(9) - 4); // some overflow the square
+            double[] net = new double[3 * (n + 1) * (m + 1)];
+            for (int i = 0; i < net.length; i++) {
+                net[i] = k % 7 == 0 && i % 5 == 0 ? -0.0 : (rnd.nextDouble() - 0.5) * scale;
+            }
+            BezierPatch p = new BezierPatch(n, m, net);
+            assertEquals(p.controlBounds().diagonal(), p.controlDiagonal(), "patch " + k);
+        }
+    }
 }
