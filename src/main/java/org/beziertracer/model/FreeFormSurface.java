@@ -58,12 +58,25 @@ public final class FreeFormSurface {
         this.degreeV = degreeV;
         this.countU = countU;
         this.countV = countV;
-        this.parmU = parmU.clone();
-        this.parmV = parmV.clone();
+        this.parmU = kept(parmU);
+        this.parmV = kept(parmV);
         this.points = points.clone();
         this.weights = weights == null ? null : weights.clone();
-        this.range = Arrays.copyOf(range, 4);
+        this.range = range.length >= 4 && Arrays.equals(range, 0, 4, UNIT_RANGE, 0, 4) ? UNIT_RANGE : Arrays.copyOf(range, 4);
         this.trim = trim;
+    }
+
+    /** The parameter values {0, 1} of a one-segment Bézier surface, shared by every surface that has them. */
+    private static final double[] UNIT = {0, 1};
+    /** The range [0,1]², shared alike. */
+    private static final double[] UNIT_RANGE = {0, 1, 0, 1};
+
+    /**
+     * Parameter values as kept: a copy, or the shared {@link #UNIT} (never changed, never handed
+     * out) for the values most surfaces of a big model have, one object less each.
+     */
+    private static double[] kept(double[] parm) {
+        return Arrays.equals(parm, UNIT) ? UNIT : parm.clone();
     }
 
     private static void check(String direction, String problem) {
