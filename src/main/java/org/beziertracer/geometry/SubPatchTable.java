@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.stream.IntStream;
 
+import org.beziertracer.math.Aabb;
 import org.beziertracer.math.Bounds;
 import org.beziertracer.math.HeapBytes;
 import org.beziertracer.model.BezierPatch;
@@ -427,8 +428,10 @@ public final class SubPatchTable {
             return 0;
         }
         double sum = 0;
+        double[] box = new double[6];
         for (BezierPatch p : patches) {
-            double d = p.controlDiagonal();
+            p.controlBoundsInto(box); // the diagonal of controlBounds(), no box made a patch
+            double d = Aabb.diagonal(box[3] - box[0], box[4] - box[1], box[5] - box[2]);
             sum += d * d;
         }
         return Math.sqrt(sum / LEAF_BUDGET);

@@ -224,26 +224,10 @@ public final class BezierPatch {
     public Aabb controlBounds() { return Aabb.ofPoints(net); }
 
     /**
-     * {@code controlBounds().diagonal()}, the same double, without making the box: split budgets
-     * walk every patch of models of a million patches.
+     * {@link #controlBounds()} into {@code box[0..5]} ({@link Bounds#ofPoints}), without making a
+     * box: what walks over every patch of a model of a million patches uses.
      */
-    public double controlDiagonal() {
-        double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX;
-        double maxX = Double.NEGATIVE_INFINITY, maxY = maxX, maxZ = maxX;
-        for (int p = 0; p < net.length; p += 3) { // as Bounds.ofPoints
-            double x = net[p], y = net[p + 1], z = net[p + 2];
-            if (x < minX) minX = x;
-            if (x > maxX) maxX = x;
-            if (y < minY) minY = y;
-            if (y > maxY) maxY = y;
-            if (z < minZ) minZ = z;
-            if (z > maxZ) maxZ = z;
-        }
-        return Aabb.diagonal(maxX - minX, maxY - minY, maxZ - minZ);
-    }
-
-    /** {@link #controlBounds()} into {@code box[0..5]} ({@link Bounds#ofPoints}), without making a box. */
-    void controlBoundsInto(double[] box) { Bounds.ofPoints(net, 0, net.length / 3, box); }
+    public void controlBoundsInto(double[] box) { Bounds.ofPoints(net, 0, net.length / 3, box); }
 
     /** Equal patches have equal geometry, weights and domain; the origin does not count. */
     @Override

@@ -34,7 +34,7 @@ class SceneTest {
     }
 
     @Test
-    void aPatchsControlDiagonalIsItsBoxDiagonalToTheBit() {
+    void aPatchsControlBoxIntoAnArrayIsItsBoxToTheBit() {
         Random rnd = new Random(3506);
         for (int k = 0; k < 2_000; k++) {
             int n = 1 + rnd.nextInt(4), m = 1 + rnd.nextInt(4);
@@ -44,7 +44,11 @@ class SceneTest {
                 net[i] = k % 7 == 0 && i % 5 == 0 ? -0.0 : (rnd.nextDouble() - 0.5) * scale;
             }
             BezierPatch p = new BezierPatch(n, m, net);
-            assertEquals(p.controlBounds().diagonal(), p.controlDiagonal(), "patch " + k);
+            double[] b = new double[6];
+            p.controlBoundsInto(b);
+            Aabb box = p.controlBounds();
+            assertEquals(box, new Aabb(b[0], b[1], b[2], b[3], b[4], b[5]), "patch " + k);
+            assertEquals(box.diagonal(), Aabb.diagonal(b[3] - b[0], b[4] - b[1], b[5] - b[2]), "patch " + k);
         }
     }
 }
