@@ -51,6 +51,29 @@ class TextSourceTest {
     }
 
     @Test
+    void linesReadInPlaceAreTheLinesReadAsStrings() throws IOException {
+        java.util.Random rnd = new java.util.Random(35);
+        StringBuilder sb = new StringBuilder();
+        String[] ends = {"\n", "\r\n", "\r"};
+        for (int k = 0; k < 3_000; k++) { // lines of 0 to 20,000 characters: many cross the 16 K buffer
+            int length = rnd.nextInt(10) == 0 ? rnd.nextInt(20_000) : rnd.nextInt(40);
+            for (int i = 0; i < length; i++) {
+                sb.append(rnd.nextInt(50) == 0 ? 'é' : (char) ('a' + rnd.nextInt(26)));
+            }
+            sb.append(ends[rnd.nextInt(3)]);
+        }
+        byte[] bytes = sb.append("last").toString().getBytes(StandardCharsets.UTF_8);
+        TextSource s = source(bytes);
+        List<String> inPlace = new ArrayList<>();
+        while (s.nextLine()) {
+            inPlace.add(s.lineNumber() + ":" + new String(s.lineChars(), s.lineStart(), s.lineEnd() - s.lineStart()));
+        }
+        assertEquals(lines(bytes), inPlace);
+        assertTrue(inPlace.size() > 2_900, "lines: " + inPlace.size()); // a lone CR then an empty LF line is one end
+        assertTrue(inPlace.get(inPlace.size() - 1).endsWith(":last"));
+    }
+
+    @Test
     void charactersCountLinesLikeReadLine() throws IOException {
         TextSource s = source("a\r\nb\rc\nd".getBytes(StandardCharsets.UTF_8));
         StringBuilder seen = new StringBuilder();
