@@ -34,7 +34,10 @@ final class ObjFaces {
     private int vertexCount;
     private int[] triangles = new int[3 * 64];
     private int triangleCount;
+    /** The mesh vertex of each corner with a vt or a vn. */
     private final Map<Corner, Integer> index = new HashMap<>();
+    /** Per vertex v the mesh vertex of the corner that names only v, or -1. */
+    private int[] plainIndex = new int[0];
     private boolean allUvs = true, allNormals = true;
     private int line;
 
@@ -104,17 +107,53 @@ final class ObjFaces {
         if ((long) triangleCount + n - 2 > limits.vertices()) {
             throw error("a file may have at most " + limits.vertices() + " triangles of faces; this face makes more");
         }
-        int first = corner(t[1], 1, defined), previous = corner(t[2], 2, defined);
-        for (int k = 3; k <= n; k++) {
-            int current = corner(t[k], k, defined);
+        int[] c = cornerScratch(n);
+        for (int k = 0; k < n; k++) {
+            c[k] = corner(t[k + 1], k + 1, defined);
+        }
+        fan(c, n);
+    }
+
+    /**
+     * {@link #face} of corners given as plain vertex references already resolved to 0-based
+     * vertices {@code v[0..n)} (an {@code f a b c} read in place, {@link ObjReader}): false, having
+     * changed nothing, when the string path would report a problem.
+     */
+    boolean plainFace(int[] v, int n, int lineNumber) {
+        if (n < 3 || (long) triangleCount + n - 2 > limits.vertices()) {
+            return false;
+        }
+        line = lineNumber;
+        allUvs = false;
+        allNormals = false;
+        int[] c = cornerScratch(n);
+        for (int k = 0; k < n; k++) {
+            c[k] = plainCorner(v[k]);
+        }
+        fan(c, n);
+        return true;
+    }
+
+    /** The mesh vertices of one face's corners. */
+    private int[] cornerScratch = new int[8];
+
+    private int[] cornerScratch(int n) {
+        if (n > cornerScratch.length) {
+            cornerScratch = new int[Math.max(n, 2 * cornerScratch.length)];
+        }
+        return cornerScratch;
+    }
+
+    /** The triangles {@code (c0, c[k-1], c[k])} of a polygon of {@code n} mesh vertices, keeping its winding. */
+    private void fan(int[] c, int n) {
+        for (int k = 2; k < n; k++) {
             if (3 * triangleCount + 3 > triangles.length) {
                 triangles = Arrays.copyOf(triangles, 2 * triangles.length);
             }
-            triangles[3 * triangleCount] = first;
-            triangles[3 * triangleCount + 1] = previous;
-            triangles[3 * triangleCount + 2] = current;
+            triangles[3 * triangleCount] = c[0];
+            triangles[3 * triangleCount + 1] = c[k - 1];
+            triangles[3 * triangleCount + 2] = c[k];
             triangleCount++;
-            previous = current;
         }
     }
 
@@ -132,18 +171,45 @@ final class ObjFaces {
         int vn = parts.length > 2 ? reference(parts[2], token, position, normalCount, "normal", "vn") : -1;
         allUvs &= vt >= 0;
         allNormals &= vn >= 0;
+        if (vt < 0 && vn < 0) {
+            return plainCorner(v);
+        }
         Corner key = new Corner(v, vt, vn);
         Integer known = index.get(key);
         if (known != null) {
             return known;
         }
+        index.put(key, vertexCount);
+        return newVertex(v, vt, vn);
+    }
+
+    /**
+     * The mesh vertex of a corner that names only vertex {@code v}: found in an array by {@code v}
+     * rather than hashed (most meshes' corners are such; a corner with a vt or vn is another
+     * vertex and goes through the map).
+     */
+    private int plainCorner(int v) {
+        if (v >= plainIndex.length) {
+            int old = plainIndex.length;
+            plainIndex = Arrays.copyOf(plainIndex, Math.max(v + 1, 2 * old));
+            Arrays.fill(plainIndex, old, plainIndex.length, -1);
+        }
+        int known = plainIndex[v];
+        if (known >= 0) {
+            return known;
+        }
+        plainIndex[v] = vertexCount;
+        return newVertex(v, -1, -1);
+    }
+
+    /** A new mesh vertex for the corner (v, vt, vn); its index. */
+    private int newVertex(int v, int vt, int vn) {
         if (3 * vertexCount + 3 > corners.length) {
             corners = Arrays.copyOf(corners, 2 * corners.length);
         }
         corners[3 * vertexCount] = v;
         corners[3 * vertexCount + 1] = vt;
         corners[3 * vertexCount + 2] = vn;
-        index.put(key, vertexCount);
         return vertexCount++;
     }
 

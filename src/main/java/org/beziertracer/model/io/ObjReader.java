@@ -126,10 +126,10 @@ public final class ObjReader {
     }
 
     /**
-     * {@link #readModel(TextSource, Path)} with the in-place paths (plain {@code v} and {@code surf}
-     * statements parsed where they lie) on or off, for the tests that hold the two paths to the
-     * same result; {@code inPlaceCounts[0]} and {@code [1]} receive how many vertices and surfs
-     * took the in-place path.
+     * {@link #readModel(TextSource, Path)} with the in-place paths (plain {@code v}, {@code surf}
+     * and {@code f} statements parsed where they lie) on or off, for the tests that hold the two paths to the
+     * same result; {@code inPlaceCounts[0..2]} receive how many vertices, surfs and faces took
+     * the in-place path.
      */
     static Model readModel(TextSource text, boolean inPlace, int[] inPlaceCounts) throws IOException {
         Parser parser = new Parser(text, null, inPlace);
@@ -138,6 +138,7 @@ public final class ObjReader {
         } finally {
             inPlaceCounts[0] = parser.inPlaceVertices;
             inPlaceCounts[1] = parser.inPlaceSurfs;
+            inPlaceCounts[2] = parser.inPlaceFaces;
         }
     }
 
@@ -178,8 +179,8 @@ public final class ObjReader {
         private final double[] xyz = new double[3];
         /** False: every statement takes the string path (the tests' reference). */
         private final boolean inPlace;
-        /** How many vertices and surfs took the in-place path. */
-        private int inPlaceVertices, inPlaceSurfs;
+        /** How many vertices, surfs and faces took the in-place path. */
+        private int inPlaceVertices, inPlaceSurfs, inPlaceFaces;
 
         Parser(TextSource text, Path baseDir, boolean inPlace) {
             this.text = text;
@@ -207,9 +208,9 @@ public final class ObjReader {
 
         /**
          * Reads the statements of {@code text} (the file opened, or a called one); its last line
-         * number. Lines are read where they lie ({@link TextSource#nextLine()}): a plain vertex or
-         * {@code surf} is parsed from the characters; any other statement becomes a string and
-         * goes through {@link #statement}.
+         * number. Lines are read where they lie ({@link TextSource#nextLine()}): a plain vertex,
+         * {@code surf} or face is parsed from the characters; any other statement becomes a string
+         * and goes through {@link #statement}.
          */
         private int readAll(TextSource text) throws IOException {
             int physical = 0;
@@ -240,7 +241,8 @@ public final class ObjReader {
                     while (from < end && Character.isWhitespace(a[from])) {
                         from++;
                     }
-                    if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)) {
+                    if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)
+                            && !plainFace(a, from, end)) {
                         statement(fields(a, from, end));
                     }
                 } else {
@@ -394,6 +396,46 @@ public final class ObjReader {
             }
             vertices.add(xyz[0], xyz[1], xyz[2], 1);
             inPlaceVertices++;
+            return true;
+        }
+
+        /** The vertices of the face {@link #plainFace} reads, 0-based. */
+        private int[] faceVertices = new int[8];
+
+        /**
+         * Reads {@code f i1 i2 i3 …} of plain vertex indices (no {@code v/vt/vn} form) from
+         * {@code a[from..to)}, a statement without leading or trailing blanks, in place, as
+         * {@link ObjFaces#plainFace} can; false, having read nothing, for anything else.
+         */
+        private boolean plainFace(char[] a, int from, int to) {
+            if (!inPlace || to - from < 7 || a[from] != 'f' || !Fields.separator(a[from + 1]) || freeForm.skipping()) {
+                return false;
+            }
+            int n = 0, defined = vertices.count();
+            for (int i = from + 1; ; ) {
+                while (i < to && Fields.separator(a[i])) {
+                    i++;
+                }
+                if (i == to) {
+                    break;
+                }
+                int start = i;
+                while (i < to && !Fields.separator(a[i])) {
+                    i++;
+                }
+                int v = ObjVertices.resolve(NumberText.wholeOrMin(a, start, i), defined);
+                if (v < 0) {
+                    return false;
+                }
+                if (n == faceVertices.length) {
+                    faceVertices = Arrays.copyOf(faceVertices, 2 * n);
+                }
+                faceVertices[n++] = v;
+            }
+            if (!faces.plainFace(faceVertices, n, line)) {
+                return false;
+            }
+            inPlaceFaces++;
             return true;
         }
 

@@ -21,10 +21,10 @@ class ObjInPlaceTest {
 
     /** The model or the error message, both ways; asserts they agree and returns the in-place counts. */
     private static int[] bothWays(String text) throws IOException {
-        int[] on = new int[2], off = new int[2];
+        int[] on = new int[3], off = new int[3];
         String a = outcome(text, true, on), b = outcome(text, false, off);
         assertEquals(b, a, () -> "in place and string path differ for:\n" + text);
-        assertEquals(0, off[0] + off[1], "the string path took no in-place step");
+        assertEquals(0, off[0] + off[1] + off[2], "the string path took no in-place step");
         return on;
     }
 
@@ -36,6 +36,12 @@ class ObjInPlaceTest {
             m.patches().forEach(p -> sb.append(p.degreeU()).append('x').append(p.degreeV())
                     .append(java.util.Arrays.toString(p.copyNet())).append(java.util.Arrays.toString(p.weights()))
                     .append(p.domain()).append('\n'));
+            if (m.mesh() != null) {
+                sb.append(m.mesh()).append(java.util.Arrays.toString(m.mesh().positions()))
+                        .append(java.util.Arrays.toString(m.mesh().triangles()))
+                        .append(java.util.Arrays.toString(m.mesh().normals()))
+                        .append(java.util.Arrays.toString(m.mesh().uvs()));
+            }
             return sb.append(m.notes()).toString();
         } catch (ModelFormatException e) {
             return "error: " + e.getMessage();
@@ -51,12 +57,71 @@ class ObjInPlaceTest {
             int[] counts = bothWays(text);
             vertices += counts[0];
             surfs += counts[1];
-            errors += outcome(text, true, new int[2]).startsWith("error") ? 1 : 0;
+            errors += outcome(text, true, new int[3]).startsWith("error") ? 1 : 0;
         }
         // both paths were really exercised: most statements in place, and errors among the files
         assertTrue(vertices > 5_000, "in-place vertices: " + vertices);
         assertTrue(surfs > 300, "in-place surfs: " + surfs);
         assertTrue(errors > 40 && errors < 360, "files with an error: " + errors);
+    }
+
+    @Test
+    void randomMeshesReadTheSameBothWays() throws IOException {
+        Random rnd = new Random(35_006);
+        int faces = 0, errors = 0;
+        for (int round = 0; round < 300; round++) {
+            String text = randomMesh(rnd, round % 3 == 0);
+            faces += bothWays(text)[2];
+            errors += outcome(text, true, new int[3]).startsWith("error") ? 1 : 0;
+        }
+        assertTrue(faces > 3_000, "in-place faces: " + faces);
+        assertTrue(errors > 30 && errors < 250, "files with an error: " + errors);
+    }
+
+    /**
+     * Vertices, texture vertices and normals, then faces of 3 to 6 corners in every reference form
+     * (plain, negative, {@code v/vt}, {@code v//vn}, {@code v/vt/vn}), plain corners repeated so
+     * that mesh vertices are shared; with {@code planted}, one corner is out of range or malformed.
+     */
+    private static String randomMesh(Random rnd, boolean planted) {
+        StringBuilder sb = new StringBuilder();
+        int count = 4 + rnd.nextInt(20);
+        for (int k = 0; k < count; k++) {
+            sb.append("v ").append(number(rnd)).append(' ').append(number(rnd)).append(' ').append(number(rnd))
+                    .append('\n');
+            if (rnd.nextBoolean()) {
+                sb.append("vt ").append(rnd.nextDouble()).append(' ').append(rnd.nextDouble()).append('\n');
+                sb.append("vn 0 0 ").append(1 + rnd.nextInt(3)).append('\n');
+            }
+        }
+        boolean fancy = rnd.nextInt(3) == 0; // v/vt/vn forms in a third of the files
+        int faceCount = 5 + rnd.nextInt(30), plantAt = planted ? rnd.nextInt(faceCount) : -1;
+        for (int f = 0; f < faceCount; f++) {
+            sb.append(blank(rnd)).append('f');
+            int corners = 3 + rnd.nextInt(4);
+            for (int c = 0; c < corners; c++) {
+                int v = 1 + rnd.nextInt(count);
+                String ref = switch (fancy ? rnd.nextInt(8) : 3 + rnd.nextInt(5)) {
+                    case 0 -> v + "/1";
+                    case 1 -> v + "//1";
+                    case 2 -> v + "/1/1";
+                    case 3 -> Integer.toString(v - count - 1);
+                    case 4 -> "+" + v;
+                    default -> Integer.toString(v);
+                };
+                sb.append(rnd.nextInt(4) == 0 ? "\t" : " ").append(ref);
+            }
+            if (f == plantAt) {
+                sb.append(' ').append(switch (rnd.nextInt(4)) {
+                    case 0 -> Integer.toString(count + 1);
+                    case 1 -> "0";
+                    case 2 -> "1//";
+                    default -> "x";
+                });
+            }
+            sb.append(blank(rnd)).append(rnd.nextInt(10) == 0 ? " # c" : "").append('\n');
+        }
+        return sb.toString();
     }
 
     @Test

@@ -68,6 +68,39 @@ class ObjReadCostTest {
         assertTrue(perPatch < 2_200, "bytes allocated a patch: " + perPatch);
     }
 
+    /** A {@code side}×{@code side} grid of vertices cut into two triangles a cell, plain {@code f a b c} faces. */
+    static String mesh(int side) {
+        StringBuilder sb = new StringBuilder();
+        for (int j = 0; j < side; j++) {
+            for (int i = 0; i < side; i++) {
+                sb.append("v ").append(i * 0.5).append(' ').append(j * 0.5).append(' ').append((i * j) % 7 * 0.1)
+                        .append('\n');
+            }
+        }
+        for (int j = 0; j + 1 < side; j++) {
+            for (int i = 0; i + 1 < side; i++) {
+                int a = j * side + i + 1, b = a + 1, c = a + side, d = c + 1;
+                sb.append("f ").append(a).append(' ').append(b).append(' ').append(d).append("\nf ").append(a)
+                        .append(' ').append(d).append(' ').append(c).append('\n');
+            }
+        }
+        return sb.toString();
+    }
+
+    @Test
+    void aBigTriangleMeshAllocatesLittleMoreThanItKeeps() throws IOException {
+        byte[] bytes = mesh(150).getBytes(StandardCharsets.UTF_8); // 22,500 vertices, 44,402 triangles
+        read(bytes);
+        long before = allocatedBytes();
+        ObjReader.Model model = read(bytes);
+        long perTriangle = (allocatedBytes() - before) / model.mesh().triangleCount();
+        assertEquals(2 * 149 * 149, model.mesh().triangleCount());
+        assertEquals(150 * 150, model.mesh().vertexCount()); // a plain corner is one mesh vertex per v
+        // faces read in place and plain corners found by index: 140 B a triangle; split into
+        // strings and hashed as (v, vt, vn) records, they took 690 B
+        assertTrue(perTriangle < 250, "bytes allocated a triangle: " + perTriangle);
+    }
+
     @Test
     void aOnePieceBezierSurfaceGivesThePatchTheDecompositionGives() {
         BezierPatch p = ObjReader.read(grid(1), "one.obj").get(0);
