@@ -1,8 +1,6 @@
 package org.beziertracer.model.io;
 
 import java.util.Arrays;
-import java.util.HashMap;
-import java.util.Map;
 
 import org.beziertracer.model.Mesh;
 
@@ -21,8 +19,6 @@ import org.beziertracer.model.Mesh;
  */
 final class ObjFaces {
 
-    private record Corner(int v, int vt, int vn) {}
-
     private String file;
     private final ReadLimits limits;
     private double[] uvs = new double[2 * 16];
@@ -34,8 +30,9 @@ final class ObjFaces {
     private int vertexCount;
     private int[] triangles = new int[3 * 64];
     private int triangleCount;
-    /** The mesh vertex of each corner with a vt or a vn. */
-    private final Map<Corner, Integer> index = new HashMap<>();
+    /** The mesh vertices of the corners with a vt or a vn, hashed by corner ({@link #mapped}); -1 for free slots. */
+    private int[] table = new int[0];
+    private int mappedCount;
     /** Per vertex v the mesh vertex of the corner that names only v, or -1. */
     private int[] plainIndex = new int[0];
     private boolean allUvs = true, allNormals = true;
@@ -69,12 +66,7 @@ final class ObjFaces {
         if (t.length > 3) {
             NumberText.parseFinite(t[3], "w of texture vertex " + number, file, line);
         }
-        if (2 * uvCount + 2 > uvs.length) {
-            uvs = Arrays.copyOf(uvs, 2 * uvs.length);
-        }
-        uvs[2 * uvCount] = u;
-        uvs[2 * uvCount + 1] = v;
-        uvCount++;
+        addUv(u, v);
     }
 
     /** {@code vn x y z}. */
@@ -86,15 +78,13 @@ final class ObjFaces {
         if (normalCount >= limits.vertices()) {
             throw error("a file may have at most " + limits.vertices() + " normals (vn); this is one more");
         }
-        if (3 * normalCount + 3 > normals.length) {
-            normals = Arrays.copyOf(normals, 2 * normals.length);
-        }
         int number = normalCount + 1;
+        double[] xyz = new double[3];
         for (int c = 0; c < 3; c++) {
-            normals[3 * normalCount + c] = NumberText.parseFinite(t[c + 1],
-                    "the " + "xyz".charAt(c) + " coordinate of normal " + number, file, line);
+            xyz[c] = NumberText.parseFinite(t[c + 1], "the " + "xyz".charAt(c) + " coordinate of normal " + number,
+                    file, line);
         }
-        normalCount++;
+        addNormal(xyz[0], xyz[1], xyz[2]);
     }
 
     /** {@code f c1 c2 c3 …}: a polygon over the {@code defined} vertices read so far, cut into a fan. */
@@ -115,23 +105,69 @@ final class ObjFaces {
     }
 
     /**
-     * {@link #face} of corners given as plain vertex references already resolved to 0-based
-     * vertices {@code v[0..n)} (an {@code f a b c} read in place, {@link ObjReader}): false, having
-     * changed nothing, when the string path would report a problem.
+     * {@link #face} of corners read in place ({@link ObjReader}) and already resolved to 0-based
+     * indices: vertex {@code v[k]}, texture vertex {@code vt[k]} and normal {@code vn[k]} (-1 where
+     * the corner names none) for {@code k < n}. False, having changed nothing, when the string path
+     * would report a problem.
      */
-    boolean plainFace(int[] v, int n, int lineNumber) {
+    boolean plainFace(int[] v, int[] vt, int[] vn, int n, int lineNumber) {
         if (n < 3 || (long) triangleCount + n - 2 > limits.vertices()) {
             return false;
         }
         line = lineNumber;
-        allUvs = false;
-        allNormals = false;
         int[] c = cornerScratch(n);
         for (int k = 0; k < n; k++) {
-            c[k] = plainCorner(v[k]);
+            allUvs &= vt[k] >= 0;
+            allNormals &= vn[k] >= 0;
+            c[k] = vt[k] < 0 && vn[k] < 0 ? plainCorner(v[k]) : mapped(v[k], vt[k], vn[k]);
         }
         fan(c, n);
         return true;
+    }
+
+    /** How many texture vertices ({@code vt}) and normals ({@code vn}) are defined so far. */
+    int uvCount() { return uvCount; }
+
+    int normalCount() { return normalCount; }
+
+    /**
+     * {@link #textureVertex} of {@code vt u v} read in place ({@code v} = 0 for {@code vt u}); false,
+     * having changed nothing, at the cap (the string path reports it).
+     */
+    boolean plainTextureVertex(double u, double v) {
+        if (uvCount >= limits.vertices()) {
+            return false;
+        }
+        addUv(u, v);
+        return true;
+    }
+
+    /** {@link #normal} of {@code vn x y z} read in place; false, having changed nothing, at the cap. */
+    boolean plainNormal(double x, double y, double z) {
+        if (normalCount >= limits.vertices()) {
+            return false;
+        }
+        addNormal(x, y, z);
+        return true;
+    }
+
+    private void addUv(double u, double v) {
+        if (2 * uvCount + 2 > uvs.length) {
+            uvs = Arrays.copyOf(uvs, 2 * uvs.length);
+        }
+        uvs[2 * uvCount] = u;
+        uvs[2 * uvCount + 1] = v;
+        uvCount++;
+    }
+
+    private void addNormal(double x, double y, double z) {
+        if (3 * normalCount + 3 > normals.length) {
+            normals = Arrays.copyOf(normals, 2 * normals.length);
+        }
+        normals[3 * normalCount] = x;
+        normals[3 * normalCount + 1] = y;
+        normals[3 * normalCount + 2] = z;
+        normalCount++;
     }
 
     /** The mesh vertices of one face's corners. */
@@ -171,16 +207,51 @@ final class ObjFaces {
         int vn = parts.length > 2 ? reference(parts[2], token, position, normalCount, "normal", "vn") : -1;
         allUvs &= vt >= 0;
         allNormals &= vn >= 0;
-        if (vt < 0 && vn < 0) {
-            return plainCorner(v);
+        return vt < 0 && vn < 0 ? plainCorner(v) : mapped(v, vt, vn);
+    }
+
+    /**
+     * The mesh vertex of the corner (v, vt, vn) with a vt or a vn: looked up in {@link #table}, an
+     * open-addressing hash table (linear probing) of mesh vertices keyed by their corner in
+     * {@link #corners}, kept at most half full; a new one when the corner is new.
+     */
+    private int mapped(int v, int vt, int vn) {
+        if (2 * (mappedCount + 1) > table.length) {
+            rehash(Math.max(64, 2 * table.length));
         }
-        Corner key = new Corner(v, vt, vn);
-        Integer known = index.get(key);
-        if (known != null) {
-            return known;
+        int mask = table.length - 1;
+        for (int slot = hash(v, vt, vn) & mask; ; slot = (slot + 1) & mask) {
+            int k = table[slot];
+            if (k < 0) {
+                table[slot] = vertexCount;
+                mappedCount++;
+                return newVertex(v, vt, vn);
+            }
+            if (corners[3 * k] == v && corners[3 * k + 1] == vt && corners[3 * k + 2] == vn) {
+                return k;
+            }
         }
-        index.put(key, vertexCount);
-        return newVertex(v, vt, vn);
+    }
+
+    private static int hash(int v, int vt, int vn) {
+        int h = (v * 0x9E3779B1 + vt) * 0x9E3779B1 + vn;
+        return h ^ (h >>> 15);
+    }
+
+    private void rehash(int size) {
+        int[] old = table;
+        table = new int[size];
+        Arrays.fill(table, -1);
+        int mask = size - 1;
+        for (int k : old) {
+            if (k >= 0) {
+                int slot = hash(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]) & mask;
+                while (table[slot] >= 0) {
+                    slot = (slot + 1) & mask;
+                }
+                table[slot] = k;
+            }
+        }
     }
 
     /**

@@ -175,11 +175,11 @@ public final class ObjReader {
         private final ObjFaces faces;
         private final ObjSkipped skipped = new ObjSkipped();
         private int line;
-        /** The coordinates of the vertex being read. */
+        /** The numbers of the vertex (texture vertex, normal) being read. */
         private final double[] xyz = new double[3];
         /** False: every statement takes the string path (the tests' reference). */
         private final boolean inPlace;
-        /** How many vertices, surfs and faces took the in-place path. */
+        /** How many vertices, surfs and faces (with texture vertices and normals) took the in-place path. */
         private int inPlaceVertices, inPlaceSurfs, inPlaceFaces;
 
         Parser(TextSource text, Path baseDir, boolean inPlace) {
@@ -242,7 +242,7 @@ public final class ObjReader {
                         from++;
                     }
                     if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)
-                            && !plainFace(a, from, end)) {
+                            && !plainFace(a, from, end) && !plainTextureOrNormal(a, from, end)) {
                         statement(fields(a, from, end));
                     }
                 } else {
@@ -374,44 +374,75 @@ public final class ObjReader {
          */
         private boolean plainVertex(char[] a, int from, int to) {
             if (!inPlace || to - from < 7 || a[from] != 'v' || !Fields.separator(a[from + 1]) || freeForm.skipping()
-                    || vertices.count() >= limits.vertices()) {
+                    || vertices.count() >= limits.vertices() || decimals(a, from + 1, to, 3) != 3) {
                 return false;
-            }
-            int i = from + 1;
-            for (int c = 0; c < 3; c++) {
-                while (i < to && Fields.separator(a[i])) {
-                    i++;
-                }
-                int start = i;
-                while (i < to && !Fields.separator(a[i])) {
-                    i++;
-                }
-                xyz[c] = NumberText.finiteOrNaN(a, start, i);
-                if (Double.isNaN(xyz[c])) {
-                    return false;
-                }
-            }
-            if (i != to) {
-                return false; // a weight or more: the general path
             }
             vertices.add(xyz[0], xyz[1], xyz[2], 1);
             inPlaceVertices++;
             return true;
         }
 
-        /** The vertices of the face {@link #plainFace} reads, 0-based. */
-        private int[] faceVertices = new int[8];
+        /**
+         * Reads {@code vt u [v [w]]} and {@code vn x y z} of plain decimals in place, as
+         * {@link ObjFaces#plainTextureVertex} and {@link ObjFaces#plainNormal} can; false, having
+         * read nothing, for anything else.
+         */
+        private boolean plainTextureOrNormal(char[] a, int from, int to) {
+            if (!inPlace || to - from < 4 || a[from] != 'v' || !Fields.separator(a[from + 2]) || freeForm.skipping()) {
+                return false;
+            }
+            if (a[from + 1] == 't') {
+                int n = decimals(a, from + 2, to, 3);
+                return n >= 1 && faces.plainTextureVertex(xyz[0], n > 1 ? xyz[1] : 0) && countFaceItem();
+            }
+            return a[from + 1] == 'n' && decimals(a, from + 2, to, 3) == 3
+                    && faces.plainNormal(xyz[0], xyz[1], xyz[2]) && countFaceItem();
+        }
+
+        private boolean countFaceItem() {
+            inPlaceFaces++;
+            return true;
+        }
 
         /**
-         * Reads {@code f i1 i2 i3 …} of plain vertex indices (no {@code v/vt/vn} form) from
-         * {@code a[from..to)}, a statement without leading or trailing blanks, in place, as
-         * {@link ObjFaces#plainFace} can; false, having read nothing, for anything else.
+         * The fields of {@code a[i..to)} as finite plain decimals into {@link #xyz}: how many, or -1
+         * when a field is not a finite decimal or there are more than {@code max}.
+         */
+        private int decimals(char[] a, int i, int to, int max) {
+            int n = 0;
+            for (;;) {
+                while (i < to && Fields.separator(a[i])) {
+                    i++;
+                }
+                if (i == to) {
+                    return n;
+                }
+                int start = i;
+                while (i < to && !Fields.separator(a[i])) {
+                    i++;
+                }
+                double x = NumberText.finiteOrNaN(a, start, i);
+                if (n == max || Double.isNaN(x)) {
+                    return -1;
+                }
+                xyz[n++] = x;
+            }
+        }
+
+        /** The corners of the face {@link #plainFace} reads, 0-based: vertex, texture vertex and normal (-1: none). */
+        private int[] faceV = new int[8], faceVt = new int[8], faceVn = new int[8];
+
+        /**
+         * Reads {@code f c1 c2 c3 …} whose corners are {@code v}, {@code v/vt}, {@code v//vn} or
+         * {@code v/vt/vn} of plain whole numbers in range, from {@code a[from..to)} (a statement
+         * without leading or trailing blanks) in place, as {@link ObjFaces#plainFace} can; false,
+         * having read nothing, for anything else, which the string path reads or reports.
          */
         private boolean plainFace(char[] a, int from, int to) {
             if (!inPlace || to - from < 7 || a[from] != 'f' || !Fields.separator(a[from + 1]) || freeForm.skipping()) {
                 return false;
             }
-            int n = 0, defined = vertices.count();
+            int n = 0;
             for (int i = from + 1; ; ) {
                 while (i < to && Fields.separator(a[i])) {
                     i++;
@@ -423,20 +454,52 @@ public final class ObjReader {
                 while (i < to && !Fields.separator(a[i])) {
                     i++;
                 }
-                int v = ObjVertices.resolve(NumberText.wholeOrMin(a, start, i), defined);
-                if (v < 0) {
+                if (n == faceV.length) {
+                    faceV = Arrays.copyOf(faceV, 2 * n);
+                    faceVt = Arrays.copyOf(faceVt, 2 * n);
+                    faceVn = Arrays.copyOf(faceVn, 2 * n);
+                }
+                if (!corner(a, start, i, n++)) {
                     return false;
                 }
-                if (n == faceVertices.length) {
-                    faceVertices = Arrays.copyOf(faceVertices, 2 * n);
-                }
-                faceVertices[n++] = v;
             }
-            if (!faces.plainFace(faceVertices, n, line)) {
+            if (!faces.plainFace(faceV, faceVt, faceVn, n, line)) {
                 return false;
             }
             inPlaceFaces++;
             return true;
+        }
+
+        /** One corner {@code a[from..to)} into {@code faceV/Vt/Vn[k]}; false when it is not plain and in range. */
+        private boolean corner(char[] a, int from, int to, int k) {
+            int slash1 = from;
+            while (slash1 < to && a[slash1] != '/') {
+                slash1++;
+            }
+            faceV[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, from, slash1), vertices.count());
+            faceVt[k] = -1;
+            faceVn[k] = -1;
+            if (faceV[k] < 0) {
+                return false;
+            }
+            if (slash1 == to) {
+                return true; // v
+            }
+            int slash2 = slash1 + 1;
+            while (slash2 < to && a[slash2] != '/') {
+                slash2++;
+            }
+            if (slash2 > slash1 + 1) { // v/vt or v/vt/vn
+                faceVt[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, slash1 + 1, slash2), faces.uvCount());
+                if (faceVt[k] < 0) {
+                    return false;
+                }
+            }
+            if (slash2 == to) {
+                return slash2 > slash1 + 1; // v/vt (v/ is malformed)
+            }
+            faceVn[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, slash2 + 1, to), faces.normalCount());
+            return faceVn[k] >= 0; // a third slash makes the number malformed
         }
 
         /** The fields of the statement {@link #plainSurf} reads: {@code a[fieldStart[k]..fieldEnd[k])}. */

@@ -125,6 +125,21 @@ class ObjInPlaceTest {
     }
 
     @Test
+    void aMeshAsExportersWriteItTakesTheInPlacePathForEveryStatement() throws IOException {
+        StringBuilder sb = new StringBuilder("o quad\n");
+        for (int k = 0; k < 40; k++) {
+            sb.append("v ").append(k).append(" 0 0\nv ").append(k).append(" 1 0\nv ").append(k).append(" 1 1\n")
+                    .append("vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n")
+                    .append("f -3/-3/-1 -2/-2/-1 -1/-1/-1\nf ").append(3 * k + 1).append("//").append(k + 1).append(' ')
+                    .append(3 * k + 2).append("//").append(k + 1).append(' ').append(3 * k + 3).append("//")
+                    .append(k + 1).append('\n');
+        }
+        int[] counts = bothWays(sb.toString());
+        assertEquals(120, counts[0]);
+        assertEquals(40 * (2 + 3 + 1), counts[2], "faces, texture vertices and normals in place");
+    }
+
+    @Test
     void aPlainModelTakesTheInPlacePathForEveryVertexAndSurf() throws IOException {
         StringBuilder sb = new StringBuilder("cstype bezier\ndeg 1 1\n");
         for (int k = 0; k < 50; k++) {
