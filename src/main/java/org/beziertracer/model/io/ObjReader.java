@@ -3,7 +3,6 @@ package org.beziertracer.model.io;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
 
@@ -136,9 +135,11 @@ public final class ObjReader {
         try {
             return parser.parse();
         } finally {
-            inPlaceCounts[0] = parser.inPlaceVertices;
-            inPlaceCounts[1] = parser.inPlaceSurfs;
-            inPlaceCounts[2] = parser.inPlaceFaces;
+            if (parser.inPlace != null) {
+                inPlaceCounts[0] = parser.inPlace.vertexCount;
+                inPlaceCounts[1] = parser.inPlace.surfCount;
+                inPlaceCounts[2] = parser.inPlace.faceCount;
+            }
         }
     }
 
@@ -175,22 +176,20 @@ public final class ObjReader {
         private final ObjFaces faces;
         private final ObjSkipped skipped = new ObjSkipped();
         private int line;
-        /** The numbers of the vertex (texture vertex, normal) being read. */
+        /** The coordinates of the vertex being read. */
         private final double[] xyz = new double[3];
-        /** False: every statement takes the string path (the tests' reference). */
-        private final boolean inPlace;
-        /** How many vertices, surfs and faces (with texture vertices and normals) took the in-place path. */
-        private int inPlaceVertices, inPlaceSurfs, inPlaceFaces;
+        /** The statements read without strings; null: every statement takes the string path (the tests' reference). */
+        private final ObjInPlace inPlace;
 
         Parser(TextSource text, Path baseDir, boolean inPlace) {
             this.text = text;
-            this.inPlace = inPlace;
             this.limits = text.limits();
             this.file = text.fileName();
             this.topFile = file;
             this.calls = new ObjCalls(file, baseDir);
             this.freeForm = new ObjFreeForm(file, vertices, limits);
             this.faces = new ObjFaces(file, limits);
+            this.inPlace = inPlace ? new ObjInPlace(vertices, freeForm, faces, limits) : null;
         }
 
         Model parse() throws IOException {
@@ -208,9 +207,9 @@ public final class ObjReader {
 
         /**
          * Reads the statements of {@code text} (the file opened, or a called one); its last line
-         * number. Lines are read where they lie ({@link TextSource#nextLine()}): a plain vertex,
-         * {@code surf} or face is parsed from the characters; any other statement becomes a string
-         * and goes through {@link #statement}.
+         * number. Lines are read where they lie ({@link TextSource#nextLine()}): what
+         * {@link ObjInPlace} reads is parsed from the characters; any other statement becomes a
+         * string and goes through {@link #statement}.
          */
         private int readAll(TextSource text) throws IOException {
             int physical = 0;
@@ -241,9 +240,8 @@ public final class ObjReader {
                     while (from < end && Character.isWhitespace(a[from])) {
                         from++;
                     }
-                    if (from < end && !plainVertex(a, from, end) && !plainSurf(a, from, end)
-                            && !plainFace(a, from, end) && !plainTextureOrNormal(a, from, end)) {
-                        statement(fields(a, from, end));
+                    if (from < end && (inPlace == null || !inPlace.statement(a, from, end, line))) {
+                        statement(inPlace != null ? inPlace.fields(a, from, end) : Fields.of(new String(a, from, end - from)));
                     }
                 } else {
                     statement.append(a, from, end - from);
@@ -251,7 +249,7 @@ public final class ObjReader {
                     statement.setLength(0);
                     if (!s.isEmpty()) {
                         char[] c = s.toCharArray();
-                        if (!plainVertex(c, 0, c.length)) {
+                        if (inPlace == null || !inPlace.vertex(c, 0, c.length)) {
                             statement(Fields.of(s));
                         }
                     }
@@ -262,32 +260,6 @@ public final class ObjReader {
                 statement(Fields.of(statement.toString()));
             }
             return physical;
-        }
-
-        /**
-         * Short statements split lately, and their fields, one slot for each value of a first
-         * character's low three bits: {@code deg 3 3} and {@code end} come again and again.
-         */
-        private final char[][] recentText = new char[8][32];
-        private final int[] recentLength = {-1, -1, -1, -1, -1, -1, -1, -1};
-        private final String[][] recentFields = new String[8][];
-
-        /**
-         * {@link Fields#of} of {@code a[from..to)}; a short statement equal to a recent one gets
-         * the same fields again (no handler changes its fields) instead of new strings.
-         */
-        private String[] fields(char[] a, int from, int to) {
-            int n = to - from, slot = a[from] & 7;
-            if (inPlace && n == recentLength[slot] && Arrays.equals(a, from, to, recentText[slot], 0, n)) {
-                return recentFields[slot];
-            }
-            String[] fields = Fields.of(new String(a, from, n));
-            if (n <= recentText[slot].length) {
-                System.arraycopy(a, from, recentText[slot], 0, n);
-                recentLength[slot] = n;
-                recentFields[slot] = fields;
-            }
-            return fields;
         }
 
         /** Where a {@code #} comment starts in {@code a[from..to)}, else {@code to}. */
@@ -364,177 +336,6 @@ public final class ObjReader {
                 default -> "a superseded geometry statement of older OBJ versions: the resolution of bsp, bzp, "
                         + "cdc and cdp";
             };
-        }
-
-        /**
-         * Reads {@code v x y z} (three finite decimals, no weight) from {@code a[from..to)}, a
-         * statement without leading or trailing blanks: most lines of a big model are such
-         * vertices. Returns false, having read nothing, for anything else, which the general path
-         * then reads or reports.
-         */
-        private boolean plainVertex(char[] a, int from, int to) {
-            if (!inPlace || to - from < 7 || a[from] != 'v' || !Fields.separator(a[from + 1]) || freeForm.skipping()
-                    || vertices.count() >= limits.vertices() || decimals(a, from + 1, to, 3) != 3) {
-                return false;
-            }
-            vertices.add(xyz[0], xyz[1], xyz[2], 1);
-            inPlaceVertices++;
-            return true;
-        }
-
-        /**
-         * Reads {@code vt u [v [w]]} and {@code vn x y z} of plain decimals in place, as
-         * {@link ObjFaces#plainTextureVertex} and {@link ObjFaces#plainNormal} can; false, having
-         * read nothing, for anything else.
-         */
-        private boolean plainTextureOrNormal(char[] a, int from, int to) {
-            if (!inPlace || to - from < 4 || a[from] != 'v' || !Fields.separator(a[from + 2]) || freeForm.skipping()) {
-                return false;
-            }
-            if (a[from + 1] == 't') {
-                int n = decimals(a, from + 2, to, 3);
-                return n >= 1 && faces.plainTextureVertex(xyz[0], n > 1 ? xyz[1] : 0) && countFaceItem();
-            }
-            return a[from + 1] == 'n' && decimals(a, from + 2, to, 3) == 3
-                    && faces.plainNormal(xyz[0], xyz[1], xyz[2]) && countFaceItem();
-        }
-
-        private boolean countFaceItem() {
-            inPlaceFaces++;
-            return true;
-        }
-
-        /**
-         * The fields of {@code a[i..to)} as finite plain decimals into {@link #xyz}: how many, or -1
-         * when a field is not a finite decimal or there are more than {@code max}.
-         */
-        private int decimals(char[] a, int i, int to, int max) {
-            int n = 0;
-            for (;;) {
-                while (i < to && Fields.separator(a[i])) {
-                    i++;
-                }
-                if (i == to) {
-                    return n;
-                }
-                int start = i;
-                while (i < to && !Fields.separator(a[i])) {
-                    i++;
-                }
-                double x = NumberText.finiteOrNaN(a, start, i);
-                if (n == max || Double.isNaN(x)) {
-                    return -1;
-                }
-                xyz[n++] = x;
-            }
-        }
-
-        /** The corners of the face {@link #plainFace} reads, 0-based: vertex, texture vertex and normal (-1: none). */
-        private int[] faceV = new int[8], faceVt = new int[8], faceVn = new int[8];
-
-        /**
-         * Reads {@code f c1 c2 c3 …} whose corners are {@code v}, {@code v/vt}, {@code v//vn} or
-         * {@code v/vt/vn} of plain whole numbers in range, from {@code a[from..to)} (a statement
-         * without leading or trailing blanks) in place, as {@link ObjFaces#plainFace} can; false,
-         * having read nothing, for anything else, which the string path reads or reports.
-         */
-        private boolean plainFace(char[] a, int from, int to) {
-            if (!inPlace || to - from < 7 || a[from] != 'f' || !Fields.separator(a[from + 1]) || freeForm.skipping()) {
-                return false;
-            }
-            int n = 0;
-            for (int i = from + 1; ; ) {
-                while (i < to && Fields.separator(a[i])) {
-                    i++;
-                }
-                if (i == to) {
-                    break;
-                }
-                int start = i;
-                while (i < to && !Fields.separator(a[i])) {
-                    i++;
-                }
-                if (n == faceV.length) {
-                    faceV = Arrays.copyOf(faceV, 2 * n);
-                    faceVt = Arrays.copyOf(faceVt, 2 * n);
-                    faceVn = Arrays.copyOf(faceVn, 2 * n);
-                }
-                if (!corner(a, start, i, n++)) {
-                    return false;
-                }
-            }
-            if (!faces.plainFace(faceV, faceVt, faceVn, n, line)) {
-                return false;
-            }
-            inPlaceFaces++;
-            return true;
-        }
-
-        /** One corner {@code a[from..to)} into {@code faceV/Vt/Vn[k]}; false when it is not plain and in range. */
-        private boolean corner(char[] a, int from, int to, int k) {
-            int slash1 = from;
-            while (slash1 < to && a[slash1] != '/') {
-                slash1++;
-            }
-            faceV[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, from, slash1), vertices.count());
-            faceVt[k] = -1;
-            faceVn[k] = -1;
-            if (faceV[k] < 0) {
-                return false;
-            }
-            if (slash1 == to) {
-                return true; // v
-            }
-            int slash2 = slash1 + 1;
-            while (slash2 < to && a[slash2] != '/') {
-                slash2++;
-            }
-            if (slash2 > slash1 + 1) { // v/vt or v/vt/vn
-                faceVt[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, slash1 + 1, slash2), faces.uvCount());
-                if (faceVt[k] < 0) {
-                    return false;
-                }
-            }
-            if (slash2 == to) {
-                return slash2 > slash1 + 1; // v/vt (v/ is malformed)
-            }
-            faceVn[k] = ObjVertices.resolve(NumberText.wholeOrMin(a, slash2 + 1, to), faces.normalCount());
-            return faceVn[k] >= 0; // a third slash makes the number malformed
-        }
-
-        /** The fields of the statement {@link #plainSurf} reads: {@code a[fieldStart[k]..fieldEnd[k])}. */
-        private int[] fieldStart = new int[32], fieldEnd = new int[32];
-
-        /**
-         * Reads {@code surf s0 s1 t0 t1 i1 i2 …} of plain numbers from {@code a[from..to)} (a
-         * statement without leading or trailing blanks) in place, as {@link ObjFreeForm#plainSurf}
-         * can; false, having read nothing, for anything else.
-         */
-        private boolean plainSurf(char[] a, int from, int to) {
-            if (!inPlace || to - from < 5 || a[from] != 's' || a[from + 1] != 'u' || a[from + 2] != 'r' || a[from + 3] != 'f'
-                    || !Fields.separator(a[from + 4])) {
-                return false;
-            }
-            int fields = 0;
-            for (int i = from; i < to; ) {
-                if (fields == fieldStart.length) {
-                    fieldStart = Arrays.copyOf(fieldStart, 2 * fields);
-                    fieldEnd = Arrays.copyOf(fieldEnd, 2 * fields);
-                }
-                fieldStart[fields] = i;
-                while (i < to && !Fields.separator(a[i])) {
-                    i++;
-                }
-                fieldEnd[fields++] = i;
-                while (i < to && Fields.separator(a[i])) {
-                    i++;
-                }
-            }
-            if (!freeForm.plainSurf(a, fieldStart, fieldEnd, fields, line)) {
-                return false;
-            }
-            inPlaceSurfs++;
-            return true;
         }
 
         private void vertex(String[] t) {
