@@ -85,6 +85,49 @@ class JobFramesTest {
     }
 
     @Test
+    void aTileAsBytesIsItsRawBitsBigEndianAfterTheHeader() {
+        // 3x2 pixels at (5, 7): values that a stream of floats would change (a NaN's payload) or lose (-0)
+        float nan = Float.intBitsToFloat(0x7fa00001);
+        int[] argb = {0xff010203, 0xff7f8081, 0, -1, 0x12345678, 0xfffefdfc};
+        float[] rgb = new float[18];
+        for (int k = 0; k < rgb.length; k++) {
+            rgb[k] = k * 0.37f - 2;
+        }
+        rgb[4] = nan;
+        rgb[9] = -0f;
+        rgb[17] = Float.POSITIVE_INFINITY;
+        TilePixels t = new TilePixels(new PixelWindow(5, 7, 8, 9), argb, rgb);
+        byte[] bytes = t.toBytes();
+        int[] words = {0x42545431, 5, 7, 8, 9};
+        byte[] expected = new byte[20 + 16 * 6];
+        int at = 0;
+        for (int w : words) {
+            at = bigEndian(expected, at, w);
+        }
+        for (int p : argb) {
+            at = bigEndian(expected, at, p);
+        }
+        for (float f : rgb) {
+            at = bigEndian(expected, at, Float.floatToRawIntBits(f));
+        }
+        assertArrayEquals(expected, bytes);
+        TilePixels back = TilePixels.fromBytes(bytes, "t");
+        assertEquals(t.window(), back.window());
+        assertArrayEquals(argb, back.argb());
+        for (int k = 0; k < rgb.length; k++) {
+            assertEquals(Float.floatToRawIntBits(rgb[k]), Float.floatToRawIntBits(back.rgb()[k]), "float " + k);
+        }
+    }
+
+    private static int bigEndian(byte[] out, int at, int v) {
+        out[at] = (byte) (v >>> 24);
+        out[at + 1] = (byte) (v >>> 16);
+        out[at + 2] = (byte) (v >>> 8);
+        out[at + 3] = (byte) v;
+        return at + 4;
+    }
+
+    @Test
     void anAssemblyRefusesOverlapsAndAMissingTile() throws Exception {
         JobFrames frames = JobFrames.of(job("\"spp\": 1"), 1, "job.json");
         FrameAssembly frame = new FrameAssembly(37, 27);

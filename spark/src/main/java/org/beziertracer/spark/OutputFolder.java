@@ -5,7 +5,9 @@ import java.io.OutputStream;
 import java.net.URI;
 
 import org.apache.hadoop.conf.Configuration;
+import org.apache.hadoop.fs.FSDataInputStream;
 import org.apache.hadoop.fs.FileSystem;
+import org.apache.hadoop.fs.LocalFileSystem;
 import org.apache.hadoop.fs.Path;
 import org.apache.spark.TaskContext;
 
@@ -21,8 +23,11 @@ final class OutputFolder {
 
     OutputFolder(String uri) throws IOException {
         URI u = URI.create(uri);
-        this.fs = FileSystem.get(u, new Configuration());
-        fs.setWriteChecksum(false); // no .NAME.crc beside each file on file:// (other file systems keep their own)
+        FileSystem f = FileSystem.get(u, new Configuration());
+        f.setWriteChecksum(false); // no .NAME.crc beside each file on file:// (other file systems keep their own)
+        // file://: Hadoop's LocalFileSystem reads every file through its checksum layer, 512 bytes a call, even
+        // without a .crc file; the raw one under it reads a tile in one call
+        this.fs = f instanceof LocalFileSystem local ? local.getRaw() : f;
         this.root = new Path(u);
     }
 
@@ -38,11 +43,21 @@ final class OutputFolder {
 
     boolean exists(Path p) throws IOException { return fs.exists(p); }
 
+    /** The bytes of {@code p}, read in one piece (files here are written whole and never change). */
     byte[] read(Path p) throws IOException {
-        try (var in = fs.open(p)) {
-            return in.readAllBytes();
+        long length = fs.getFileStatus(p).getLen();
+        if (length > Integer.MAX_VALUE - 8) {
+            throw new IOException(p + ": " + length + " bytes is too big for a tile or frame file");
         }
+        byte[] bytes = new byte[(int) length];
+        try (FSDataInputStream in = fs.open(p)) {
+            in.readFully(0, bytes);
+        }
+        return bytes;
     }
+
+    /** The file system the folder is on (for {@code file://}: the raw local one, without checksums). */
+    FileSystem fileSystem() { return fs; }
 
     /**
      * Writes {@code bytes} to {@code target} atomically (temporary name {@code .NAME.TAG.tmp}, then rename);
