@@ -28,7 +28,7 @@ public record BvhOptions(int maxLeafSize, int binCount, int mortonPrims) {
 
     /** Whether {@code primCount} primitives in {@code groupCount} groups are built in two levels ({@link #GROUPED_PRIMS}). */
     public static boolean groupsPay(int primCount, int groupCount) {
-        return primCount >= GROUPED_PRIMS && 4L * groupCount <= primCount;
+        return primCount >= GROUPED_PRIMS && groupCount >= 1 && 4L * groupCount <= primCount;
     }
 
     public BvhOptions {

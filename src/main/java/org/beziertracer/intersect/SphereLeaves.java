@@ -81,6 +81,10 @@ final class SphereLeaves implements FixedLeaves {
     @Override
     public int firstLeaf(int k) { return 0; }
 
+    /** None of these leaves is a patch's (so a big scene of them is not grouped by patch). */
+    @Override
+    public int patchLeafCount() { return 0; }
+
     @Override
     public int leafCount(int k) { return 0; }
 

@@ -145,5 +145,6 @@ class GroupedBuilderTest {
         assertFalse(BvhOptions.groupsPay(BvhOptions.GROUPED_PRIMS - 1, 100));
         assertFalse(BvhOptions.groupsPay(BvhOptions.GROUPED_PRIMS, BvhOptions.GROUPED_PRIMS / 4 + 1));
         assertFalse(BvhOptions.groupsPay(1 << 20, 1 << 20));
+        assertFalse(BvhOptions.groupsPay(1 << 20, 0), "no patches: nothing to group by");
     }
 }

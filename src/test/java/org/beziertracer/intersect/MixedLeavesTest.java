@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Random;
 
+import org.beziertracer.accel.BvhOptions;
 import org.beziertracer.math.Aabb;
 import org.beziertracer.math.Vec3;
 import org.beziertracer.model.BezierPatch;
@@ -133,6 +134,23 @@ class MixedLeavesTest {
         double ty = box.minY() + random.nextDouble() * (box.maxY() - box.minY());
         double tz = box.minZ() + random.nextDouble() * (box.maxZ() - box.minZ());
         return new double[] {ox, oy, oz, tx - ox, ty - oy, tz - oz};
+    }
+
+    @Test
+    void aBigMeshWithoutPatchesBuildsItsOneTreeAndIsHit() {
+        // 2·190² = 72,200 triangles: past BvhOptions.GROUPED_PRIMS, where a scene of patches is built
+        // in two levels; a mesh alone has no patches to group by (its render failed before)
+        Scene scene = Scene.builder().addMesh(MixedScenes.grid(190, 0, 19, 0, 19, 0), 0).build();
+        SceneIntersector si = SceneIntersector.build(scene, IntersectOptions.defaults());
+        assertTrue(si.leaves.count() >= BvhOptions.GROUPED_PRIMS);
+        Hit hit = new Hit();
+        assertTrue(si.closestHit(si.newContext(), 7.05, 11.02, 2, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(Hit.TRIANGLE, hit.kind);
+        assertEquals(2, hit.t, 1e-12);
+        Scene withSphere = scene.toBuilder().addSphere(new Sphere(new Vec3(30, 30, 0), 1)).build();
+        SceneIntersector both = SceneIntersector.build(withSphere, IntersectOptions.defaults());
+        assertTrue(both.closestHit(both.newContext(), 30, 30, 5, 0, 0, -1, 0, Double.POSITIVE_INFINITY, hit));
+        assertEquals(Hit.SPHERE, hit.kind);
     }
 
     @Test
