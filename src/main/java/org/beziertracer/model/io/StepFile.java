@@ -274,7 +274,7 @@ final class StepFile {
                 throw unexpected("a header entity or ENDSEC");
             }
             List<Object> params = params(at, 0);
-            expect(';', " after the header entity " + name);
+            expect(';', " after a header entity");
             if (name.equals("FILE_SCHEMA") && !params.isEmpty() && params.get(0) instanceof List<?> l) {
                 for (Object o : l) {
                     if (o instanceof String s) {
@@ -450,7 +450,8 @@ final class StepFile {
                     String type = keyword();
                     List<Object> inner = params(at, depth + 1);
                     if (inner.size() != 1) {
-                        throw source.error(at, "expected one value in the typed parameter " + type + "(…), found "
+                        // the type is not echoed: it may be any name the file holds, of any length
+                        throw source.error(at, "expected one value in a typed parameter TYPE(value), found "
                                 + inner.size());
                     }
                     return new Typed(type, inner.get(0));
