@@ -35,7 +35,8 @@ public final class UserMessages {
             Pattern.compile("\\bat [\\w$.]+\\("),
             Pattern.compile("Cannot invoke|because the return value|because \"[\\w.]+\" is"));
 
-    private static final Pattern ECHO = Pattern.compile("\"[^\"]{0,61}\"");
+    /** Input echoed in double or single quotes, as the readers and settings quote it (at most 60 characters and an ellipsis). */
+    private static final Pattern ECHO = Pattern.compile("\"[^\"]{0,61}\"|'[^']{0,61}'");
 
     /**
      * Runs {@code body}, expects it to throw {@code type}, checks and gathers the message.

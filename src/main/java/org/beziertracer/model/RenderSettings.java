@@ -65,24 +65,30 @@ public record RenderSettings(int width, int height, int spp, String sampler, Str
     private static String oneOf(String what, String value, Set<String> allowed) {
         String v = value == null ? "" : value.trim().toLowerCase(Locale.ROOT);
         if (!allowed.contains(v)) {
-            throw new IllegalArgumentException("unknown " + what + " '" + value + "': expected one of "
+            throw new IllegalArgumentException("unknown " + what + " " + echo(value, '\'') + ": expected one of "
                     + String.join(", ", allowed.stream().sorted().toList()));
         }
         return v;
     }
 
     /**
-     * {@code value} in double quotes for a message: control characters as {@code \\uXXXX}, cut to
+     * {@code value} in double quotes for a message: control characters and line separators as {@code \\uXXXX}, cut to
      * 60 characters (the model layer's copy of {@code model.io.Echo.quote}, which it cannot use).
      */
     static String echo(String value) {
-        StringBuilder sb = new StringBuilder("\"");
+        return echo(value, '"');
+    }
+
+    /** {@link #echo(String)} between {@code quote} characters. */
+    static String echo(String value, char quote) {
+        StringBuilder sb = new StringBuilder().append(quote);
         String v = value == null ? "" : value;
         for (int i = 0; i < v.length() && sb.length() <= 60; i++) {
             char c = v.charAt(i);
-            sb.append(Character.isISOControl(c) ? String.format(Locale.ROOT, "\\u%04X", (int) c) : String.valueOf(c));
+            boolean hidden = Character.isISOControl(c) || c == 0x2028 || c == 0x2029 || c == 0xFEFF; // as Echo.cut
+            sb.append(hidden ? String.format(Locale.ROOT, "\\u%04X", (int) c) : String.valueOf(c));
         }
-        return sb.append(v.length() > 60 ? "…\"" : "\"").toString();
+        return sb.append(v.length() > 60 ? "…" : "").append(quote).toString();
     }
 
     /** {@code value} trimmed and in lower case, refused unless it is one {@link #WORD}. */
